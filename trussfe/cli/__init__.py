@@ -1,0 +1,69 @@
+# SPDX-License-Identifier: MIT
+"""Command line: ``trussfe COMMAND MODEL [options]`` (CONTRACT.md §2).
+
+Each command lives in a module ``trussfe/cli/cmd_<name>.py`` that defines
+``register(subparsers)``; the parser it adds sets ``func`` to a callable taking the parsed
+arguments and returning the exit status.  Modules are discovered, so adding a command touches
+no other file.
+"""
+from __future__ import annotations
+
+import argparse
+import importlib
+import logging
+import os
+import pkgutil
+import sys
+
+from .. import __version__
+from ..errors import TrussfeError
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse with the contract's one-line error format and exit status 2."""
+
+    def error(self, message: str) -> None:  # pragma: no cover - exercised via CLI tests
+        sys.stderr.write(f"trussfe: error: {message}\n")
+        raise SystemExit(2)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The ``trussfe`` argument parser with every discovered command."""
+    parser = _Parser(prog="trussfe", description="Structural analysis of adaptive trusses "
+                     "and bar-and-joint mechanisms.")
+    parser.add_argument("--version", action="version", version=f"trussfe {__version__}")
+    parser.add_argument("-v", "--verbose", action="store_true", help="log progress to stderr")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+    sub.required = True
+    for info in sorted(pkgutil.iter_modules(__path__), key=lambda i: i.name):
+        if info.name.startswith("cmd_"):
+            module = importlib.import_module(f"{__name__}.{info.name}")
+            module.register(sub)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run the command line; returns the exit status."""
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    logging.basicConfig(level=logging.INFO if args.verbose else logging.WARNING,
+                        format="trussfe: %(message)s", stream=sys.stderr)
+    try:
+        return int(args.func(args) or 0)
+    except TrussfeError as err:
+        sys.stderr.write(f"trussfe: error: {err}\n")
+        return err.exit_status
+    except KeyboardInterrupt:
+        sys.stderr.write("trussfe: error: interrupted\n")
+        return 130
+    except Exception as exc:  # an internal fault: one line, traceback only on request
+        if os.environ.get("TRUSSFE_DEBUG"):
+            raise
+        sys.stderr.write(f"trussfe: error: internal error ({type(exc).__name__}: {exc}); "
+                         "rerun with TRUSSFE_DEBUG=1 for a traceback\n")
+        return 3
+
+
+def run() -> None:
+    """Console-script entry point."""
+    sys.exit(main())

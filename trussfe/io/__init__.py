@@ -1,0 +1,2 @@
+# SPDX-License-Identifier: MIT
+"""Input and output at the edge: model files, JSON, VTK."""

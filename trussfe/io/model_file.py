@@ -1,0 +1,416 @@
+# SPDX-License-Identifier: MIT
+"""Reader of trussfe model files (TOML, CONTRACT.md §1).
+
+Every check on user input lives here (or in the extension readers registered through
+:func:`register_table`), so that any input either becomes a :class:`~trussfe.model.Structure`
+or raises one :class:`~trussfe.errors.InputError` naming the file and the item.
+"""
+from __future__ import annotations
+
+import difflib
+import math
+import tomllib
+from pathlib import Path
+from typing import Any, Callable
+
+import numpy as np
+
+from ..errors import InputError, TrussfeError
+from ..model.sections import Material, Section
+from ..model.structure import DOF_NAMES, Structure
+
+#: Top-level tables of the core format.
+CORE_TABLES = ("model", "materials", "sections", "nodes", "members", "supports", "loads",
+               "masses", "groups")
+
+#: Extension tables: name -> parser(raw_table, structure, base_dir) -> object stored in
+#: ``structure.extensions[name]``.  Parsers raise InputError with the item inside the table.
+_EXTENSIONS: dict[str, Callable[[Any, Structure, Path], Any]] = {}
+
+
+def register_table(name: str, parser: Callable[[Any, Structure, Path], Any]) -> None:
+    """Register the reader of an extension table (e.g. ``active_members``).
+
+    Parameters
+    ----------
+    name : str
+        Top-level table name.
+    parser : callable
+        ``parser(raw, structure, base_dir)``; its return value is stored in
+        ``structure.extensions[name]``.
+    """
+    _EXTENSIONS[name] = parser
+
+
+def _suggest(word: str, choices) -> str:
+    close = difflib.get_close_matches(str(word), list(choices), n=1, cutoff=0.5)
+    return f"; did you mean '{close[0]}'?" if close else f"; valid: {', '.join(choices)}"
+
+
+def _check_keys(table: dict, allowed, item: str) -> None:
+    for key in table:
+        if key not in allowed:
+            raise InputError(f"{item}.{key}" if item else key,
+                             f"unknown key '{key}'{_suggest(key, allowed)}")
+
+
+def _number(value: Any, item: str, *, positive: bool = False, nonneg: bool = False) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise InputError(item, f"expected a number, got {value!r}")
+    x = float(value)
+    if not math.isfinite(x):
+        raise InputError(item, f"expected a finite number, got {value!r}")
+    if positive and x <= 0.0:
+        raise InputError(item, f"must be positive, got {value!r}")
+    if nonneg and x < 0.0:
+        raise InputError(item, f"must not be negative, got {value!r}")
+    return x
+
+
+def _vector(value: Any, item: str, sizes: tuple[int, ...]) -> np.ndarray:
+    if not isinstance(value, list):
+        raise InputError(item, f"expected a list of {' or '.join(map(str, sizes))} numbers")
+    if len(value) not in sizes:
+        raise InputError(item, f"expected {' or '.join(map(str, sizes))} numbers, "
+                               f"got {len(value)}")
+    return np.array([_number(v, f"{item}[{i}]") for i, v in enumerate(value)], dtype=float)
+
+
+def _table(data: dict, name: str, *, required: bool = False) -> dict:
+    t = data.get(name, {})
+    if required and name not in data:
+        raise InputError(f"[{name}]", "table is missing")
+    if not isinstance(t, dict):
+        raise InputError(name, f"expected a table [{name}]")
+    return t
+
+
+# ---------------------------------------------------------------------------- pieces
+def parse_material(name: str, raw: Any) -> Material:
+    """Read one ``[materials.NAME]`` table."""
+    item = f"materials.{name}"
+    if not isinstance(raw, dict):
+        raise InputError(item, "expected a table with E, density (and optional G, yield_strength)")
+    _check_keys(raw, ("E", "G", "density", "yield_strength"), item)
+    if "E" not in raw:
+        raise InputError(item, "missing E (Young's modulus, Pa)")
+    E = _number(raw["E"], f"{item}.E", positive=True)
+    G = _number(raw["G"], f"{item}.G", positive=True) if "G" in raw else E / 2.6
+    rho = _number(raw.get("density", 0.0), f"{item}.density", nonneg=True)
+    fy = (_number(raw["yield_strength"], f"{item}.yield_strength", positive=True)
+          if "yield_strength" in raw else math.nan)
+    return Material(name=name, E=E, G=G, density=rho, yield_strength=fy)
+
+
+def parse_section(name: str, raw: Any) -> Section:
+    """Read one ``[sections.NAME]`` table (tube diameters or explicit properties)."""
+    item = f"sections.{name}"
+    tube_keys = ("outer_diameter", "inner_diameter")
+    expl_keys = ("area", "Iy", "Iz", "J", "c")
+    if not isinstance(raw, dict):
+        raise InputError(item, "expected a table with outer_diameter/inner_diameter or area")
+    _check_keys(raw, tube_keys + expl_keys, item)
+    if "outer_diameter" in raw:
+        extra = [k for k in raw if k in expl_keys and k != "c"]
+        if extra:
+            raise InputError(f"{item}.{extra[0]}",
+                             "give either tube diameters or explicit properties, not both")
+        D = _number(raw["outer_diameter"], f"{item}.outer_diameter", positive=True)
+        d = _number(raw.get("inner_diameter", 0.0), f"{item}.inner_diameter", nonneg=True)
+        if d >= D:
+            raise InputError(f"{item}.inner_diameter",
+                             f"inner diameter {d} must be smaller than outer diameter {D}")
+        return Section.tube(name, D, d)
+    if "inner_diameter" in raw:
+        raise InputError(f"{item}.inner_diameter", "inner_diameter needs outer_diameter")
+    if "area" not in raw:
+        raise InputError(item, "missing area (or outer_diameter for a tube)")
+    A = _number(raw["area"], f"{item}.area", positive=True)
+    Iy = _number(raw["Iy"], f"{item}.Iy", positive=True) if "Iy" in raw else math.nan
+    Iz = _number(raw["Iz"], f"{item}.Iz", positive=True) if "Iz" in raw else Iy
+    J = _number(raw["J"], f"{item}.J", positive=True) if "J" in raw else Iy + Iz
+    c = _number(raw["c"], f"{item}.c", positive=True) if "c" in raw else math.nan
+    return Section(name=name, area=A, Iy=Iy, Iz=Iz, J=J, c=c)
+
+
+def _parse_member(mid: str, raw: Any, node_index: dict, sections: dict, materials: dict):
+    item = f"members.{mid}"
+    keys = ("nodes", "section", "material", "type", "releases", "orientation")
+    if not isinstance(raw, dict):
+        raise InputError(item, "expected an inline table { nodes = [..], section = .., "
+                               "material = .. }")
+    _check_keys(raw, keys, item)
+    for k in ("nodes", "section", "material"):
+        if k not in raw:
+            raise InputError(item, f"missing '{k}'")
+    ends = raw["nodes"]
+    if not isinstance(ends, list) or len(ends) != 2:
+        raise InputError(f"{item}.nodes", "expected two node ids")
+    idx = []
+    for e in ends:
+        if str(e) not in node_index:
+            raise InputError(f"{item}.nodes", f"node '{e}' is not defined in [nodes]"
+                                              f"{_suggest(str(e), node_index)}")
+        idx.append(node_index[str(e)])
+    if idx[0] == idx[1]:
+        raise InputError(f"{item}.nodes", f"both ends are node '{ends[0]}' (zero length)")
+    sec, mat = str(raw["section"]), str(raw["material"])
+    if sec not in sections:
+        raise InputError(f"{item}.section", f"section '{sec}' is not defined in [sections]"
+                                            f"{_suggest(sec, sections) if sections else ''}")
+    if mat not in materials:
+        raise InputError(f"{item}.material", f"material '{mat}' is not defined in [materials]"
+                                             f"{_suggest(mat, materials) if materials else ''}")
+    mtype = raw.get("type", "bar")
+    if mtype not in ("bar", "beam"):
+        raise InputError(f"{item}.type", f"unknown member type '{mtype}'{_suggest(mtype, ('bar', 'beam'))}")
+    rel = raw.get("releases", [])
+    if not isinstance(rel, list) or any(r not in ("start", "end") for r in rel):
+        raise InputError(f"{item}.releases", "expected a list of \"start\" and/or \"end\"")
+    if rel and mtype != "beam":
+        raise InputError(f"{item}.releases", "releases apply to beams only (a bar is pinned "
+                                             "at both ends already)")
+    orient = (_vector(raw["orientation"], f"{item}.orientation", (3,))
+              if "orientation" in raw else np.full(3, np.nan))
+    return idx, sections[sec], materials[mat], mtype == "beam", ("start" in rel, "end" in rel), orient
+
+
+def _parse_dofs(raw: Any, item: str, dim: int) -> list[int]:
+    names = DOF_NAMES[dim]
+    if isinstance(raw, str):
+        raw = [raw]
+    if not isinstance(raw, list):
+        raise InputError(item, f"expected a list of DOF names from {', '.join(names)}")
+    out = []
+    for d in raw:
+        if d not in names:
+            raise InputError(item, f"unknown DOF '{d}'{_suggest(str(d), names)}")
+        out.append(names.index(d))
+    return out
+
+
+# ---------------------------------------------------------------------------- model
+def parse_model(data: dict, base_dir: Path | str = ".", source: str = "") -> Structure:
+    """Build a :class:`Structure` from the parsed TOML ``data``.
+
+    Parameters
+    ----------
+    data : dict
+        The model file as parsed by :mod:`tomllib`.
+    base_dir : path
+        Directory against which a ``[model] mesh`` path is resolved.
+    source : str
+        File name for error messages.
+
+    Raises
+    ------
+    InputError
+        Naming the table and item at fault.
+    """
+    base_dir = Path(base_dir)
+    allowed = CORE_TABLES + tuple(_EXTENSIONS)
+    for key in data:
+        if key not in allowed:
+            raise InputError(f"[{key}]", f"unknown table '{key}'{_suggest(key, allowed)}")
+
+    model = _table(data, "model", required=True)
+    _check_keys(model, ("name", "dimension", "gravity", "mesh"), "model")
+    dim = model.get("dimension", 3)
+    if dim not in (2, 3) or isinstance(dim, bool):
+        raise InputError("model.dimension", f"must be 2 or 3, got {dim!r}")
+    name = str(model.get("name", Path(source).stem if source else "model"))
+    gravity = (_vector(model["gravity"], "model.gravity", (dim,)) if "gravity" in model
+               else np.zeros(dim))
+
+    materials = {k: parse_material(k, v) for k, v in _table(data, "materials").items()}
+    sections = {k: parse_section(k, v) for k, v in _table(data, "sections").items()}
+
+    if "mesh" in model:
+        (node_ids, coords, member_ids, conn, secs, mats, beam, rel, orient) = _mesh_geometry(
+            str(model["mesh"]), base_dir, dim, data, sections, materials)
+    else:
+        nodes = _table(data, "nodes", required=True)
+        if not nodes:
+            raise InputError("[nodes]", "no nodes defined")
+        node_ids = [str(k) for k in nodes]
+        coords = np.array([_vector(v, f"nodes.{k}", (dim,)) if isinstance(v, list)
+                           and len(v) == dim else _bad_coords(k, v, dim)
+                           for k, v in nodes.items()])
+        node_index = {k: i for i, k in enumerate(node_ids)}
+        members = _table(data, "members", required=True)
+        if not members:
+            raise InputError("[members]", "no members defined")
+        parsed = [_parse_member(str(k), v, node_index, sections, materials)
+                  for k, v in members.items()]
+        member_ids = [str(k) for k in members]
+        conn = np.array([p[0] for p in parsed], dtype=np.int64)
+        secs = [p[1] for p in parsed]
+        mats = [p[2] for p in parsed]
+        beam = np.array([p[3] for p in parsed], dtype=bool)
+        rel = np.array([p[4] for p in parsed], dtype=bool).reshape(-1, 2)
+        orient = np.array([p[5] for p in parsed]).reshape(-1, 3)
+
+    n = len(node_ids)
+    node_index = {k: i for i, k in enumerate(node_ids)}
+    _check_geometry(coords, conn, member_ids, node_ids)
+
+    ndof = 3 if dim == 2 else 6
+    supports = np.zeros((n, ndof), dtype=bool)
+    for k, v in _table(data, "supports").items():
+        i = _node_ref(k, node_index, "supports")
+        supports[i, _parse_dofs(v, f"supports.{k}", dim)] = True
+    loads = np.zeros((n, ndof))
+    for k, v in _table(data, "loads").items():
+        i = _node_ref(k, node_index, "loads")
+        f = _vector(v, f"loads.{k}", (dim, ndof))
+        loads[i, : f.size] += f
+    masses = np.zeros(n)
+    for k, v in _table(data, "masses").items():
+        i = _node_ref(k, node_index, "masses")
+        masses[i] = _number(v, f"masses.{k}", nonneg=True)
+
+    s = Structure(name=name, dim=dim, node_ids=node_ids, coords=coords, member_ids=member_ids,
+                  connectivity=conn, sections=secs, materials=mats, is_beam=beam, releases=rel,
+                  supports=supports, loads=loads, masses=masses, gravity=gravity,
+                  orientation=orient, source=source)
+    for key, parser in _EXTENSIONS.items():
+        if key in data:
+            s.extensions[key] = parser(data[key], s, base_dir)
+    return s
+
+
+def _bad_coords(k, v, dim):
+    if isinstance(v, list) and len(v) in (2, 3) and len(v) != dim:
+        raise InputError(f"nodes.{k}", f"has {len(v)} coordinates but [model] dimension = {dim}")
+    raise InputError(f"nodes.{k}", f"expected a list of {dim} coordinates, got {v!r}")
+
+
+def _node_ref(key: str, node_index: dict, table: str) -> int:
+    if str(key) not in node_index:
+        raise InputError(f"{table}.{key}", f"node '{key}' is not defined"
+                                           f"{_suggest(str(key), node_index)}")
+    return node_index[str(key)]
+
+
+def _check_geometry(coords, conn, member_ids, node_ids) -> None:
+    """Zero-length and duplicate members (vectorised)."""
+    vec = coords[conn[:, 1]] - coords[conn[:, 0]]
+    length = np.linalg.norm(vec, axis=1)
+    scale = max(float(np.ptp(coords, axis=0).max()) if len(coords) > 1 else 1.0, 1e-300)
+    bad = np.flatnonzero(length <= 1e-12 * scale)
+    if bad.size:
+        i = bad[0]
+        a, b = conn[i]
+        raise InputError(f"members.{member_ids[i]}",
+                         f"has zero length (nodes '{node_ids[a]}' and '{node_ids[b]}' coincide)")
+    key = np.sort(conn, axis=1)
+    _, first, counts = np.unique(key, axis=0, return_index=True, return_counts=True)
+    if np.any(counts > 1):
+        dup_key = key[first[np.argmax(counts > 1)]]
+        same = np.flatnonzero(np.all(key == dup_key, axis=1))
+        raise InputError(f"members.{member_ids[same[1]]}",
+                         f"duplicates member '{member_ids[same[0]]}' (same two nodes)")
+
+
+def _mesh_geometry(mesh_name, base_dir, dim, data, sections, materials):
+    """Nodes and members from a meshio-readable line mesh (``[model] mesh``)."""
+    import meshio
+
+    path = (base_dir / mesh_name)
+    if not path.is_file():
+        raise InputError("model.mesh", f"mesh file '{path}' not found")
+    try:
+        mesh = meshio.read(path)
+    except Exception as exc:  # meshio raises many types; the message is what matters
+        raise InputError("model.mesh", f"cannot read '{path}': {exc}") from None
+    pts = np.asarray(mesh.points, dtype=float)
+    if pts.ndim != 2 or pts.shape[0] == 0:
+        raise InputError("model.mesh", "mesh has no points")
+    if dim == 2 and pts.shape[1] == 3:
+        if np.any(np.abs(pts[:, 2]) > 0):
+            raise InputError("model.mesh", "mesh has non-zero z coordinates but [model] "
+                                           "dimension = 2")
+    if pts.shape[1] < dim:
+        pts = np.hstack([pts, np.zeros((pts.shape[0], dim - pts.shape[1]))])
+    coords = pts[:, :dim].copy()
+    blocks = [(i, cb) for i, cb in enumerate(mesh.cells) if cb.type == "line"]
+    if not blocks:
+        raise InputError("model.mesh", "mesh has no line cells to use as members")
+    conn = np.vstack([cb.data for _, cb in blocks]).astype(np.int64)
+    m = conn.shape[0]
+    # group name of each line cell: cell sets first, then gmsh physical tags
+    group = np.full(m, "default", dtype=object)
+    offsets = np.cumsum([0] + [len(cb.data) for _, cb in blocks])
+    for set_name, per_block in (mesh.cell_sets or {}).items():
+        for (bi, _), off in zip(blocks, offsets):
+            if bi < len(per_block) and per_block[bi] is not None and len(per_block[bi]):
+                group[off + np.asarray(per_block[bi], dtype=int)] = set_name
+    phys = mesh.cell_data.get("gmsh:physical")
+    if phys is not None:
+        for (bi, _), off, nxt in zip(blocks, offsets[:-1], offsets[1:]):
+            tags = np.asarray(phys[bi]).astype(int).astype(str)
+            unset = group[off:nxt] == "default"
+            group[off:nxt][unset] = tags[unset]
+    groups = _table(data, "groups")
+    if not groups:
+        if len(sections) == 1 and len(materials) == 1:
+            groups = {"default": {"section": next(iter(sections)),
+                                  "material": next(iter(materials))}}
+        else:
+            raise InputError("[groups]", "a mesh model needs [groups.NAME] = { section, "
+                                         "material } for its cell sets (or 'default')")
+    resolved = {}
+    for gname in np.unique(group):
+        g = groups.get(gname, groups.get("default"))
+        if g is None:
+            raise InputError("[groups]", f"cell set '{gname}' has no entry and there is no "
+                                         "'default' group")
+        if gname not in resolved:
+            raw = dict(g)
+            raw["nodes"] = ["0", "1"]
+            _, sec, mat, beam, rel, orient = _parse_member(
+                f"groups.{gname}", raw, {"0": 0, "1": 1}, sections, materials)
+            resolved[gname] = (sec, mat, beam, rel, orient)
+    props = [resolved[g] for g in group]
+    node_ids = [str(i) for i in range(coords.shape[0])]
+    member_ids = [str(i) for i in range(m)]
+    return (node_ids, coords, member_ids, conn, [p[0] for p in props], [p[1] for p in props],
+            np.array([p[2] for p in props], dtype=bool),
+            np.array([p[3] for p in props], dtype=bool).reshape(-1, 2),
+            np.array([p[4] for p in props]).reshape(-1, 3))
+
+
+def read_model(path: str | Path) -> Structure:
+    """Read a model file.
+
+    Parameters
+    ----------
+    path : path
+        TOML model file (CONTRACT.md §1).
+
+    Returns
+    -------
+    Structure
+
+    Raises
+    ------
+    InputError
+        One line naming the file and the item at fault.
+    """
+    path = Path(path)
+    try:
+        text = path.read_bytes().decode("utf-8")
+    except FileNotFoundError:
+        raise InputError(str(path), "file not found") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise InputError(str(path), f"cannot read file: {exc}") from None
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(str(path), f"malformed TOML: {exc}") from None
+    try:
+        return parse_model(data, base_dir=path.parent, source=str(path))
+    except TrussfeError as err:
+        raise err.with_file(str(path)) from None
+    except RecursionError:
+        raise InputError(str(path), "model nests too deeply") from None

@@ -1,0 +1,66 @@
+# SPDX-License-Identifier: MIT
+"""The compatibility matrix B of a pin-jointed assembly and the DOF bookkeeping around it.
+
+Row i of B (b × μ·j) holds the unit vector of bar i at its two joints, so that ``B d = e`` maps
+joint displacements d to bar elongations e (Hortobágyi eq. 2, linearised; DESIGN.md).  Its
+transpose is the equilibrium matrix, ``Bᵀ t = f`` (the axial part of Lacy eq. 2.13 / 4.20), and
+the truss stiffness is ``K = Bᵀ diag(EA/L) B``.
+"""
+from __future__ import annotations
+
+import numpy as np
+import scipy.sparse as sp
+
+
+def compatibility_matrix(coords: np.ndarray, connectivity: np.ndarray,
+                         free: np.ndarray | None = None) -> sp.csr_matrix:
+    """Sparse compatibility matrix B of the current geometry.
+
+    Parameters
+    ----------
+    coords : ndarray, shape (n, dim)
+        Joint coordinates.
+    connectivity : ndarray of int, shape (b, 2)
+        Start and end joint of each bar.
+    free : ndarray of bool, shape (n, dim), optional
+        Free coordinates; when given only their columns are kept (in row-major order of
+        ``coords``), otherwise all ``n * dim`` columns.
+
+    Returns
+    -------
+    scipy.sparse.csr_matrix, shape (b, n_free)
+
+    Notes
+    -----
+    .. math:: B_{i,(b,k)} = e_{ik},\\quad B_{i,(a,k)} = -e_{ik},\\quad
+              e_i = (x_b - x_a)/\\lVert x_b - x_a\\rVert
+
+    Examples
+    --------
+    >>> B = compatibility_matrix(np.array([[0., 0.], [3., 4.]]), np.array([[0, 1]]))
+    >>> B.toarray()
+    array([[-0.6, -0.8,  0.6,  0.8]])
+    """
+    coords = np.asarray(coords, dtype=float)
+    conn = np.asarray(connectivity, dtype=np.int64).reshape(-1, 2)
+    n, dim = coords.shape
+    b = conn.shape[0]
+    vec = coords[conn[:, 1]] - coords[conn[:, 0]]          # (bar, dim)
+    unit = vec / np.linalg.norm(vec, axis=1)[:, None]
+    rows = np.repeat(np.arange(b), 2 * dim)
+    cols = (conn[:, :, None] * dim + np.arange(dim)[None, None, :]).reshape(b, -1)  # (bar, 2*dim)
+    vals = np.concatenate([-unit, unit], axis=1)
+    B = sp.csr_matrix((vals.ravel(), (rows, cols.ravel())), shape=(b, n * dim))
+    if free is not None:
+        B = B[:, np.flatnonzero(np.asarray(free, dtype=bool).ravel())]
+    return B
+
+
+def equilibrium_matrix(coords: np.ndarray, connectivity: np.ndarray,
+                       free: np.ndarray | None = None) -> sp.csr_matrix:
+    """Equilibrium matrix Bᵀ, so that ``Bᵀ t = f`` for bar tensions t and joint loads f.
+
+    The sign convention makes t positive in tension and f the external load on the joints
+    (Lacy's nodal constraint equations with the member forces taken as bar tensions).
+    """
+    return compatibility_matrix(coords, connectivity, free).T.tocsr()
