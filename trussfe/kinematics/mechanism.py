@@ -523,12 +523,12 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
             e[branch] = 1.0
             a = np.linalg.solve(N[cands], e)
             tau = N @ a                                    # τ_p = 1, other candidates 0
-            if prev_tau is not None and tau @ prev_tau < 0:
-                tau = -tau
-            sgn = np.sign(S[0]) if prev_tau is None or p == dcols[0] else np.sign(tau[p])
-            pred = h * sgn * tau / abs(tau[p]) if prev_tau is not None else S[0] * tau
-            if prev_tau is None and p != dcols[0]:
-                pred = S[0] * tau
+            if prev_tau is None:
+                pred = S[0] * tau                          # prescribed increment of p is S
+            else:
+                if tau @ prev_tau < 0:
+                    tau = -tau
+                pred = h * tau / abs(tau[p])
             indep = np.array([p])
             events.append({"step": k - 1, "kind": "bifurcation", "branches": int(nullity),
                            "branch": int(branch), "independent": names[fidx[p]]})
@@ -558,7 +558,7 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
                     events.append({"step": k - 1, "kind": "bifurcation",
                                    "detected_by": "sign change of det [B; tangent]"})
                 p = int(np.argmax(np.abs(tau)))            # largest velocity (section 5)
-                pred = h * np.sign(tau[p]) * tau / abs(tau[p])
+                pred = h * tau / abs(tau[p])               # forward along the oriented tangent
             prev_sign = sign
             indep = np.array([p])
 
