@@ -488,10 +488,18 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
                                 "to trace" if k == 1 else "the assembly locks: no mechanism "
                                 "left to follow")
         if nullity is not None and nullity < nd:
-            raise InputError("drive", f"the assembly has {nullity} degree(s) of freedom here "
-                                      f"but {nd} drives were given; prescribe at most {nullity}")
+            if k == 1:
+                raise InputError("drive", f"the assembly has {nullity} degree(s) of freedom "
+                                          f"here but {nd} drives were given; prescribe at most "
+                                          f"{nullity}")
+            # Unfolded into a mechanism with fewer degrees of freedom (section 6: after the
+            # four prescribed increments a one-degree-of-freedom finite mechanism): continue
+            # along the tangent, the drive with the largest increment reporting limit points.
+            keep = int(np.argmax(np.abs(S)))
+            drives, dcols, S, nd = [drives[keep]], dcols[[keep]], S[[keep]], 1
+            prev_drive_dir = None
         if nd > 1:
-            # Several degrees of freedom (section 6): prescribe every drive increment.
+            # Several drives (section 6): the prescribed increments give the prediction.
             if N is None:
                 raise AnalysisError("trace", "several drives need the dense path "
                                              f"(at most {DENSE_LIMIT} coordinates)")
@@ -502,22 +510,31 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
             if not np.allclose(pred[dcols], S, rtol=1e-6, atol=1e-12 * Lmax):
                 raise AnalysisError(item, "the drives are not independent degrees of freedom "
                                           "of the mechanism; choose other drive coordinates")
-            indep = dcols
             if nullity > nd:
+                # More infinitesimal than finite freedoms: only the coordinate of the largest
+                # displacement is independent in the corrector (section 6).
                 bif_here = True
+                indep = dcols[[int(np.argmax(np.abs(S)))]]
+                events.append({"step": k - 1, "kind": "bifurcation", "branches": int(nullity),
+                               "independent": names[fidx[indep[0]]]})
+            else:
+                indep = dcols
         elif nullity is not None and nullity > 1:
             # A bifurcation point (rank drop): choose the branch as in section 4.
             bif_here = True
-            _, _, piv = sla.qr(N.T, mode="economic", pivoting=True)
-            cands = list(piv[:nullity])
-            if dcols[0] in cands:
-                cands.remove(dcols[0])
-            if abs(N[dcols[0]]).max() > 1e-8:
-                cands.insert(0, int(dcols[0]))
+            dv = N[dcols[0]]
+            if np.linalg.norm(dv) > 1e-8:
+                # the drive first, then the coordinates of largest pivot in the rest
+                vh = dv / np.linalg.norm(dv)
+                rest = N - np.outer(N @ vh, vh)
+                _, _, piv = sla.qr(rest.T, mode="economic", pivoting=True)
+                cands = [int(dcols[0])] + [int(c) for c in piv if c != dcols[0]][:nullity - 1]
+            else:
+                _, _, piv = sla.qr(N.T, mode="economic", pivoting=True)
+                cands = [int(c) for c in piv[:nullity]]
             if branch >= len(cands):
                 raise InputError("branch", f"the bifurcation at step {k} has {len(cands)} "
                                            f"branches (0..{len(cands) - 1}); got {branch}")
-            cands = cands[:nullity]
             p = int(cands[branch])
             e = np.zeros(nullity)
             e[branch] = 1.0
@@ -534,7 +551,7 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
                            "branch": int(branch), "independent": names[fidx[p]]})
         else:
             # Regular point: tangent from the augmented system [B; cᵀ] τ = e (sparse LU).
-            c = prev_tau if prev_tau is not None else np.eye(f)[dcols[0]]
+            c = prev_tau if prev_tau is not None else np.sign(S[0]) * np.eye(f)[dcols[0]]
             Br = B[rows] if rows.size != B.shape[0] else B
             if Br.shape[0] + 1 == f:
                 tau, sign = _augmented_tangent(Br, c)
@@ -553,6 +570,7 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
                                                  "mechanism at the start; choose another drive")
                 p = int(dcols[0])
                 pred = S[0] * tau / tau[p]
+                tau = pred / np.linalg.norm(pred)
             else:
                 if prev_sign and sign and sign != prev_sign:
                     events.append({"step": k - 1, "kind": "bifurcation",
@@ -586,6 +604,8 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
         resid.append(res.residual)
         indeps.append(int(indep[0]))
         norm = float(np.linalg.norm(d))
+        if nd > 1:
+            prev_tau = d / norm
         if nd == 1:
             new_tau = d / norm
             if bif_here:
