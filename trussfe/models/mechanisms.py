@@ -165,12 +165,17 @@ def section6_foldable(remove: int | None = None) -> MechanismEntry:
 
     * eight bars, four inner joints, an infinitesimal mechanism: the inner joints cannot move
       (links 1, 1, 1.5 on ground points 0, 1, 1.5 admit no motion of the coupler: rigid);
-    * removing a bar (G0–P1, Fig. 5, ``remove=0``; or G2–P3, Fig. 7, ``remove=2``) leaves a
-      change-point four-bar (0.5 + 1.5 = 1 + 1, resp. 1 + 2 = 1.5 + 1.5) with μ·j − ρ(B) = 4 at
-      the folded state and one finite degree of freedom after unfolding;
-    * two unfolding shapes through the folded state (the two branches of the change-point
-      four-bar) and their mirror images: four ways, selected by the signs of the prescribed
-      vertical increments of the inner joints.
+    * removing a bar (G0–P1, Fig. 5, ``remove=0``; or G2–P3, Fig. 7, ``remove=2``) gives
+      μ·j − ρ(B) = 4 at the folded state and leaves a change-point four-bar (0.5 + 1.5 = 1 + 1,
+      resp. 1 + 2 = 1.5 + 1.5): one finite degree of freedom, two branches through the folded
+      state and their mirror images — four unfolding shapes.
+
+    Limitation of this construction (found by computing): the flat triangles P1–P2–P3 and
+    P2–P3–P4 stay flat during the motion, so two states of self-stress and two infinitesimal
+    flutters of P1 and P4 persist after unfolding (ρ(B) = 5, not 7); the paper's assembly,
+    whose figure is missing, becomes a full-row-rank mechanism.  The rank counts at the folded
+    state are what this entry checks; tracing its unfolding with four prescribed increments is
+    not claimed.
     """
     bars = list(_SEC6_BARS)
     name, title, exp = "mech_sec6_foldable", "Hortobágyi section 6: foldable assembly", \
