@@ -44,7 +44,7 @@ from .compatibility import compatibility_matrix
 log = logging.getLogger(__name__)
 
 #: Largest number of free coordinates for which the rank is computed by dense SVD each step.
-DENSE_LIMIT = 600
+DENSE_LIMIT = 200
 
 DIVERGENCE_MESSAGE = ("the prescribed increment leaves the motion region, or the assembly is "
                       "not a finite mechanism")
