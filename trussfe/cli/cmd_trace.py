@@ -117,6 +117,6 @@ def _run(args: argparse.Namespace) -> int:
                   vtk=args.vtk, plot=args.plot)
     if args.json:
         write_json(args.json, doc)
-    ev = ", ".join(f"{e['kind']} after step {e['step']}" for e in doc["events"]) or "none"
+    ev = ", ".join(f"{e['kind']} at state {e['step']}" for e in doc["events"]) or "none"
     sys.stdout.write(f"{doc['model']}: traced {len(doc['path']) - 1} steps; events: {ev}\n")
     return 0
