@@ -639,6 +639,31 @@ class FEModel:
                     out[g.elements, :, 3:] = comp[:, :, 3:]
         return out
 
+    def station_displacements(self, u_global: np.ndarray) -> np.ndarray:
+        """Translations (global axes) at every station of every member.
+
+        Returns
+        -------
+        ndarray, shape (m, kmax + 1, dim)
+            Station ``j`` of member ``i`` is at ``x = j L_i / k_i`` (NaN past ``k_i``).
+        """
+        dim = self.ndim
+        m = self.structure.n_members
+        k = self.member_subdivisions
+        kmax = int(k.max()) if m else 1
+        out = np.full((m, kmax + 1, dim), np.nan)
+        emem = self.element_member
+        j = np.arange(self.n_elements) - self.member_elements[emem]
+        for g in self.groups:
+            comp = (g.G @ u_global).reshape(g.elements.size, 2, g.ncomp)[:, :, :dim]
+            R = self.rotation[emem[g.elements]]
+            glob = np.einsum("eji,esj->esi", R, comp)             # Rᵀ · local
+            els = g.elements
+            out[emem[els], j[els]] = glob[:, 0]
+            lastmask = j[els] == k[emem[els]] - 1
+            out[emem[els][lastmask], k[emem[els]][lastmask]] = glob[lastmask, 1]
+        return out
+
     def node_values(self, u_global: np.ndarray) -> np.ndarray:
         """Global vector → per-node array (n_nodes, ndof_node); 0 where a DOF is absent."""
         dofs = self.node_dofs

@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: MIT
 """Sparse factorisation of the free-DOF stiffness, with mechanism detection.
 
-A singular stiffness never reaches the user as a traceback or a NaN: the LU factorisation is
-checked for pivots that are negligible against the diagonal they came from, and when it fails
+A singular stiffness never reaches the user as a traceback or a NaN: the factorisation
+(:mod:`trussfe.fem.linsolve`) is checked for negligible pivots, and when it fails
 the null space of the (diagonally scaled) stiffness is computed to say how many independent
 mechanisms there are and which nodes move in them.
 """
@@ -17,12 +17,9 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from ..errors import MechanismError
+from .linsolve import SINGULAR_PIVOT, SingularMatrixError, factorize
 
 log = logging.getLogger(__name__)
-
-#: A pivot smaller than this fraction of its own diagonal entry counts as zero: double
-#: precision cannot tell such a stiffness from a mechanism.
-PIVOT_TOLERANCE = 1e-13
 
 #: Eigenvalues of the diagonally scaled stiffness below this (the largest is O(1)) are
 #: counted as mechanisms.
@@ -56,9 +53,10 @@ class Factorised:
         return u
 
 
-def factorise(K: sp.spmatrix, free: np.ndarray, fe=None, item: str = "structure"
-              ) -> Factorised:
-    """LU-factorise K_ff, raising :class:`MechanismError` when it is singular.
+def factorise(K: sp.spmatrix, free: np.ndarray, fe=None, item: str = "structure",
+              backend: str = "auto") -> Factorised:
+    """Factorise K_ff (:func:`trussfe.fem.linsolve.factorize`), raising
+    :class:`MechanismError` when it is singular.
 
     Parameters
     ----------
@@ -69,25 +67,21 @@ def factorise(K: sp.spmatrix, free: np.ndarray, fe=None, item: str = "structure"
         Used to name the moving nodes in the error.
     item : str
         Item named in the error message (the model file).
+    backend : {"auto", "superlu", "pardiso"}
+        Linear-solver backend.
     """
-    Kff = K[free][:, free].tocsc()
+    Kff = K[free][:, free].tocsr()
     n = Kff.shape[0]
     if n == 0:
         return Factorised(lu=_Empty(), free=free, n_dof=K.shape[0])
     d = Kff.diagonal()
-    if np.any(d <= 0):
+    if np.any(d <= 0):                     # a DOF nothing is attached to
         _raise_mechanism(Kff, free, fe, item)
     try:
-        lu = spla.splu(Kff, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
-                       options={"SymmetricMode": True})
-    except RuntimeError:                           # "Factor is exactly singular"
+        lu = factorize(Kff, backend=backend)
+    except SingularMatrixError:
         _raise_mechanism(Kff, free, fe, item)
-    piv = np.abs(lu.U.diagonal())
-    own = d[lu.perm_c]
-    ratio = piv / own
-    if not np.all(np.isfinite(ratio)) or ratio.min() < PIVOT_TOLERANCE:
-        _raise_mechanism(Kff, free, fe, item)
-    log.debug("factorised %d free DOFs, smallest pivot ratio %.3g", n, ratio.min())
+    log.debug("factorised %d free DOFs (%s)", n, lu.backend)
     return Factorised(lu=lu, free=free, n_dof=K.shape[0])
 
 
@@ -135,7 +129,7 @@ def _raise_mechanism(Kff, free, fe, item):
         # pivots collapsed without an exact null space: ill-conditioned beyond double
         # precision; say so rather than return meaningless numbers
         raise MechanismError(item, "the stiffness matrix is numerically singular (a pivot "
-                             f"below {PIVOT_TOLERANCE:g} of its diagonal) although no exact "
+                             f"below {SINGULAR_PIVOT:g} of the largest) although no exact "
                              "mechanism was found: the structure is too flexible for a "
                              "reliable linear solution; add supports or members",
                              mechanisms=0, moving_nodes=[])

@@ -112,7 +112,8 @@ def section_forces(fe: FEModel, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 def solve_static(structure: Structure, bar_model: str = "truss",
                  subdivisions: int | None = None, loads: np.ndarray | None = None,
-                 self_weight: bool = True, fe: FEModel | None = None) -> StaticResult:
+                 self_weight: bool = True, fe: FEModel | None = None,
+                 backend: str = "auto") -> StaticResult:
     """Linear static analysis of a structure.
 
     Parameters
@@ -127,6 +128,8 @@ def solve_static(structure: Structure, bar_model: str = "truss",
         Include gravity on members and nodal masses (``structure.gravity``).
     fe : FEModel, optional
         A discretisation to reuse.
+    backend : {"auto", "superlu", "pardiso"}
+        Linear-solver backend (:mod:`trussfe.fem.linsolve`).
 
     Returns
     -------
@@ -155,7 +158,8 @@ def solve_static(structure: Structure, bar_model: str = "truss",
         fe = discretise(structure, bar_model=bar_model, subdivisions=subdivisions)
     K = fe.stiffness()
     f = fe.load_vector(self_weight=self_weight, loads=loads)
-    fac = factorise(K, fe.free, fe=fe, item=structure.source or structure.name)
+    fac = factorise(K, fe.free, fe=fe, item=structure.source or structure.name,
+                    backend=backend)
     u = fac.solve(f)
     r_all = K @ u - f
     nf = np.linalg.norm(f[fe.free])
