@@ -167,7 +167,7 @@ def double_octahedron(active_lengths: Sequence[float] = (EQUILIBRIUM_LENGTH,) * 
     Examples
     --------
     >>> s = double_octahedron()
-    >>> np.round(s.coords[s.node_index("N6")], 4)     # Appendix D node 6
+    >>> np.round(s.coords[s.node_index("N6")], 4) + 0.0     # Appendix D node 6
     array([ 0.    , -0.6746,  0.5609])
     >>> round(float(s.lengths()[s.member_index("M6")]), 6)
     0.889
