@@ -17,7 +17,7 @@ def triangular_tube() -> Section:
     return Section.tube("tube", 0.0254, 0.022225)
 
 
-def octahedral_tube(inner_diameter: float = 0.62 * INCH) -> Section:
+def octahedral_tube(inner_diameter: float = 0.015748) -> Section:
     """Tube of the double-octahedral bay: OD 0.75 in = 0.01905 m (Table 5.1).
 
     The inner diameter defaults to 0.62 in = 0.015748 m, which gives Appendix D's area
@@ -25,4 +25,4 @@ def octahedral_tube(inner_diameter: float = 0.62 * INCH) -> Section:
     Table 5.1 prints 0.016 m and the MATLAB code uses 0.63 in (A = 8.396e-5 m², stresses
     7.5 % higher than the tables).
     """
-    return Section.tube("tube", 0.75 * INCH, inner_diameter)
+    return Section.tube("tube", 0.01905, inner_diameter)

@@ -118,9 +118,8 @@ def _equilibrium_coords(base_side: float, longeron: float, length: float) -> np.
     fixed = np.zeros((9, 3), dtype=bool)
     fixed[:3] = True
     # The base of the guess is scaled exactly: side base_side, centroid at the origin.
-    r = base_side / np.sqrt(3.0)
-    ang = np.deg2rad([210.0, 330.0, 90.0])
-    guess[:3] = np.column_stack([r * np.cos(ang), r * np.sin(ang), np.zeros(3)])
+    h = base_side / (2.0 * np.sqrt(3.0))
+    guess[:3] = [[-base_side / 2, -h, 0.0], [base_side / 2, -h, 0.0], [0.0, 2 * h, 0.0]]
     return solve_positions(guess, _CONN, _bay_lengths(np.full(3, length), base_side, longeron),
                            fixed, member_ids=_MEMBER_IDS, item="double_octahedron").coords
 
