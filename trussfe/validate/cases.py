@@ -114,6 +114,21 @@ def _quantity(raw: Any, item: str) -> Quantity:
     return q
 
 
+def analysis_names() -> list[str]:
+    """Commands with an ``analyse(model_path, **options)`` entry point usable by a case."""
+    import importlib
+    import pkgutil
+
+    from .. import cli
+    out = []
+    for info in pkgutil.iter_modules(cli.__path__):
+        if info.name.startswith("cmd_") and info.name != "cmd_validate":
+            module = importlib.import_module(f"{cli.__name__}.{info.name}")
+            if callable(getattr(module, "analyse", None)):
+                out.append(info.name[4:])
+    return sorted(out)
+
+
 def load_case(path: str | Path) -> Case:
     """Read one case file.
 
@@ -160,6 +175,10 @@ def _parse(data: dict, path: Path) -> Case:
             raise InputError("case.python", "expected \"module:function\"")
     else:
         case.analysis = _str(raw["analysis"], "case.analysis")
+        names = analysis_names()
+        if case.analysis not in names:
+            raise InputError("case.analysis", f"unknown analysis '{case.analysis}'"
+                                              f"{_suggest(case.analysis, names)}")
         if ("model" in raw) == ("catalogue" in raw):
             raise InputError("case", "an analysis case needs exactly one of 'model' (a file) "
                                      "or 'catalogue' (a trussfe.models function)")
@@ -167,6 +186,11 @@ def _parse(data: dict, path: Path) -> Case:
         case.model = (path.parent / _str(raw["model"], "case.model")).resolve()
     if "catalogue" in raw:
         case.catalogue = _str(raw["catalogue"], "case.catalogue")
+        from .. import models
+        if case.catalogue not in models.__all__ or not callable(getattr(models, case.catalogue)):
+            funcs = [n for n in models.__all__ if callable(getattr(models, n))]
+            raise InputError("case.catalogue", f"unknown catalogue model '{case.catalogue}'"
+                                               f"{_suggest(case.catalogue, funcs)}")
     for key in ("parameters", "options"):
         if key in raw:
             if not isinstance(raw[key], dict):
