@@ -57,7 +57,10 @@ def _check_keys(table: dict, allowed, item: str) -> None:
 def _number(value: Any, item: str, *, positive: bool = False, nonneg: bool = False) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise InputError(item, f"expected a number, got {value!r}")
-    x = float(value)
+    try:
+        x = float(value)
+    except OverflowError:           # a TOML integer beyond the float range
+        raise InputError(item, f"number too large: {value!r}") from None
     if not math.isfinite(x):
         raise InputError(item, f"expected a finite number, got {value!r}")
     if positive and x <= 0.0:
@@ -172,6 +175,9 @@ def _parse_member(mid: str, raw: Any, node_index: dict, sections: dict, material
                                              "at both ends already)")
     orient = (_vector(raw["orientation"], f"{item}.orientation", (3,))
               if "orientation" in raw else np.full(3, np.nan))
+    if "orientation" in raw and not np.any(orient != 0.0):
+        raise InputError(f"{item}.orientation", "must be a non-zero vector in the member's "
+                                                "local x-y plane")
     return idx, sections[sec], materials[mat], mtype == "beam", ("start" in rel, "end" in rel), orient
 
 
@@ -216,9 +222,13 @@ def parse_model(data: dict, base_dir: Path | str = ".", source: str = "") -> Str
     model = _table(data, "model", required=True)
     _check_keys(model, ("name", "dimension", "gravity", "mesh"), "model")
     dim = model.get("dimension", 3)
-    if dim not in (2, 3) or isinstance(dim, bool):
+    if not isinstance(dim, int) or isinstance(dim, bool) or dim not in (2, 3):
         raise InputError("model.dimension", f"must be 2 or 3, got {dim!r}")
-    name = str(model.get("name", Path(source).stem if source else "model"))
+    name = model.get("name", Path(source).stem if source else "model")
+    if not isinstance(name, str):
+        raise InputError("model.name", f"expected a string, got {name!r}")
+    if "mesh" in model and not isinstance(model["mesh"], str):
+        raise InputError("model.mesh", f"expected a file name, got {model['mesh']!r}")
     gravity = (_vector(model["gravity"], "model.gravity", (dim,)) if "gravity" in model
                else np.zeros(dim))
 
@@ -294,9 +304,15 @@ def _node_ref(key: str, node_index: dict, table: str) -> int:
 
 def _check_geometry(coords, conn, member_ids, node_ids) -> None:
     """Zero-length and duplicate members (vectorised)."""
-    vec = coords[conn[:, 1]] - coords[conn[:, 0]]
-    length = np.linalg.norm(vec, axis=1)
-    scale = max(float(np.ptp(coords, axis=0).max()) if len(coords) > 1 else 1.0, 1e-300)
+    with np.errstate(over="ignore", invalid="ignore"):
+        vec = coords[conn[:, 1]] - coords[conn[:, 0]]
+        length = np.linalg.norm(vec, axis=1)
+        scale = max(float(np.ptp(coords, axis=0).max()) if len(coords) > 1 else 1.0, 1e-300)
+    if not (np.all(np.isfinite(length)) and math.isfinite(scale)):
+        i = int(np.flatnonzero(~np.isfinite(length))[0]) if not np.all(
+            np.isfinite(length)) else 0
+        raise InputError(f"members.{member_ids[i]}", "coordinates too large: the member "
+                                                     "length overflows (use SI units, m)")
     bad = np.flatnonzero(length <= 1e-12 * scale)
     if bad.size:
         i = bad[0]
