@@ -205,3 +205,23 @@ def test_fuzz_reader_raw_text(tmp_path_factory, text):
 def test_writer_helpers_quote_fuzz_keys():
     """The writer's quoting is what the fuzz relies on to produce valid TOML text."""
     assert tomllib.loads(f"{toml_key('a b')} = {toml_value([1.5, 'x'])}") == {"a b": [1.5, "x"]}
+
+
+def test_bad_mesh_files(tmp_path):
+    """Mesh models: a missing file, a cell naming a missing point, a 3-D mesh for 2-D."""
+    import meshio
+    import numpy as np
+
+    head = ('[model]\ndimension = 2\nmesh = "g.vtu"\n[materials.al]\nE = 1.0\n'
+            '[sections.s]\narea = 1.0\n')
+    (tmp_path / "m.toml").write_text(head)
+    with pytest.raises(InputError, match="model.mesh.*not found"):
+        read_model(tmp_path / "m.toml")
+    pts = np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0]])
+    meshio.write(tmp_path / "g.vtu", meshio.Mesh(pts, [("line", np.array([[0, 1], [1, 5]]))]))
+    with pytest.raises(InputError, match="point the mesh does not have"):
+        read_model(tmp_path / "m.toml")
+    pts[2, 2] = 1.0
+    meshio.write(tmp_path / "g.vtu", meshio.Mesh(pts, [("line", np.array([[0, 1], [1, 2]]))]))
+    with pytest.raises(InputError, match="non-zero z"):
+        read_model(tmp_path / "m.toml")

@@ -77,9 +77,13 @@ def _unique_names(objs: list, kind: str) -> dict[int, str]:
     names: dict = {}
     used: set[str] = set()
     out: dict[int, str] = {}
+    by_id: dict[int, str] = {}
     for i, o in enumerate(objs):
+        if id(o) in by_id:          # catalogue models share one object: skip hashing it
+            out[i] = by_id[id(o)]
+            continue
         if o in names:
-            out[i] = names[o]
+            out[i] = by_id[id(o)] = names[o]
             continue
         base = o.name or kind
         name, k = base, 2
@@ -87,7 +91,7 @@ def _unique_names(objs: list, kind: str) -> dict[int, str]:
             name, k = f"{base}_{k}", k + 1
         used.add(name)
         names[o] = name
-        out[i] = name
+        out[i] = by_id[id(o)] = name
     return out
 
 
@@ -201,14 +205,28 @@ def model_toml(structure: Structure, *, mesh: str | None = None, header: str = "
 
 def _mesh_groups(s: Structure) -> dict[str, np.ndarray]:
     """Member indices per distinct (section, material, type, releases) combination."""
-    groups: dict = {}
-    for i, k in enumerate(zip(s.sections, s.materials, s.is_beam.tolist(),
-                              map(tuple, s.releases.tolist()))):
-        groups.setdefault(k, []).append(i)
-    if len(groups) == 1:
+    def codes(objs: list) -> np.ndarray:
+        # equal objects share a code; identity first, as catalogue models share one object
+        seen: dict = {}
+        by_id: dict[int, int] = {}
+        out = np.empty(len(objs), dtype=np.int64)
+        for i, o in enumerate(objs):
+            c = by_id.get(id(o))
+            if c is None:
+                c = by_id[id(o)] = seen.setdefault(o, len(seen))
+            out[i] = c
+        return out
+
+    sec, mat = codes(s.sections), codes(s.materials)
+    key = ((sec * (mat.max(initial=0) + 1) + mat) * 2 + s.is_beam) * 4 \
+        + s.releases[:, 0] * 2 + s.releases[:, 1]
+    uniq, first, inverse = np.unique(key, return_index=True, return_inverse=True)
+    if len(uniq) == 1:
         return {"default": np.arange(s.n_members)}
-    # Several groups: named by the integer tag the mesh carries for them (see write_model).
-    return {str(j + 1): np.array(v) for j, v in enumerate(groups.values())}
+    # Several groups, in order of first appearance, named by the integer tag the mesh
+    # carries for them (see write_model).
+    order = np.argsort(first)
+    return {str(j + 1): np.flatnonzero(inverse.reshape(-1) == g) for j, g in enumerate(order)}
 
 
 def write_model(structure: Structure, path: str | Path, *, mesh: str | None = None,
