@@ -28,7 +28,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from ..errors import AnalysisError, InputError
+from ..errors import InputError
 from ..kinematics.assembly import solve_positions
 from ..model.structure import Structure
 from .materials import ALUMINIUM, octahedral_tube
