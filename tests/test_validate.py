@@ -87,6 +87,11 @@ def test_builtin_cases_pass_and_report(tmp_path):
     assert set(rep.sections) == {c.id for c in cases}
     n_quantities = sum(len(c.quantities) for c in cases)
     assert len(rep.quantity_rows) == n_quantities
+    # cases with `plot` get a figure of the structure coloured by the member result
+    n_plots = sum(c.plot is not None for c in cases)
+    assert n_plots >= 4 and len(rep.images) == n_plots
+    assert all(src.startswith("data:image/png;base64,iVBOR") for src in rep.images)
+    assert len(list((tmp_path / "out" / "figures").glob("*.png"))) == n_plots
     # the documented deviations are shown as such (46.0 N: all 7 values 3.4 % high)
     stated = next(r for r in results if r.case.id == "lacy-table-5-2-stated-load")
     assert all(q.status == "differs" for q in stated.quantities)
@@ -174,6 +179,8 @@ def test_exit_status_and_figures(tmp_path):
      'rtol=1e-3\nexpect="diff"\n', "did you mean 'differ'"),
     ('[case]\nid = "a"\npyton = "m:f"\n', "did you mean 'python'"),
     ('[cases]\nid = "a"\n', "did you mean 'case'"),
+    ('[case]\nid = "a"\npython = "m:f"\nplot = "axial_force"\n[[quantities]]\nname="x"\n'
+     'path="x"\nreference=1\nrtol=1e-3\n', "case.plot"),
 ])
 def test_bad_case_files(tmp_path, body, item, capsys):
     """A malformed case file is bad input: InputError naming the file, exit status 2."""

@@ -12,7 +12,7 @@ from ..errors import InputError
 from ..io.model_file import _suggest
 
 CASE_KEYS = ("id", "title", "model", "catalogue", "parameters", "analysis", "python",
-             "options", "notes", "tags")
+             "options", "notes", "tags", "plot")
 QUANTITY_KEYS = ("name", "path", "reference", "source", "thesis_matlab", "thesis_mscpal",
                  "rtol", "atol", "expect", "note")
 EXPECT = ("agree", "differ")
@@ -70,6 +70,7 @@ class Case:
     options: dict[str, Any] = field(default_factory=dict)
     notes: str = ""
     tags: list[str] = field(default_factory=list)
+    plot: str | None = None
 
 
 def _num(value: Any, item: str, *, nonneg: bool = False) -> float:
@@ -198,6 +199,11 @@ def _parse(data: dict, path: Path) -> Case:
             setattr(case, key, dict(raw[key]))
     if "parameters" in raw and case.catalogue is None:
         raise InputError("case.parameters", "parameters apply to a 'catalogue' model only")
+    if "plot" in raw:
+        if case.analysis is None:
+            raise InputError("case.plot", "plot draws the model of an 'analysis' case; a "
+                                          "python case returns its own figures")
+        case.plot = _str(raw["plot"], "case.plot")
     tags = raw.get("tags", [])
     if not isinstance(tags, list) or not all(isinstance(t, str) for t in tags):
         raise InputError("case.tags", "expected a list of strings")

@@ -87,7 +87,7 @@ class CaseResult:
     case: Case
     quantities: list[QuantityResult] = field(default_factory=list)
     error: str = ""
-    figures: dict[str, Path] = field(default_factory=dict)
+    figures: dict[str, bytes] = field(default_factory=dict)    # name -> PNG
     seconds: float = 0.0
 
     @property
@@ -177,8 +177,9 @@ def _catalogue_model(case: Case, folder: Path) -> Path:
     return write_model(structure, folder / f"{case.id}.toml")
 
 
-def evaluate(case: Case) -> tuple[dict, dict]:
-    """Run a case's analysis; returns (result dict, figures)."""
+def evaluate(case: Case) -> tuple[dict, dict[str, bytes]]:
+    """Run a case's analysis; returns (result dict, figures as PNG bytes)."""
+    figures: dict[str, bytes] = {}
     if case.python:
         result = _call_python(case.python, case.options)
     else:
@@ -188,10 +189,40 @@ def evaluate(case: Case) -> tuple[dict, dict]:
             if not Path(model).is_file():
                 raise InputError("case.model", f"model file '{model}' not found")
             result = analyse(str(model), **case.options)
+            if case.plot and isinstance(result, dict):
+                figures[case.plot] = _member_plot(model, result, case.plot)
     if not isinstance(result, dict):
         raise InputError("case", f"the analysis returned {type(result).__name__}, not a dict")
-    figures = result.get("figures", {}) or {}
-    return result, {str(k): Path(v) for k, v in figures.items()}
+    for name, path in (result.get("figures", {}) or {}).items():
+        try:
+            figures[str(name)] = Path(path).read_bytes()
+        except OSError as exc:
+            raise InputError("case", f"figure '{name}' cannot be read: {exc}") from None
+    return result, figures
+
+
+def _member_plot(model: Path, result: dict, field_name: str) -> bytes:
+    """The structure coloured by the member result ``field_name`` (e.g. axial_force)."""
+    import numpy as np
+
+    from ..io.model_file import read_model
+    from .figures import member_field_png
+
+    structure = read_model(model)
+    members = result.get("members", {})
+    values = np.full(structure.n_members, np.nan)
+    for i, mid in enumerate(structure.member_ids):
+        v = members.get(mid, {}).get(field_name)
+        if isinstance(v, (int, float)):
+            values[i] = v
+        elif isinstance(v, list) and v and all(isinstance(x, (int, float)) for x in v):
+            values[i] = v[-1]           # a history: its last value
+    if not np.isfinite(values).any():
+        raise InputError("case.plot", f"the result has no member field '{field_name}'")
+    unit = {"axial_force": " (N)", "axial_stress": " (Pa)", "max_von_mises": " (Pa)"}
+    return member_field_png(structure, values,
+                            field_name.replace("_", " ") + unit.get(field_name, ""),
+                            title=structure.name)
 
 
 def run_case(case: Case) -> CaseResult:

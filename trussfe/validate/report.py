@@ -6,7 +6,6 @@ import base64
 import datetime as _dt
 import html
 import re
-import shutil
 from pathlib import Path
 
 from .. import __version__
@@ -198,12 +197,8 @@ def html_report(results: list[CaseResult]) -> str:
             parts.append("</tbody></table>")
         if r.case.notes.strip():
             parts.append(f'<div class="notes">{markdown_to_html(r.case.notes)}</div>')
-        for name, path in r.figures.items():
-            try:
-                data = base64.b64encode(Path(path).read_bytes()).decode("ascii")
-            except OSError:
-                parts.append(f'<p class="error">figure {e(name)} missing: {e(str(path))}</p>')
-                continue
+        for name, png in r.figures.items():
+            data = base64.b64encode(png).decode("ascii")
             parts.append(f'<figure><img alt="{e(name)}" src="data:image/png;base64,{data}">'
                          f"<figcaption>{e(name)}</figcaption></figure>")
         parts.append("</section>")
@@ -218,14 +213,13 @@ def write_report(results: list[CaseResult], out_dir: str | Path) -> tuple[Path, 
     with atomic_dir(out_dir) as tmp:
         figure_paths: dict[tuple[str, str], str] = {}
         for r in results:
-            for name, path in r.figures.items():
-                if Path(path).is_file():
-                    safe = re.sub(r"[^A-Za-z0-9_.-]", "_", f"{r.case.id}-{name}")
-                    if not safe.endswith(".png"):
-                        safe += ".png"
-                    (tmp / "figures").mkdir(exist_ok=True)
-                    shutil.copyfile(path, tmp / "figures" / safe)
-                    figure_paths[(r.case.id, name)] = f"figures/{safe}"
+            for name, png in r.figures.items():
+                safe = re.sub(r"[^A-Za-z0-9_.-]", "_", f"{r.case.id}-{name}")
+                if not safe.endswith(".png"):
+                    safe += ".png"
+                (tmp / "figures").mkdir(exist_ok=True)
+                (tmp / "figures" / safe).write_bytes(png)
+                figure_paths[(r.case.id, name)] = f"figures/{safe}"
         (tmp / "report.md").write_text(markdown_report(results, figure_paths), encoding="utf-8")
         (tmp / "report.html").write_text(html_report(results), encoding="utf-8")
     return out_dir / "report.md", out_dir / "report.html"
