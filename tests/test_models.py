@@ -187,6 +187,10 @@ def test_double_octahedron_no_assembly():
         M.double_octahedron((1.1, -1.0, 1.1))
     with pytest.raises(InputError, match="position"):
         M.slew_lengths("slew3")
+    with pytest.raises(InputError, match="expected 3 lengths"):
+        M.double_octahedron((1.1, 1.1))
+    with pytest.raises(InputError, match="triangular_truss.load"):
+        M.triangular_truss(load=98.1)
 
 
 # ------------------------------------------------------------------ chain

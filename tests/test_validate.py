@@ -224,3 +224,30 @@ def test_catalogue_case_bad_parameters_is_a_case_error(tmp_path):
                  "--no-progress"]) == 1
     rep = parse_report(tmp_path / "r" / "report.html")
     assert rep.sections == {"a": "error"}
+
+
+from hypothesis import HealthCheck, given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+_CASE_KEYS = ["case", "quantities", "id", "title", "analysis", "python", "model", "catalogue",
+              "parameters", "options", "notes", "tags", "plot", "name", "path", "reference",
+              "source", "rtol", "atol", "expect", "static", "two_bar", "m:f", "differ"]
+_values = st.recursive(
+    st.one_of(st.integers(-2, 2), st.floats(), st.booleans(), st.sampled_from(_CASE_KEYS)),
+    lambda inner: st.one_of(st.lists(inner, max_size=3),
+                            st.dictionaries(st.sampled_from(_CASE_KEYS), inner, max_size=4)),
+    max_leaves=15)
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.dictionaries(st.sampled_from(_CASE_KEYS), _values, max_size=4))
+def test_fuzz_case_reader(data):
+    """Any TOML-shaped case document: a Case or an InputError, never another exception."""
+    from trussfe.validate.cases import _parse
+
+    try:
+        case = _parse(data, Path("fuzz.toml"))
+    except InputError as err:
+        assert "\n" not in str(err)
+    else:
+        assert case.quantities and case.id

@@ -171,7 +171,10 @@ def double_octahedron(active_lengths: Sequence[float] = (EQUILIBRIUM_LENGTH,) * 
     >>> round(float(s.lengths()[s.member_index("M6")]), 6)
     0.889
     """
-    active = np.asarray(active_lengths, dtype=float).reshape(3)
+    active = np.asarray(active_lengths, dtype=float).ravel()
+    if active.shape != (3,):
+        raise InputError("double_octahedron.active_lengths", f"expected 3 lengths (M7/8, "
+                                                             f"M9/10, M11/12), got {active_lengths!r}")
     _check_lengths(active, "double_octahedron.active_lengths")
     if base_side <= 0 or longeron <= 0:
         raise InputError("double_octahedron", "base_side and longeron must be positive")
