@@ -151,3 +151,22 @@ def test_nodal_masses_and_lumped_frame_mass_total():
     for kind in ("consistent", "lumped"):
         M = fe.mass(kind)
         assert_allclose(st @ M @ st, total, rtol=1e-12)
+
+
+def test_forms_equal_the_sympy_derivation():
+    """docs/derivations/frame_matrices.py integrates the shape functions symbolically; the
+    forms-assembled matrices agree with it to round-off."""
+    import importlib.util
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parents[1] / "docs" / "derivations" / "frame_matrices.py"
+    spec = importlib.util.spec_from_file_location("frame_matrices", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    fe, g, L = _element([1, 0, 0])
+    N = 512.0
+    K, M, Kg = mod.numeric({"L": L, "E": MAT.E, "G": MAT.G, "A": SEC.area, "Iy": SEC.Iy,
+                            "Iz": SEC.Iz, "J": SEC.J, "rho": MAT.density, "N": N})
+    for got, want in [(_comp(g, fe.local_stiffness(g)), K), (_comp(g, fe.local_mass(g)), M),
+                      (_comp(g, fe.local_geometric_stiffness(g, np.array([N]))), Kg)]:
+        assert_allclose(got, want, rtol=ROUND_OFF, atol=ROUND_OFF * abs(want).max())

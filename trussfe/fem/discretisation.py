@@ -161,7 +161,7 @@ def _exploded_mesh(h: np.ndarray) -> MeshLine1:
     n = h.size
     p = np.zeros((1, 2 * n))
     p[0, 1::2] = h
-    t = np.arange(2 * n, dtype=np.int64).reshape(n, 2).T
+    t = np.ascontiguousarray(np.arange(2 * n, dtype=np.int64).reshape(n, 2).T)
     return MeshLine1(p, t)
 
 
