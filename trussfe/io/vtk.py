@@ -38,7 +38,8 @@ import numpy as np
 from ..errors import InputError
 from .output import atomic_dir, atomic_path
 
-__all__ = ["write_vtu", "write_pvd", "write_series", "write_stations", "station_mesh"]
+__all__ = ["write_vtu", "write_pvd", "write_series", "write_stations", "station_mesh",
+           "write_mode_set", "read_pvd"]
 
 log = logging.getLogger(__name__)
 
@@ -249,7 +250,8 @@ def write_series(directory: str | Path, structure, frames: Iterable[Mapping[str,
     frames : iterable of mapping
         One mapping per step with optional keys ``"time"`` (the pvd timestep: a time in s,
         or a mode number; default the frame index), ``"coords"``, ``"point_data"``,
-        ``"cell_data"``, ``"field_data"`` (as in :func:`write_vtu`).
+        ``"cell_data"``, ``"field_data"`` (as in :func:`write_vtu`); or ``"mesh"``, a ready
+        :class:`meshio.Mesh` (e.g. from :func:`station_mesh`), written as it is.
     name : str
         Base name of the collection.
 
@@ -270,8 +272,9 @@ def write_series(directory: str | Path, structure, frames: Iterable[Mapping[str,
     with atomic_dir(directory) as tmp:
         for i, fr in enumerate(frames):
             rel = Path(name) / f"{name}_{i:04d}.vtu"
-            mesh = structure_mesh(structure, fr.get("coords"), fr.get("point_data"),
-                                  fr.get("cell_data"), fr.get("field_data"))
+            mesh = fr.get("mesh") or structure_mesh(structure, fr.get("coords"),
+                                                    fr.get("point_data"), fr.get("cell_data"),
+                                                    fr.get("field_data"))
             (tmp / name).mkdir(exist_ok=True)
             _meshio_write(tmp / rel, mesh)
             entries.append((fr.get("time", i), rel))
@@ -364,3 +367,62 @@ def write_stations(path: str | Path, structure, stations: np.ndarray,
     """
     return _write_mesh(path, station_mesh(structure, stations, coords, point_data, cell_data,
                                           field_data))
+
+
+def write_mode_set(directory: str | Path, structure, node_shapes: np.ndarray, name: str,
+                   values: Mapping[str, np.ndarray] | None = None,
+                   stations: tuple[np.ndarray, np.ndarray] | None = None,
+                   cell_data: Mapping[str, np.ndarray] | None = None) -> list[Path]:
+    """Write mode shapes (vibration or buckling) as one ``.pvd`` with a step per mode.
+
+    Parameters
+    ----------
+    directory : str or Path
+    structure : Structure
+    node_shapes : ndarray, shape (k, n, dim)
+        Translations of each mode at the nodes.  Written as point data ``mode_shape`` as
+        given and as ``displacement`` scaled to a largest nodal translation of 1, so that
+        ParaView's *Warp By Vector* with a scale factor of a length shows every mode alike.
+    name : str
+        Collection name (``modes``, ``buckling``).
+    values : mapping name → ndarray (k,), optional
+        Per-mode scalars written as field data (``frequency_hz``, ``load_factor``); the pvd
+        timestep is the mode number 1..k.
+    stations : (xi, shapes), optional
+        Shapes along subdivided members: ``xi`` (m, s) fractions and ``shapes``
+        (k, m, s, dim); written as a second collection ``<name>_stations.pvd`` (polylines,
+        :func:`station_mesh`) scaled by the same factor as ``displacement``.
+    cell_data : mapping name → ndarray (m,) or (k, m), optional
+        Member data (e.g. ``buckling_utilisation``, ``axial_force``), the same for every mode
+        when 1-D.
+
+    Returns
+    -------
+    list of Path
+        The ``.pvd`` files written.
+    """
+    node_shapes = np.asarray(node_shapes, dtype=float)
+    k = node_shapes.shape[0]
+    amp = np.linalg.norm(node_shapes, axis=2).max(axis=1)                 # (k,)
+    if stations is not None:
+        amp = np.fmax(amp, np.nanmax(np.linalg.norm(stations[1], axis=3), axis=(1, 2)))
+    scale = np.where(amp > 0, 1.0 / np.where(amp > 0, amp, 1.0), 0.0)
+    values = dict(values or {})
+    cells = dict(cell_data or {})
+    frames = []
+    for i in range(k):
+        fd = {key: float(np.asarray(v)[i]) for key, v in values.items()}
+        fd["mode"] = i + 1
+        cd = {key: (np.asarray(v)[i] if np.ndim(v) == 2 else v) for key, v in cells.items()}
+        frames.append({"time": i + 1, "field_data": fd, "cell_data": cd,
+                       "point_data": {"mode_shape": node_shapes[i],
+                                      "displacement": node_shapes[i] * scale[i]}})
+    out = [write_series(directory, structure, frames, name)]
+    if stations is not None:
+        xi, shp = stations
+        sframes = [{"time": i + 1, "mesh": station_mesh(
+            structure, xi, point_data={"mode_shape": shp[i], "displacement": shp[i] * scale[i]},
+            field_data={**{key: float(np.asarray(v)[i]) for key, v in values.items()},
+                        "mode": i + 1})} for i in range(k)]
+        out.append(write_series(directory, structure, sframes, f"{name}_stations"))
+    return out
