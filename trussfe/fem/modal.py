@@ -272,9 +272,12 @@ def generalized_eigen(Kff: sp.spmatrix, Mff: sp.spmatrix, count: int, sigma: flo
     else:
         if factor is None:
             factor = factorize(A)
-        op = spla.LinearOperator((n, n), matvec=factor.solve, dtype=float)
+        # The Lanczos iteration needs no refined solves: use the factor's plain solve.
+        solve = getattr(factor, "_solve", factor.solve)
+        op = spla.LinearOperator((n, n), matvec=solve, dtype=float)
+        ncv = min(n - 1, max(2 * count + 1, count + 20))
         lam, V = spla.eigsh(Kff.tocsc(), k=count, M=Mff.tocsc(), sigma=sigma, which="LM",
-                            OPinv=op)
+                            OPinv=op, ncv=ncv)
         order = np.argsort(lam)
         lam, V = lam[order], V[:, order]
     # M-normalise (eigsh returns M-orthonormal vectors already; dense returns A-normalised)
@@ -380,8 +383,15 @@ def solve_modes(structure: Structure, count: int = 6, mass: str = "consistent",
     lam[:nz] = 0.0
     lam = np.maximum(lam, 0.0) if nz else lam
     if np.any(lam < 0):
-        raise AnalysisError(item, "a negative eigenvalue was found: the stiffness is not "
-                            "positive semi-definite")
+        # K is positive semi-definite, so a negative eigenvalue is round-off: the lowest
+        # eigenvalues are below what double precision resolves for this stiffness.
+        kd_max = float(kd.max())
+        raise AnalysisError(item, f"the lowest eigenvalue came out negative (ω² = "
+                            f"{lam.min():.3g} rad²/s², against a largest K_ii/M_ii of "
+                            f"{kd_max / max(float(Mff.diagonal().max()), 1e-300):.3g}): the "
+                            "stiffness is too ill-conditioned for double precision (an "
+                            "extremely slender structure or a near-mechanism), so its lowest "
+                            "frequencies cannot be resolved; shorten the model or add supports")
     shapes = np.zeros((fe.n_dof, count))
     shapes[free] = V
     r = rigid_translations(fe)[free]                                # (n_free, dim)
