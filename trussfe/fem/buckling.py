@@ -37,7 +37,7 @@ import scipy.sparse.linalg as spla
 
 from ..errors import AnalysisError, InputError
 from ..model.structure import Structure
-from .discretisation import FEModel, discretise
+from .discretisation import FEModel
 from .solver import factorise
 from .static import StaticResult, solve_static
 

@@ -330,7 +330,8 @@ def station_mesh(structure, stations: np.ndarray, coords: np.ndarray | None = No
     for k, v in (point_data or {}).items():
         v = np.asarray(v)
         if v.shape[:2] != (m, s):
-            raise InputError(f"vtk station data '{k}'", f"has shape {v.shape}; need ({m}, {s}, ...)")
+            raise InputError(f"vtk station data '{k}'",
+                             f"has shape {v.shape}; need ({m}, {s}, ...)")
         pdata[k] = _check_array(k, v.reshape((m * s,) + v.shape[2:]), m * s, "station")
     cdata = {"member_id": [np.repeat(np.arange(m, dtype=np.int64), s - 1)]}
     for k, v in (cell_data or {}).items():
