@@ -294,7 +294,10 @@ def station_mesh(structure, stations: np.ndarray, coords: np.ndarray | None = No
     ----------
     structure : Structure
     stations : ndarray, shape (s,) or (m, s)
-        Stations as fractions ξ ∈ [0, 1] of each member's length, ascending (s ≥ 2).
+        Stations as fractions ξ ∈ [0, 1] of each member's length, ascending, at least two per
+        member.  Members with fewer stations than others are NaN-padded at the end of their
+        row (e.g. truss bars with 2 stations beside beams with k + 1); padded entries of the
+        data arrays are ignored.
     coords : ndarray, shape (n, dim), optional
         Node positions defining the straight member axes (default the model's).
     point_data : mapping name → array of shape (m, s, ...)
@@ -307,8 +310,9 @@ def station_mesh(structure, stations: np.ndarray, coords: np.ndarray | None = No
     Returns
     -------
     meshio.Mesh
-        ``m·s`` points, ``m·(s − 1)`` line cells; cell data ``member_id`` gives each segment's
-        member and point data ``xi`` the station fraction.
+        One point per station and one line cell per segment between consecutive stations
+        (``m·s`` points and ``m·(s − 1)`` cells without padding); cell data ``member_id`` gives
+        each segment's member and point data ``xi`` the station fraction.
     """
     m = structure.n_members
     xi = np.asarray(stations, dtype=float)
@@ -317,30 +321,41 @@ def station_mesh(structure, stations: np.ndarray, coords: np.ndarray | None = No
     if xi.ndim != 2 or xi.shape[0] != m or xi.shape[1] < 2:
         raise InputError("vtk stations", f"shape {np.shape(stations)}: need (s,) or ({m}, s) "
                          "with s >= 2")
-    if np.any(np.diff(xi, axis=1) <= 0) or xi.min() < 0 or xi.max() > 1:
-        raise InputError("vtk stations", "stations must ascend within [0, 1]")
     s = xi.shape[1]
+    valid = np.isfinite(xi)                                          # (member, station)
+    nvalid = valid.sum(axis=1)
+    prefix = np.arange(s)[None, :] < nvalid[:, None]
+    if np.any(valid != prefix) or np.any(nvalid < 2):
+        raise InputError("vtk stations", "each member needs at least 2 stations; NaN padding "
+                         "may only follow them")
+    xf = np.where(valid, xi, 1.0)
+    dx = np.diff(xf, axis=1)
+    seg = valid[:, 1:]                                               # (member, segment)
+    if np.any(dx[seg] <= 0) or xf.min() < 0 or xf.max() > 1:
+        raise InputError("vtk stations", "stations must ascend within [0, 1]")
     x = structure.coords if coords is None else np.asarray(coords, dtype=float)
     xa, xb = x[structure.connectivity[:, 0]], x[structure.connectivity[:, 1]]  # (m, dim)
-    pts = xa[:, None, :] + xi[:, :, None] * (xb - xa)[:, None, :]  # (member, station, dim)
-    pts = _pad3(pts.reshape(m * s, -1))
-    base = (np.arange(m) * s)[:, None] + np.arange(s - 1)[None, :]  # (member, segment)
-    cells = np.stack([base, base + 1], axis=-1).reshape(-1, 2)
-    pdata = {"xi": xi.reshape(-1)}
+    pts = xa[:, None, :] + xf[:, :, None] * (xb - xa)[:, None, :]  # (member, station, dim)
+    pts = _pad3(pts[valid])
+    # point number of every valid station; segments join consecutive valid stations
+    number = np.cumsum(valid.ravel()).reshape(m, s) - 1
+    cells = np.stack([number[:, :-1][seg], number[:, 1:][seg]], axis=-1)
+    pdata = {"xi": xi[valid]}
     for k, v in (point_data or {}).items():
         v = np.asarray(v)
         if v.shape[:2] != (m, s):
             raise InputError(f"vtk station data '{k}'",
                              f"has shape {v.shape}; need ({m}, {s}, ...)")
-        pdata[k] = _check_array(k, v.reshape((m * s,) + v.shape[2:]), m * s, "station")
-    cdata = {"member_id": [np.repeat(np.arange(m, dtype=np.int64), s - 1)]}
+        pdata[k] = _check_array(k, v[valid], int(valid.sum()), "station")
+    nseg = int(seg.sum())
+    member = np.broadcast_to(np.arange(m, dtype=np.int64)[:, None], seg.shape)
+    cdata = {"member_id": [member[seg]]}
     for k, v in (cell_data or {}).items():
         v = np.asarray(v)
         if v.shape[:2] != (m, s - 1):
             raise InputError(f"vtk segment data '{k}'",
                              f"has shape {v.shape}; need ({m}, {s - 1}, ...)")
-        cdata[k] = [_check_array(k, v.reshape((m * (s - 1),) + v.shape[2:]), m * (s - 1),
-                                 "segment")]
+        cdata[k] = [_check_array(k, v[seg], nseg, "segment")]
     fdata = {k: np.atleast_1d(np.asarray(v, dtype=float)) for k, v in (field_data or {}).items()}
     return meshio.Mesh(pts, [("line", cells)], point_data=pdata, cell_data=cdata,
                        field_data=fdata)
