@@ -196,3 +196,27 @@ def test_active_member_rigid_body_mass():
     # the member's own distributed mass is replaced, not added
     M = mass_matrix(fe).toarray()
     assert_allclose(uy @ M @ uy, 2.4 + mt, rtol=1e-12)
+
+
+def test_active_member_pendulum_frequencies():
+    """An active member pinned at a fixed node A, its end B held transversely by a massless
+    spring bar: B's transverse mode is a pendulum with effective mass I_A/L² (I_A = base +
+    tube moments about A), ω² = k_spring L² / I_A; its axial mode moves the tube only (the base
+    rides on A), ω² = (EA/L) / m_tube.  Closed form, rtol 1e-10."""
+    L, h = 3.0, 1.0
+    s = build_structure([[0, 0], [L, 0], [L, -h]], [(0, 1), (1, 2)], section=TUBE,
+                        material=STEEL, supports={0: "xy", 2: "xy"})
+    spring = Material("spring", E=5e9, G=2e9, density=0.0)
+    s.materials[1] = spring
+    s.__dict__.pop("_prop_cache", None)
+    act = SimpleNamespace(member=0, base_mass=3.0, base_cg=0.35, base_inertia=3.0 * 0.7**2 / 3,
+                          tube_length=0.254)
+    s.extensions["active_members"] = [act]
+    r = solve_modes(s, count=2)
+    rhoA = STEEL.density * TUBE.area
+    mt = rhoA * 0.254
+    I_A = act.base_inertia + rhoA * (L**3 - (L - 0.254) ** 3) / 3
+    k_spring = spring.E * TUBE.area / h
+    k_axial = STEEL.E * TUBE.area / L
+    expected = np.sort([np.sqrt(k_spring * L**2 / I_A), np.sqrt(k_axial / mt)]) / (2 * np.pi)
+    assert_allclose(r.frequencies_hz, expected, rtol=1e-10)
