@@ -323,7 +323,7 @@ def _perm_parity(perm: np.ndarray) -> int:
     return (n - cycles) % 2
 
 
-def _augmented_tangent(B: sp.csr_matrix, c: np.ndarray):
+def _augmented_tangent(B: sp.csr_matrix, c: np.ndarray, return_lu: bool = False):
     """Tangent τ with ``B τ = 0, cᵀ τ = 1`` and the sign of ``det [B; cᵀ]`` (sparse LU)."""
     A = sp.vstack([B, sp.csr_matrix(c[None, :])]).tocsc()
     try:
@@ -338,7 +338,30 @@ def _augmented_tangent(B: sp.csr_matrix, c: np.ndarray):
     tau = lu.solve(rhs)
     sign = int(np.prod(np.sign(diag)))
     sign *= (-1) ** (_perm_parity(lu.perm_r) + _perm_parity(lu.perm_c))
+    if return_lu:
+        return tau, sign, lu
     return tau, sign
+
+
+def _chord_corrector(x0, conn, L, fidx, pred, lu, p, tol, max_iterations) -> StepResult:
+    """Corrector with the factorised ``[B(x0); e_pᵀ]`` kept (chord iteration): solves
+    ``B Δ = −t, Δ_p = 0`` with one factorisation per step; for the small steps of a trace it
+    converges in a few cheap solves (used above the dense limit)."""
+    n, dim = x0.shape
+    d = pred.copy()
+    rhs = np.zeros(fidx.size)
+    res = np.inf
+    for it in range(max_iterations + 1):
+        full = np.zeros(n * dim)
+        full[fidx] = d
+        t = compatibility_error(x0, conn, L, full.reshape(n, dim))
+        res = float(np.max(np.abs(t)))
+        if res <= tol or not np.isfinite(res) or it == max_iterations:
+            break
+        rhs[:-1] = -t
+        d = d + lu.solve(rhs)
+    return StepResult(increments=d, iterations=it, residual=res,
+                      converged=bool(res <= tol))
 
 
 def _dense_null(B: sp.csr_matrix, rtol: float):
@@ -481,6 +504,7 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
         ranks.append(rank if rank is not None else f - nd)
         nullity = None if rank is None else f - rank
         bif_here = False
+        chord = None
         if nullity == 0:
             raise AnalysisError(item if k > 1 else "trace",
                                 "the assembly is rigid (rank of the compatibility matrix = "
@@ -553,7 +577,22 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
             # Regular point: tangent from the augmented system [B; cᵀ] τ = e (sparse LU).
             c = prev_tau if prev_tau is not None else np.sign(S[0]) * np.eye(f)[dcols[0]]
             Br = B[rows] if rows.size != B.shape[0] else B
-            if Br.shape[0] + 1 == f:
+            chord = None
+            if not dense and square and prev_tau is not None and nd == 1:
+                # One factorisation per step: [B; e_pᵀ] with p the coordinate of largest
+                # velocity of the last step gives the tangent (τ_p = 1), the determinant sign
+                # (det [B; τ̂ᵀ] has the sign of det [B; e_pᵀ]·τ̂_p) and the chord corrector.
+                p0 = int(np.argmax(np.abs(prev_tau)))
+                ep = np.zeros(f)
+                ep[p0] = 1.0
+                tau, sign, lu = _augmented_tangent(Br, ep, return_lu=True)
+                if tau is not None:
+                    if tau @ prev_tau < 0:
+                        tau = -tau
+                    sign *= int(np.sign(tau[p0]))
+                    if abs(tau[p0]) >= 0.5 * np.abs(tau).max():
+                        chord = (lu, p0)
+            elif Br.shape[0] + 1 == f:
                 tau, sign = _augmented_tangent(Br, c)
             else:
                 tau, sign = None, 0
@@ -576,14 +615,22 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
                     events.append({"step": k - 1, "kind": "bifurcation",
                                    "detected_by": "sign change of det [B; tangent]"})
                 p = int(np.argmax(np.abs(tau)))            # largest velocity (section 5)
+                if chord is not None:
+                    p = chord[1]
                 pred = h * tau / abs(tau[p])               # forward along the oriented tangent
             prev_sign = sign
             indep = np.array([p])
 
         # Corrector with step halving down to the minimum step.
         while True:
-            res = hortobagyi_step(x, conn, L, free, indep, pred, tolerance=tolerance,
-                                  max_iterations=max_iterations, newton=newton)
+            res = None
+            if chord is not None:
+                res = _chord_corrector(x, conn, L, fidx, pred, chord[0], chord[1],
+                                       tolerance * Lmax, max_iterations)
+                chord = None                               # a retry uses Newton
+            if res is None or not res.converged:
+                res = hortobagyi_step(x, conn, L, free, indep, pred, tolerance=tolerance,
+                                      max_iterations=max_iterations, newton=newton)
             if res.converged:
                 break
             scale = 0.5
