@@ -36,8 +36,8 @@ from ..errors import InputError
 from ..io.model_file import register_table
 from ..model.structure import Structure
 
-_KEYS = ("base_mass", "base_length", "base_cg", "base_inertia", "tube_length", "tube_section",
-         "tube_material", "min_length", "max_length", "end_condition")
+_KEYS = ("base_mass", "base_length", "base_cg", "base_inertia", "tube_length",
+         "min_length", "max_length")
 
 
 @dataclass(frozen=True)

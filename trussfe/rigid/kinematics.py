@@ -109,7 +109,8 @@ def _member_lengths(structure: Structure, motion: Motion) -> np.ndarray:
 
 
 def solve_motion_positions(structure: Structure, motion: Motion,
-                           coords0: np.ndarray | None = None) -> np.ndarray:
+                           coords0: np.ndarray | None = None, progress: bool = False
+                           ) -> np.ndarray:
     """Node positions at every step of the motion, warm-started step to step.
 
     Parameters
@@ -118,6 +119,8 @@ def solve_motion_positions(structure: Structure, motion: Motion,
     motion : Motion
     coords0 : ndarray, optional
         Starting guess for the first step (default: the model's coordinates).
+    progress : bool
+        Show a progress bar (tqdm, on stderr).
 
     Returns
     -------
@@ -133,7 +136,11 @@ def solve_motion_positions(structure: Structure, motion: Motion,
     fixed = structure.translation_supports
     x = np.array(structure.coords if coords0 is None else coords0, dtype=float)
     out = np.empty((motion.n_steps,) + x.shape)
-    for k in range(motion.n_steps):
+    steps = range(motion.n_steps)
+    if progress:
+        from tqdm import tqdm
+        steps = tqdm(steps, desc="positions", unit="step", leave=False)
+    for k in steps:
         try:
             r = solve_positions(x, structure.connectivity, L[k], fixed,
                                 member_ids=structure.member_ids, item=_step_item(motion, k))
@@ -208,7 +215,7 @@ def _count_message(pattern: _Pattern) -> str:
 
 
 def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "exact",
-                       coords: np.ndarray | None = None) -> Kinematics:
+                       coords: np.ndarray | None = None, progress: bool = False) -> Kinematics:
     """Kinematics of the structure along the motion.
 
     Parameters
@@ -221,6 +228,8 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
         Exact compatibility equations, or Lacy's backward-difference scheme (Appendix A).
     coords : ndarray, optional
         Node positions (nt, n, dim) if already known.
+    progress : bool
+        Progress bar while solving the positions.
 
     Returns
     -------
@@ -232,7 +241,8 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     pattern = _Pattern(structure)
     if pattern.m != pattern.nfree:
         raise AnalysisError(structure.source or structure.name, _count_message(pattern))
-    X = solve_motion_positions(structure, motion) if coords is None else coords
+    X = (solve_motion_positions(structure, motion, progress=progress) if coords is None
+         else coords)
     nt = X.shape[0]
     conn = structure.connectivity
     d = X[:, conn[:, 1]] - X[:, conn[:, 0]]                      # (time, member, dim)
