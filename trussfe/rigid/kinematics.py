@@ -137,7 +137,7 @@ def solve_motion_positions(structure: Structure, motion: Motion,
     x = np.array(structure.coords if coords0 is None else coords0, dtype=float)
     out = np.empty((motion.n_steps,) + x.shape)
     steps = range(motion.n_steps)
-    if progress:
+    if progress and motion.n_steps > 500:
         from tqdm import tqdm
         steps = tqdm(steps, desc="positions", unit="step", leave=False)
     for k in steps:
