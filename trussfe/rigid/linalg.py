@@ -15,8 +15,10 @@ import scipy.sparse.linalg as spla
 
 #: Largest system solved as a dense stack.
 DENSE_LIMIT = 120
-#: Reciprocal condition number below which a step counts as singular.
-SINGULAR_RCOND = 1e-11
+#: Reciprocal condition number below which a step counts as singular.  The positions are
+#: solved to 1e-12 of the truss size, so a singular (flat) position is only resolved to an
+#: angle of about 1e-6: below 1e-5 the forces would be round-off magnified by 1e5 and more.
+SINGULAR_RCOND = 1e-5
 
 
 class SingularStep(Exception):
