@@ -37,7 +37,7 @@ import numpy as np
 from ..errors import AnalysisError
 from ..model.structure import Structure
 from .active import active_members
-from .kinematics import Kinematics, _count_message, _Pattern, _step_item, pad3
+from .kinematics import Kinematics, _count_message, _Pattern, pad3
 from .linalg import SingularStep, batched_solve
 
 
@@ -136,7 +136,7 @@ def element_accelerations(kin: Kinematics, bodies: MemberBodies, conn: np.ndarra
 
 
 def nodal_forces(structure: Structure, kin: Kinematics, bodies: MemberBodies | None = None,
-                 ) -> NodalForces:
+                 *, check: bool = False) -> NodalForces:
     """Solve the Newton–Euler equations at every time step (Lacy eqs. 2.13–2.14, 4.20).
 
     Parameters
@@ -147,6 +147,9 @@ def nodal_forces(structure: Structure, kin: Kinematics, bodies: MemberBodies | N
         Its kinematics along the motion (use ``kin.at_rest()`` for the static forces).
     bodies : MemberBodies, optional
         Mass elements (default :func:`member_bodies`).
+    check : bool
+        Test every step's equilibrium matrix for singularity again (:func:`compute_kinematics`
+        has already tested the same matrices).
 
     Returns
     -------
@@ -198,7 +201,7 @@ def nodal_forces(structure: Structure, kin: Kinematics, bodies: MemberBodies | N
     rhs = (P + Mn * (g - kin.acceleration) - S)[..., :dim].reshape(nt, n * dim)
     try:
         tl = batched_solve(pattern.cols, pattern.rows, pattern.values(e[..., :dim]),
-                           (pattern.nfree, pattern.m), rhs[:, pattern.free_flat])
+                           (pattern.nfree, pattern.m), rhs[:, pattern.free_flat], check=check)
     except SingularStep as s:
         raise AnalysisError(f"step {s.step} (t = {kin.time[s.step]:.6g} s)",
                             "the truss is at a singular position (its equilibrium matrix is "

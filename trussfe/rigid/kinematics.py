@@ -35,7 +35,7 @@ import numpy as np
 from ..errors import AnalysisError
 from ..kinematics.assembly import solve_positions
 from ..model.structure import Structure
-from .linalg import SingularStep, batched_solve
+from .linalg import DENSE_LIMIT, SingularStep, batched_solve, check_singular
 from .motion import Motion
 
 log = logging.getLogger(__name__)
@@ -133,24 +133,90 @@ def solve_motion_positions(structure: Structure, motion: Motion,
         the assembly passes a singular position.
     """
     L = _member_lengths(structure, motion)
+    x0 = np.array(structure.coords if coords0 is None else coords0, dtype=float)
+    nt = motion.n_steps
+    pattern = _Pattern(structure)
+    if nt > BATCH_MIN_STEPS and pattern.m == pattern.nfree:
+        # Follow the branch on a coarse subset of steps, then polish every step at once.
+        idx = np.unique(np.linspace(0, nt - 1, COARSE_STEPS).round().astype(int))
+        coarse = _sequential_positions(structure, motion, L, x0, idx, progress)
+        guess = np.empty((nt,) + x0.shape)
+        flat = coarse.reshape(idx.size, -1)
+        for c in range(flat.shape[1]):          # interpolate each coordinate in time
+            guess.reshape(nt, -1)[:, c] = np.interp(motion.time, motion.time[idx], flat[:, c])
+        X, ok = _batched_newton(structure, pattern, L, guess)
+        if ok.all():
+            return X
+        redo = np.flatnonzero(~ok)
+        log.info("positions: %d of %d steps re-solved one by one", redo.size, nt)
+        start = X[redo[0] - 1] if redo[0] > 0 else x0
+        X[redo[0]:] = _sequential_positions(structure, motion, L, start,
+                                            np.arange(redo[0], nt), progress)
+        return X
+    return _sequential_positions(structure, motion, L, x0, np.arange(nt), progress)
+
+
+#: Motions longer than this are solved by coarse continuation + batched Newton.
+BATCH_MIN_STEPS = 200
+#: Steps of the coarse continuation.
+COARSE_STEPS = 60
+
+
+def _sequential_positions(structure, motion, L, x0, steps, progress) -> np.ndarray:
+    """Warm-started forward position, one step after the other, at the given step indices."""
     fixed = structure.translation_supports
-    x = np.array(structure.coords if coords0 is None else coords0, dtype=float)
-    out = np.empty((motion.n_steps,) + x.shape)
-    steps = range(motion.n_steps)
-    if progress and motion.n_steps > 500:
+    x = x0
+    out = np.empty((len(steps),) + x0.shape)
+    it = steps
+    if progress and len(steps) > 500:
         from tqdm import tqdm
-        steps = tqdm(steps, desc="positions", unit="step", leave=False)
-    for k in steps:
+        it = tqdm(steps, desc="positions", unit="step", leave=False)
+    for j, k in enumerate(it):
         try:
             r = solve_positions(x, structure.connectivity, L[k], fixed,
                                 member_ids=structure.member_ids, item=_step_item(motion, k))
         except AnalysisError as err:
-            acts = ", ".join(f"'{structure.member_ids[i]}' = {motion.length[k, j]:.6g} m"
-                             for j, i in enumerate(motion.members))
+            acts = ", ".join(f"'{structure.member_ids[i]}' = {motion.length[k, c]:.6g} m"
+                             for c, i in enumerate(motion.members))
             raise AnalysisError(err.item, f"{err.message} (active lengths {acts})") from None
         x = r.coords
-        out[k] = x
+        out[j] = x
     return out
+
+
+def _batched_newton(structure, pattern, L, X, tolerance=1e-12, iterations=12):
+    """Newton on the bar-length equations of every step at once.
+
+    Returns the positions and a per-step flag: converged and within a tenth of the truss size
+    of its guess (so that no step has jumped to another assembly branch).
+    """
+    conn = structure.connectivity
+    X = X.copy()
+    X0 = X.copy()
+    nt = X.shape[0]
+    scale = float(L.max())
+    Lk = L[:, pattern.loaded_idx]
+    flat = X.reshape(nt, -1)
+    for _ in range(iterations):
+        d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
+        cur = np.linalg.norm(d, axis=2)
+        r = cur[:, pattern.loaded_idx] - Lk
+        res = np.abs(r).max(axis=1)
+        if np.all(res <= tolerance * scale):
+            break
+        e = d / cur[..., None]
+        try:
+            dx = batched_solve(pattern.rows, pattern.cols, pattern.values(e), (pattern.m,
+                               pattern.nfree), -r, check=False)
+        except (SingularStep, np.linalg.LinAlgError):
+            return X, np.zeros(nt, dtype=bool)
+        if not np.all(np.isfinite(dx)):
+            return X, np.zeros(nt, dtype=bool)
+        flat[:, pattern.free_flat] += dx
+    d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
+    res = np.abs(np.linalg.norm(d, axis=2) - L).max(axis=1)
+    moved = np.abs(X - X0).reshape(nt, -1).max(axis=1)
+    return X, (res <= tolerance * scale) & (moved < 0.1 * scale)
 
 
 class _Pattern:
@@ -193,7 +259,7 @@ def _solve_compat(structure: Structure, pattern: _Pattern, unit: np.ndarray, rhs
         raise AnalysisError(structure.source or structure.name, _count_message(pattern))
     try:
         xf = batched_solve(pattern.rows, pattern.cols, pattern.values(unit),
-                           (pattern.m, pattern.nfree), rhs[:, pattern.loaded_idx])
+                           (pattern.m, pattern.nfree), rhs[:, pattern.loaded_idx], check=False)
     except SingularStep as s:
         raise AnalysisError(_step_item(motion, s.step), f"the assembly is at a singular position "
                             f"(its compatibility matrix is rank deficient), so its {what} are not "
@@ -202,6 +268,26 @@ def _solve_compat(structure: Structure, pattern: _Pattern, unit: np.ndarray, rhs
     out = np.zeros((nt, structure.n_nodes * structure.dim))
     out[:, pattern.free_flat] = xf
     return out.reshape(nt, structure.n_nodes, structure.dim)
+
+
+def _check_steps(structure: Structure, pattern: _Pattern, X: np.ndarray, motion: Motion) -> None:
+    """Raise at the first step where the compatibility matrix is singular (checked once: the
+    velocity, acceleration and force solves all use this matrix or its transpose)."""
+    if pattern.nfree > DENSE_LIMIT:
+        return                       # the sparse solves check their pivots themselves
+    conn = structure.connectivity
+    d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
+    e = d / np.linalg.norm(d, axis=2)[..., None]
+    nt = X.shape[0]
+    A = np.zeros((nt, pattern.m * pattern.nfree))
+    np.add.at(A, (slice(None), pattern.rows * pattern.nfree + pattern.cols), pattern.values(e))
+    try:
+        check_singular(A.reshape(nt, pattern.m, pattern.nfree))
+    except SingularStep as s:
+        raise AnalysisError(_step_item(motion, s.step), "the assembly is at a singular position "
+                            "(its compatibility matrix is rank deficient): its velocities, "
+                            "accelerations and member forces are not determined there; choose "
+                            "a motion that avoids it") from None
 
 
 def _count_message(pattern: _Pattern) -> str:
@@ -243,6 +329,7 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
         raise AnalysisError(structure.source or structure.name, _count_message(pattern))
     X = (solve_motion_positions(structure, motion, progress=progress) if coords is None
          else coords)
+    _check_steps(structure, pattern, X, motion)
     nt = X.shape[0]
     conn = structure.connectivity
     d = X[:, conn[:, 1]] - X[:, conn[:, 0]]                      # (time, member, dim)
