@@ -35,7 +35,8 @@ import numpy as np
 from ..errors import AnalysisError
 from ..kinematics.assembly import solve_positions
 from ..model.structure import Structure
-from .linalg import DENSE_LIMIT, SingularStep, batched_solve, check_singular
+from .linalg import (DENSE_LIMIT, SINGULAR_RCOND, SingularStep, batched_solve,
+                     check_singular)
 from .motion import Motion
 
 log = logging.getLogger(__name__)
@@ -75,6 +76,9 @@ class Kinematics:
     omega: np.ndarray
     alpha: np.ndarray
     scheme: str = "exact"
+    #: Inverse of the compatibility matrix on the free coordinates (nt, nfree, m_loaded)
+    #: for small trusses: reused for velocities, accelerations and (transposed) forces.
+    compat_inverse: np.ndarray | None = None
 
     @property
     def n_steps(self) -> int:
@@ -87,7 +91,8 @@ class Kinematics:
         zm = np.zeros_like(self.length)
         zu = np.zeros_like(self.unit)
         return Kinematics(self.time, self.coords, z3, z3.copy(), self.length, zm, zm.copy(),
-                          self.unit, zu, zu.copy(), zu.copy(), zu.copy(), self.scheme)
+                          self.unit, zu, zu.copy(), zu.copy(), zu.copy(), self.scheme,
+                          self.compat_inverse)
 
 
 def pad3(x: np.ndarray) -> np.ndarray:
@@ -252,9 +257,13 @@ class _Pattern:
 
 
 def _solve_compat(structure: Structure, pattern: _Pattern, unit: np.ndarray, rhs: np.ndarray,
-                  motion: Motion, what: str) -> np.ndarray:
+                  motion: Motion, what: str, inv: np.ndarray | None = None) -> np.ndarray:
     """Solve B x = rhs (nt, m) for the free node coordinates; returns (nt, n, dim)."""
     nt = unit.shape[0]
+    if inv is not None:
+        out = np.zeros((nt, structure.n_nodes * structure.dim))
+        out[:, pattern.free_flat] = np.einsum("tfm,tm->tf", inv, rhs[:, pattern.loaded_idx])
+        return out.reshape(nt, structure.n_nodes, structure.dim)
     if pattern.m != pattern.nfree:
         raise AnalysisError(structure.source or structure.name, _count_message(pattern))
     try:
@@ -270,24 +279,47 @@ def _solve_compat(structure: Structure, pattern: _Pattern, unit: np.ndarray, rhs
     return out.reshape(nt, structure.n_nodes, structure.dim)
 
 
-def _check_steps(structure: Structure, pattern: _Pattern, X: np.ndarray, motion: Motion) -> None:
-    """Raise at the first step where the compatibility matrix is singular (checked once: the
-    velocity, acceleration and force solves all use this matrix or its transpose)."""
+def _check_steps(structure: Structure, pattern: _Pattern, X: np.ndarray, motion: Motion
+                 ) -> np.ndarray | None:
+    """Inverse of the compatibility matrix at every step, or an error at the first singular
+    step (checked once: the velocity, acceleration and force solves all use this matrix or
+    its transpose).
+
+    Singular means a reciprocal condition number (Frobenius norms, which bound the spectral
+    one within a factor n) below :data:`~trussfe.rigid.linalg.SINGULAR_RCOND`.  Large trusses
+    return ``None``: their sparse solves check their own pivots.
+    """
     if pattern.nfree > DENSE_LIMIT:
-        return                       # the sparse solves check their pivots themselves
+        return None
     conn = structure.connectivity
     d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
     e = d / np.linalg.norm(d, axis=2)[..., None]
     nt = X.shape[0]
     A = np.zeros((nt, pattern.m * pattern.nfree))
-    np.add.at(A, (slice(None), pattern.rows * pattern.nfree + pattern.cols), pattern.values(e))
+    A[:, pattern.rows * pattern.nfree + pattern.cols] = pattern.values(e)   # no duplicates
+    A = A.reshape(nt, pattern.m, pattern.nfree)
     try:
-        check_singular(A.reshape(nt, pattern.m, pattern.nfree))
-    except SingularStep as s:
-        raise AnalysisError(_step_item(motion, s.step), "the assembly is at a singular position "
-                            "(its compatibility matrix is rank deficient): its velocities, "
-                            "accelerations and member forces are not determined there; choose "
-                            "a motion that avoids it") from None
+        inv = np.linalg.inv(A)
+        with np.errstate(over="ignore", invalid="ignore"):
+            rc = 1.0 / (np.linalg.norm(A, axis=(1, 2)) * np.linalg.norm(inv, axis=(1, 2)))
+        bad = np.flatnonzero(~(rc >= SINGULAR_RCOND))
+        if bad.size:
+            raise SingularStep(int(bad[0]))
+    except np.linalg.LinAlgError:
+        try:
+            check_singular(A)
+        except SingularStep as s:
+            bad = np.array([s.step])
+        else:                                        # pragma: no cover - LAPACK disagreement
+            bad = np.array([0])
+    except SingularStep:
+        pass
+    if bad.size:
+        raise AnalysisError(_step_item(motion, int(bad[0])), "the assembly is at a singular "
+                            "position (its compatibility matrix is rank deficient): its "
+                            "velocities, accelerations and member forces are not determined "
+                            "there; choose a motion that avoids it")
+    return inv
 
 
 def _count_message(pattern: _Pattern) -> str:
@@ -329,7 +361,7 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
         raise AnalysisError(structure.source or structure.name, _count_message(pattern))
     X = (solve_motion_positions(structure, motion, progress=progress) if coords is None
          else coords)
-    _check_steps(structure, pattern, X, motion)
+    inv = _check_steps(structure, pattern, X, motion)
     nt = X.shape[0]
     conn = structure.connectivity
     d = X[:, conn[:, 1]] - X[:, conn[:, 0]]                      # (time, member, dim)
@@ -341,10 +373,10 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     Ldd[:, motion.members] = motion.acceleration
     e3 = pad3(e)
     if scheme == "exact":
-        V = _solve_compat(structure, pattern, e, Ld, motion, "velocities")
+        V = _solve_compat(structure, pattern, e, Ld, motion, "velocities", inv)
         vrel = V[:, conn[:, 1]] - V[:, conn[:, 0]]
         quad = (np.einsum("tmi,tmi->tm", vrel, vrel) - Ld ** 2) / L
-        A = _solve_compat(structure, pattern, e, Ldd - quad, motion, "accelerations")
+        A = _solve_compat(structure, pattern, e, Ldd - quad, motion, "accelerations", inv)
         arel = A[:, conn[:, 1]] - A[:, conn[:, 0]]
         ed = pad3((vrel - Ld[..., None] * e) / L[..., None])
         edd = pad3((arel - Ldd[..., None] * e) / L[..., None]) - 2 * Ld[..., None] * ed / \
@@ -352,7 +384,7 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
         omega = np.cross(e3, ed)
         alpha = np.cross(e3, edd)
         return Kinematics(motion.time, X, pad3(V), pad3(A), L, Ld, Ldd, e3, ed, edd, omega,
-                          alpha, "exact")
+                          alpha, "exact", inv)
     # Lacy Appendix A: angle rates by backward differences.
     omega = np.zeros((nt, structure.n_members, 3))
     if nt > 1:
@@ -369,7 +401,8 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     ed = np.cross(omega, e3)
     edd = np.cross(alpha, e3) + np.cross(omega, ed)
     V, A = _walk_nodes(structure, motion, e3, ed, edd, L, Ld, Ldd)
-    return Kinematics(motion.time, X, V, A, L, Ld, Ldd, e3, ed, edd, omega, alpha, "thesis")
+    return Kinematics(motion.time, X, V, A, L, Ld, Ldd, e3, ed, edd, omega, alpha, "thesis",
+                      inv)
 
 
 def _walk_nodes(structure, motion, e, ed, edd, L, Ld, Ldd):
