@@ -162,7 +162,7 @@ def solve_motion_positions(structure: Structure, motion: Motion,
 
 
 #: Motions longer than this are solved by coarse continuation + batched Newton.
-BATCH_MIN_STEPS = 200
+BATCH_MIN_STEPS = 120
 #: Steps of the coarse continuation.
 COARSE_STEPS = 60
 
@@ -170,6 +170,11 @@ COARSE_STEPS = 60
 def _sequential_positions(structure, motion, L, x0, steps, progress) -> np.ndarray:
     """Warm-started forward position, one step after the other, at the given step indices."""
     fixed = structure.translation_supports
+    # Members between two fixed nodes neither move nor constrain: leaving them out keeps the
+    # Newton system square (sparse LU instead of least squares).
+    keep = _Pattern(structure).loaded_idx
+    conn = structure.connectivity[keep]
+    ids = [structure.member_ids[i] for i in keep]
     x = x0
     out = np.empty((len(steps),) + x0.shape)
     it = steps
@@ -178,11 +183,13 @@ def _sequential_positions(structure, motion, L, x0, steps, progress) -> np.ndarr
         it = tqdm(steps, desc="positions", unit="step", leave=False)
     for j, k in enumerate(it):
         try:
-            r = solve_positions(x, structure.connectivity, L[k], fixed,
-                                member_ids=structure.member_ids, item=_step_item(motion, k))
+            r = solve_positions(x, conn, L[k, keep], fixed, member_ids=ids,
+                                item=_step_item(motion, k))
         except AnalysisError as err:
             acts = ", ".join(f"'{structure.member_ids[i]}' = {motion.length[k, c]:.6g} m"
-                             for c, i in enumerate(motion.members))
+                             for c, i in enumerate(motion.members[:6]))
+            if motion.members.size > 6:
+                acts += f", … ({motion.members.size} active members)"
             raise AnalysisError(err.item, f"{err.message} (active lengths {acts})") from None
         x = r.coords
         out[j] = x
