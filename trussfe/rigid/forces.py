@@ -209,9 +209,9 @@ def nodal_forces(structure: Structure, kin: Kinematics, bodies: MemberBodies | N
     Mn = structure.masses[None, :, None]
     rhs = (P + Mn * (g - kin.acceleration) - S)[..., :dim].reshape(nt, n * dim)
     try:
-        if kin.compat_inverse is not None:
-            # Bᵀ t = rhs  ⇒  t = B⁻ᵀ rhs with the inverse kept from the kinematics.
-            tl = np.einsum("tfm,tf->tm", kin.compat_inverse, rhs[:, pattern.free_flat])
+        if kin.compat is not None:
+            # Bᵀ t = rhs with the factorisation kept from the kinematics.
+            tl = kin.compat.solve(rhs[:, pattern.free_flat], transpose=True)
         else:
             tl = batched_solve(pattern.cols, pattern.rows, pattern.values(e[..., :dim]),
                                (pattern.nfree, pattern.m), rhs[:, pattern.free_flat],

@@ -192,12 +192,11 @@ def _cantilever(structure, kin, still, f, fs, bodies, act_idx):
     if act_idx.size == 0:
         z = np.zeros((nt, 0))
         return z, z.copy(), z.copy()
-    pos = bodies.tube_length[:, None].copy()
-    cf = section_forces(structure, kin, f, bodies, positions=pos)
-    cs = section_forces(structure, still, fs, bodies, positions=pos)
+    pos = bodies.tube_length[act_idx, None].copy()
+    cf = section_forces(structure, kin, f, bodies, positions=pos, members=act_idx)
+    cs = section_forces(structure, still, fs, bodies, positions=pos, members=act_idx)
     # N·e = −T: positive when the base pushes the tube outward (Lacy ``actfor``).
-    return (-cf.tension[:, act_idx, 0], -cs.tension[:, act_idx, 0],
-            cf.moment_magnitude[:, act_idx, 0])
+    return -cf.tension[:, :, 0], -cs.tension[:, :, 0], cf.moment_magnitude[:, :, 0]
 
 
 def _actuator_histories(structure: Structure, motion: Motion, res: SimulationResult) -> dict:
