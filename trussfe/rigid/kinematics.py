@@ -163,7 +163,7 @@ def solve_motion_positions(structure: Structure, motion: Motion,
 #: Motions longer than this are solved by coarse continuation + batched Newton.
 BATCH_MIN_STEPS = 120
 #: Steps of the coarse continuation.
-COARSE_STEPS = 60
+COARSE_STEPS = 20
 
 
 def _sequential_positions(structure, motion, L, x0, steps, progress) -> np.ndarray:

@@ -112,7 +112,8 @@ class SimulationResult:
 
 
 def simulate(structure: Structure, motion: Motion | None = None, *, scheme: str = "exact",
-             n_sections: int = 7, full_length_inertia: bool = False, shear_factor: float = 3.0,
+             n_sections: int = 7, full_length_inertia: bool | None = None,
+             shear_factor: float = 3.0,
              buckling_constants: np.ndarray | float = 1.0, actuators: bool = True,
              progress: bool = False) -> SimulationResult:
     """Rigid-body dynamic force analysis of a truss along a motion (Lacy chapters 2–4).
@@ -127,8 +128,9 @@ def simulate(structure: Structure, motion: Motion | None = None, *, scheme: str 
         Kinematics: exact compatibility equations, or Lacy's backward differences.
     n_sections : int
         Sections per member (Lacy: 7 in the triangular truss).
-    full_length_inertia : bool
-        Lacy's Appendix A section inertia (whole tube length in every piece).
+    full_length_inertia : bool, optional
+        Lacy's Appendix A section inertia (whole tube length in every piece); default: True
+        with the thesis scheme, False (physical) with the exact one.
     shear_factor : float
         3 for von Mises at S1 (eq. 2.24); Lacy's code uses 1.
     buckling_constants : float or array (m,)
@@ -145,6 +147,8 @@ def simulate(structure: Structure, motion: Motion | None = None, *, scheme: str 
     if n_sections < 1 or int(n_sections) != n_sections:
         raise InputError("sections", f"need a positive integer number of sections (1 = the "
                          f"midpoint only), got {n_sections}")
+    if full_length_inertia is None:
+        full_length_inertia = scheme == "thesis"
     if motion is None:
         motion = rest_motion(structure)
     acts = active_members(structure)
