@@ -232,3 +232,38 @@ def nodal_forces(structure: Structure, kin: Kinematics, bodies: MemberBodies | N
         raise AnalysisError(f"step {k}", "non-finite forces (degenerate geometry)")
     return NodalForces(end_force=np.stack([Fa, Fb], axis=2), tension_end=t,
                        tension_start=t - Re, reactions=react)
+
+
+def composite_cg_inertia(bodies: MemberBodies, length: np.ndarray
+                         ) -> tuple[np.ndarray, np.ndarray]:
+    """Moving centre of gravity and varying inertia of every member (Lacy eqs. 4.58–4.61).
+
+    Parameters
+    ----------
+    bodies : MemberBodies
+    length : ndarray, shape (nt, m)
+        Member lengths along the motion.
+
+    Returns
+    -------
+    cg : ndarray, shape (nt, m)
+        Distance of the member's centre of gravity from its start node, m.
+    inertia : ndarray, shape (nt, m)
+        Transverse moment of inertia about that centre of gravity, kg·m².
+
+    Notes
+    -----
+    For an active member (Appendix C, ``cg7``, ``i7b1``)
+
+    .. math:: cg = \\frac{m_t (L - l_t/2) + m_b\\, cg_b}{m_t + m_b}, \\quad
+              I = I_t + I_b + m_t (L - l_t/2 - cg)^2 + m_b (cg - cg_b)^2 .
+
+    The force model itself keeps the tube and base as separate bodies, which is equivalent.
+    """
+    L = np.asarray(length, dtype=float)
+    mt, mb = bodies.tube_mass, bodies.base_mass
+    st = L - bodies.tube_length / 2.0
+    cg = (mt * st + mb * bodies.base_cg) / (mt + mb)
+    inertia = (bodies.tube_inertia(bodies.tube_length, mt) + bodies.base_inertia_cg
+               + mt * (st - cg) ** 2 + mb * (cg - bodies.base_cg) ** 2)
+    return cg, inertia
