@@ -15,7 +15,7 @@ import numpy as np
 from ..model.sections import Material, Section
 from ..model.structure import Structure, build_structure
 from .active import ActiveMember
-from .motion import rest_motion, third_order_motion
+from .motion import third_order_motion
 from .simulate import simulate
 
 #: Lacy Table 3.1 / Appendix A data.
