@@ -147,7 +147,7 @@ def element_accelerations(kin: Kinematics, bodies: MemberBodies, conn: np.ndarra
 
 
 def nodal_forces(structure: Structure, kin: Kinematics, bodies: MemberBodies | None = None,
-                 *, check: bool = False) -> NodalForces:
+                 *, check: bool | None = None) -> NodalForces:
     """Solve the Newton–Euler equations at every time step (Lacy eqs. 2.13–2.14, 4.20).
 
     Parameters
@@ -158,9 +158,10 @@ def nodal_forces(structure: Structure, kin: Kinematics, bodies: MemberBodies | N
         Its kinematics along the motion (use ``kin.at_rest()`` for the static forces).
     bodies : MemberBodies, optional
         Mass elements (default :func:`member_bodies`).
-    check : bool
-        Test every step's equilibrium matrix for singularity again (:func:`compute_kinematics`
-        has already tested the same matrices).
+    check : bool, optional
+        Test every step's equilibrium matrix for singularity; by default only when the
+        kinematics carry no factorisation (:func:`compute_kinematics` has tested the same
+        matrices already).
 
     Returns
     -------
@@ -178,6 +179,8 @@ def nodal_forces(structure: Structure, kin: Kinematics, bodies: MemberBodies | N
                             f"'{structure.member_ids[int(np.flatnonzero(structure.is_beam)[0])]}'"
                             " is a beam")
     bodies = member_bodies(structure) if bodies is None else bodies
+    if check is None:
+        check = kin.compat is None
     conn = structure.connectivity
     dim = structure.dim
     nt, m = kin.length.shape
