@@ -37,7 +37,7 @@ import numpy as np
 from ..errors import AnalysisError
 from ..model.structure import Structure
 from .active import active_members
-from .kinematics import Kinematics, _count_message, _Pattern, _step_item, pad3
+from .kinematics import Kinematics, _count_message, _Pattern, pad3
 from .linalg import SingularStep, batched_solve
 
 
@@ -124,6 +124,17 @@ class NodalForces:
     reactions: np.ndarray
 
 
+def _to_nodes(conn: np.ndarray, n: int, at_start: np.ndarray, at_end: np.ndarray) -> np.ndarray:
+    """Sum member-end vectors (t, m, 3) into their nodes (t, n, 3) with a sparse incidence."""
+    import scipy.sparse as sp
+    m = conn.shape[0]
+    inc = sp.csr_matrix((np.ones(2 * m), (conn.T.ravel(), np.arange(2 * m))), shape=(n, 2 * m))
+    stacked = np.concatenate([at_start, at_end], axis=1)            # (t, 2m, 3)
+    nt = stacked.shape[0]
+    out = inc @ stacked.transpose(1, 0, 2).reshape(2 * m, -1)
+    return np.asarray(out).reshape(n, nt, 3).transpose(1, 0, 2)
+
+
 def element_accelerations(kin: Kinematics, bodies: MemberBodies, conn: np.ndarray):
     """Accelerations of the tube and base centres of gravity, each (nt, m, 3)."""
     e, ed, edd = kin.unit, kin.unit_rate, kin.unit_acc
@@ -136,7 +147,7 @@ def element_accelerations(kin: Kinematics, bodies: MemberBodies, conn: np.ndarra
 
 
 def nodal_forces(structure: Structure, kin: Kinematics, bodies: MemberBodies | None = None,
-                 ) -> NodalForces:
+                 *, check: bool = False) -> NodalForces:
     """Solve the Newton–Euler equations at every time step (Lacy eqs. 2.13–2.14, 4.20).
 
     Parameters
@@ -147,6 +158,9 @@ def nodal_forces(structure: Structure, kin: Kinematics, bodies: MemberBodies | N
         Its kinematics along the motion (use ``kin.at_rest()`` for the static forces).
     bodies : MemberBodies, optional
         Mass elements (default :func:`member_bodies`).
+    check : bool
+        Test every step's equilibrium matrix for singularity again (:func:`compute_kinematics`
+        has already tested the same matrices).
 
     Returns
     -------
@@ -190,15 +204,18 @@ def nodal_forces(structure: Structure, kin: Kinematics, bodies: MemberBodies | N
     t = 0.5 * Re                       # members between two fixed nodes: symmetric split
     # Known (tension-free) parts of the end forces, summed at the nodes.
     n = structure.n_nodes
-    S = np.zeros((nt, n, 3))
-    np.add.at(S, (slice(None), conn[:, 0]), Re[..., None] * e + Fa_perp)
-    np.add.at(S, (slice(None), conn[:, 1]), Fb_perp)
+    S = _to_nodes(conn, n, Re[..., None] * e + Fa_perp, Fb_perp)
     P = pad3(structure.loads[:, :dim])[None]
     Mn = structure.masses[None, :, None]
     rhs = (P + Mn * (g - kin.acceleration) - S)[..., :dim].reshape(nt, n * dim)
     try:
-        tl = batched_solve(pattern.cols, pattern.rows, pattern.values(e[..., :dim]),
-                           (pattern.nfree, pattern.m), rhs[:, pattern.free_flat])
+        if kin.compat_inverse is not None:
+            # Bᵀ t = rhs  ⇒  t = B⁻ᵀ rhs with the inverse kept from the kinematics.
+            tl = np.einsum("tfm,tf->tm", kin.compat_inverse, rhs[:, pattern.free_flat])
+        else:
+            tl = batched_solve(pattern.cols, pattern.rows, pattern.values(e[..., :dim]),
+                               (pattern.nfree, pattern.m), rhs[:, pattern.free_flat],
+                               check=check)
     except SingularStep as s:
         raise AnalysisError(f"step {s.step} (t = {kin.time[s.step]:.6g} s)",
                             "the truss is at a singular position (its equilibrium matrix is "
@@ -207,9 +224,7 @@ def nodal_forces(structure: Structure, kin: Kinematics, bodies: MemberBodies | N
     t[:, pattern.loaded_idx] = tl
     Fb = t[..., None] * e + Fb_perp
     Fa = (Re - t)[..., None] * e + Fa_perp
-    tot = np.zeros((nt, n, 3))
-    np.add.at(tot, (slice(None), conn[:, 0]), Fa)
-    np.add.at(tot, (slice(None), conn[:, 1]), Fb)
+    tot = _to_nodes(conn, n, Fa, Fb)
     react = (tot - P - Mn * (g - kin.acceleration))[..., :dim]
     react = np.where(structure.translation_supports[None], react, 0.0)
     if not np.all(np.isfinite(react)):

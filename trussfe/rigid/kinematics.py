@@ -35,7 +35,8 @@ import numpy as np
 from ..errors import AnalysisError
 from ..kinematics.assembly import solve_positions
 from ..model.structure import Structure
-from .linalg import SingularStep, batched_solve
+from .linalg import (DENSE_LIMIT, SINGULAR_RCOND, SingularStep, batched_solve,
+                     check_singular)
 from .motion import Motion
 
 log = logging.getLogger(__name__)
@@ -75,6 +76,9 @@ class Kinematics:
     omega: np.ndarray
     alpha: np.ndarray
     scheme: str = "exact"
+    #: Inverse of the compatibility matrix on the free coordinates (nt, nfree, m_loaded)
+    #: for small trusses: reused for velocities, accelerations and (transposed) forces.
+    compat_inverse: np.ndarray | None = None
 
     @property
     def n_steps(self) -> int:
@@ -87,7 +91,8 @@ class Kinematics:
         zm = np.zeros_like(self.length)
         zu = np.zeros_like(self.unit)
         return Kinematics(self.time, self.coords, z3, z3.copy(), self.length, zm, zm.copy(),
-                          self.unit, zu, zu.copy(), zu.copy(), zu.copy(), self.scheme)
+                          self.unit, zu, zu.copy(), zu.copy(), zu.copy(), self.scheme,
+                          self.compat_inverse)
 
 
 def pad3(x: np.ndarray) -> np.ndarray:
@@ -133,24 +138,90 @@ def solve_motion_positions(structure: Structure, motion: Motion,
         the assembly passes a singular position.
     """
     L = _member_lengths(structure, motion)
+    x0 = np.array(structure.coords if coords0 is None else coords0, dtype=float)
+    nt = motion.n_steps
+    pattern = _Pattern(structure)
+    if nt > BATCH_MIN_STEPS and pattern.m == pattern.nfree:
+        # Follow the branch on a coarse subset of steps, then polish every step at once.
+        idx = np.unique(np.linspace(0, nt - 1, COARSE_STEPS).round().astype(int))
+        coarse = _sequential_positions(structure, motion, L, x0, idx, progress)
+        guess = np.empty((nt,) + x0.shape)
+        flat = coarse.reshape(idx.size, -1)
+        for c in range(flat.shape[1]):          # interpolate each coordinate in time
+            guess.reshape(nt, -1)[:, c] = np.interp(motion.time, motion.time[idx], flat[:, c])
+        X, ok = _batched_newton(structure, pattern, L, guess)
+        if ok.all():
+            return X
+        redo = np.flatnonzero(~ok)
+        log.info("positions: %d of %d steps re-solved one by one", redo.size, nt)
+        start = X[redo[0] - 1] if redo[0] > 0 else x0
+        X[redo[0]:] = _sequential_positions(structure, motion, L, start,
+                                            np.arange(redo[0], nt), progress)
+        return X
+    return _sequential_positions(structure, motion, L, x0, np.arange(nt), progress)
+
+
+#: Motions longer than this are solved by coarse continuation + batched Newton.
+BATCH_MIN_STEPS = 200
+#: Steps of the coarse continuation.
+COARSE_STEPS = 60
+
+
+def _sequential_positions(structure, motion, L, x0, steps, progress) -> np.ndarray:
+    """Warm-started forward position, one step after the other, at the given step indices."""
     fixed = structure.translation_supports
-    x = np.array(structure.coords if coords0 is None else coords0, dtype=float)
-    out = np.empty((motion.n_steps,) + x.shape)
-    steps = range(motion.n_steps)
-    if progress and motion.n_steps > 500:
+    x = x0
+    out = np.empty((len(steps),) + x0.shape)
+    it = steps
+    if progress and len(steps) > 500:
         from tqdm import tqdm
-        steps = tqdm(steps, desc="positions", unit="step", leave=False)
-    for k in steps:
+        it = tqdm(steps, desc="positions", unit="step", leave=False)
+    for j, k in enumerate(it):
         try:
             r = solve_positions(x, structure.connectivity, L[k], fixed,
                                 member_ids=structure.member_ids, item=_step_item(motion, k))
         except AnalysisError as err:
-            acts = ", ".join(f"'{structure.member_ids[i]}' = {motion.length[k, j]:.6g} m"
-                             for j, i in enumerate(motion.members))
+            acts = ", ".join(f"'{structure.member_ids[i]}' = {motion.length[k, c]:.6g} m"
+                             for c, i in enumerate(motion.members))
             raise AnalysisError(err.item, f"{err.message} (active lengths {acts})") from None
         x = r.coords
-        out[k] = x
+        out[j] = x
     return out
+
+
+def _batched_newton(structure, pattern, L, X, tolerance=1e-12, iterations=12):
+    """Newton on the bar-length equations of every step at once.
+
+    Returns the positions and a per-step flag: converged and within a tenth of the truss size
+    of its guess (so that no step has jumped to another assembly branch).
+    """
+    conn = structure.connectivity
+    X = X.copy()
+    X0 = X.copy()
+    nt = X.shape[0]
+    scale = float(L.max())
+    Lk = L[:, pattern.loaded_idx]
+    flat = X.reshape(nt, -1)
+    for _ in range(iterations):
+        d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
+        cur = np.linalg.norm(d, axis=2)
+        r = cur[:, pattern.loaded_idx] - Lk
+        res = np.abs(r).max(axis=1)
+        if np.all(res <= tolerance * scale):
+            break
+        e = d / cur[..., None]
+        try:
+            dx = batched_solve(pattern.rows, pattern.cols, pattern.values(e), (pattern.m,
+                               pattern.nfree), -r, check=False)
+        except (SingularStep, np.linalg.LinAlgError):
+            return X, np.zeros(nt, dtype=bool)
+        if not np.all(np.isfinite(dx)):
+            return X, np.zeros(nt, dtype=bool)
+        flat[:, pattern.free_flat] += dx
+    d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
+    res = np.abs(np.linalg.norm(d, axis=2) - L).max(axis=1)
+    moved = np.abs(X - X0).reshape(nt, -1).max(axis=1)
+    return X, (res <= tolerance * scale) & (moved < 0.1 * scale)
 
 
 class _Pattern:
@@ -186,14 +257,18 @@ class _Pattern:
 
 
 def _solve_compat(structure: Structure, pattern: _Pattern, unit: np.ndarray, rhs: np.ndarray,
-                  motion: Motion, what: str) -> np.ndarray:
+                  motion: Motion, what: str, inv: np.ndarray | None = None) -> np.ndarray:
     """Solve B x = rhs (nt, m) for the free node coordinates; returns (nt, n, dim)."""
     nt = unit.shape[0]
+    if inv is not None:
+        out = np.zeros((nt, structure.n_nodes * structure.dim))
+        out[:, pattern.free_flat] = np.einsum("tfm,tm->tf", inv, rhs[:, pattern.loaded_idx])
+        return out.reshape(nt, structure.n_nodes, structure.dim)
     if pattern.m != pattern.nfree:
         raise AnalysisError(structure.source or structure.name, _count_message(pattern))
     try:
         xf = batched_solve(pattern.rows, pattern.cols, pattern.values(unit),
-                           (pattern.m, pattern.nfree), rhs[:, pattern.loaded_idx])
+                           (pattern.m, pattern.nfree), rhs[:, pattern.loaded_idx], check=False)
     except SingularStep as s:
         raise AnalysisError(_step_item(motion, s.step), f"the assembly is at a singular position "
                             f"(its compatibility matrix is rank deficient), so its {what} are not "
@@ -202,6 +277,49 @@ def _solve_compat(structure: Structure, pattern: _Pattern, unit: np.ndarray, rhs
     out = np.zeros((nt, structure.n_nodes * structure.dim))
     out[:, pattern.free_flat] = xf
     return out.reshape(nt, structure.n_nodes, structure.dim)
+
+
+def _check_steps(structure: Structure, pattern: _Pattern, X: np.ndarray, motion: Motion
+                 ) -> np.ndarray | None:
+    """Inverse of the compatibility matrix at every step, or an error at the first singular
+    step (checked once: the velocity, acceleration and force solves all use this matrix or
+    its transpose).
+
+    Singular means a reciprocal condition number (Frobenius norms, which bound the spectral
+    one within a factor n) below :data:`~trussfe.rigid.linalg.SINGULAR_RCOND`.  Large trusses
+    return ``None``: their sparse solves check their own pivots.
+    """
+    if pattern.nfree > DENSE_LIMIT:
+        return None
+    conn = structure.connectivity
+    d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
+    e = d / np.linalg.norm(d, axis=2)[..., None]
+    nt = X.shape[0]
+    A = np.zeros((nt, pattern.m * pattern.nfree))
+    A[:, pattern.rows * pattern.nfree + pattern.cols] = pattern.values(e)   # no duplicates
+    A = A.reshape(nt, pattern.m, pattern.nfree)
+    try:
+        inv = np.linalg.inv(A)
+        with np.errstate(over="ignore", invalid="ignore"):
+            rc = 1.0 / (np.linalg.norm(A, axis=(1, 2)) * np.linalg.norm(inv, axis=(1, 2)))
+        bad = np.flatnonzero(~(rc >= SINGULAR_RCOND))
+        if bad.size:
+            raise SingularStep(int(bad[0]))
+    except np.linalg.LinAlgError:
+        try:
+            check_singular(A)
+        except SingularStep as s:
+            bad = np.array([s.step])
+        else:                                        # pragma: no cover - LAPACK disagreement
+            bad = np.array([0])
+    except SingularStep:
+        pass
+    if bad.size:
+        raise AnalysisError(_step_item(motion, int(bad[0])), "the assembly is at a singular "
+                            "position (its compatibility matrix is rank deficient): its "
+                            "velocities, accelerations and member forces are not determined "
+                            "there; choose a motion that avoids it")
+    return inv
 
 
 def _count_message(pattern: _Pattern) -> str:
@@ -243,6 +361,7 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
         raise AnalysisError(structure.source or structure.name, _count_message(pattern))
     X = (solve_motion_positions(structure, motion, progress=progress) if coords is None
          else coords)
+    inv = _check_steps(structure, pattern, X, motion)
     nt = X.shape[0]
     conn = structure.connectivity
     d = X[:, conn[:, 1]] - X[:, conn[:, 0]]                      # (time, member, dim)
@@ -254,10 +373,10 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     Ldd[:, motion.members] = motion.acceleration
     e3 = pad3(e)
     if scheme == "exact":
-        V = _solve_compat(structure, pattern, e, Ld, motion, "velocities")
+        V = _solve_compat(structure, pattern, e, Ld, motion, "velocities", inv)
         vrel = V[:, conn[:, 1]] - V[:, conn[:, 0]]
         quad = (np.einsum("tmi,tmi->tm", vrel, vrel) - Ld ** 2) / L
-        A = _solve_compat(structure, pattern, e, Ldd - quad, motion, "accelerations")
+        A = _solve_compat(structure, pattern, e, Ldd - quad, motion, "accelerations", inv)
         arel = A[:, conn[:, 1]] - A[:, conn[:, 0]]
         ed = pad3((vrel - Ld[..., None] * e) / L[..., None])
         edd = pad3((arel - Ldd[..., None] * e) / L[..., None]) - 2 * Ld[..., None] * ed / \
@@ -265,7 +384,7 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
         omega = np.cross(e3, ed)
         alpha = np.cross(e3, edd)
         return Kinematics(motion.time, X, pad3(V), pad3(A), L, Ld, Ldd, e3, ed, edd, omega,
-                          alpha, "exact")
+                          alpha, "exact", inv)
     # Lacy Appendix A: angle rates by backward differences.
     omega = np.zeros((nt, structure.n_members, 3))
     if nt > 1:
@@ -282,7 +401,8 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     ed = np.cross(omega, e3)
     edd = np.cross(alpha, e3) + np.cross(omega, ed)
     V, A = _walk_nodes(structure, motion, e3, ed, edd, L, Ld, Ldd)
-    return Kinematics(motion.time, X, V, A, L, Ld, Ldd, e3, ed, edd, omega, alpha, "thesis")
+    return Kinematics(motion.time, X, V, A, L, Ld, Ldd, e3, ed, edd, omega, alpha, "thesis",
+                      inv)
 
 
 def _walk_nodes(structure, motion, e, ed, edd, L, Ld, Ldd):

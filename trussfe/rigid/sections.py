@@ -51,15 +51,20 @@ class SectionForces:
         Shear force vector (perpendicular to the member), N.
     moment : ndarray, shape (nt, m, k, 3)
         Bending moment vector, N·m (z component only in 2-D).
-    cut_force : ndarray, shape (nt, m, k, 3)
-        Force N on the piece at the cut.
+    unit : ndarray, shape (nt, m, 3)
+        Member unit vectors.
     """
 
     position: np.ndarray
     tension: np.ndarray
     shear: np.ndarray
     moment: np.ndarray
-    cut_force: np.ndarray
+    unit: np.ndarray
+
+    @property
+    def cut_force(self) -> np.ndarray:
+        """Force N on the piece at the cut, (nt, m, k, 3): N = V − T e."""
+        return self.shear - self.tension[..., None] * self.unit[:, :, None, :]
 
     @property
     def shear_magnitude(self) -> np.ndarray:
@@ -83,36 +88,52 @@ def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
     structure, kin, forces, bodies
         The model, its kinematics, nodal forces and mass elements.
     n_sections : int
-        Number of equidistant sections over each member's tube (≥ 2).
+        Number of equidistant sections over each member's tube, end points included (≥ 2);
+        1 means the midpoint only (Lacy's choice for the spatial truss).
     positions : ndarray, shape (m, k), optional
         Explicit section positions from the end node instead.
     full_length_inertia : bool
         Use the whole tube length in every piece's moment of inertia (Lacy Appendix A quirk).
+
+    Notes
+    -----
+    The piece's acceleration is a_s = a_0 + (L − u/2) ë with a_0 = a_a + L̈ e + 2 L̇ ė
+    independent of u, so every cross product is taken once per member and step and the
+    sections only scale them:
+    M = m_s (u/2) [e × (a_0 − g) + (L − u/2) e × ë] + I_s α − u e × F_b.
     """
     if positions is None:
-        frac = np.linspace(0.0, 1.0, n_sections)
+        frac = np.array([0.5]) if n_sections == 1 else np.linspace(0.0, 1.0, n_sections)
         positions = bodies.tube_length[:, None] * frac[None, :]          # (member, section)
-    u = positions[None, :, :, None]                                       # (1, m, k, 1)
+    u = positions[None, :, :]                                             # (1, m, k)
     g = pad3(np.asarray(structure.gravity, dtype=float))
     conn = structure.connectivity
-    e = kin.unit[:, :, None, :]
-    ed, edd = kin.unit_rate[:, :, None, :], kin.unit_acc[:, :, None, :]
-    L = kin.length[:, :, None, None]
-    Ld, Ldd = kin.length_rate[:, :, None, None], kin.length_acc[:, :, None, None]
-    aa = kin.acceleration[:, conn[:, 0]][:, :, None, :]
-    a_seg = aa + Ldd * e + 2.0 * Ld * ed + (L - u / 2.0) * edd
-    mu = (bodies.tube_mass / bodies.tube_length)[None, :, None, None]
-    mseg = mu * u
-    Iseg = bodies.tube_inertia(positions.T, (mu[0, :, :, 0] * positions).T,
-                               full_length=full_length_inertia).T[None, :, :, None]
-    Fb = forces.end_force[:, :, 1][:, :, None, :]
-    N = mseg * (a_seg - g) - Fb
-    alpha = kin.alpha[:, :, None, :]
-    M = (np.cross(0.5 * u * e, mseg * (a_seg - g)) + Iseg * alpha
-         - np.cross(u * e, Fb * np.ones_like(u)))
-    Ne = np.einsum("tmki,tmki->tmk", N, e * np.ones_like(u))
-    V = N - Ne[..., None] * e
-    return SectionForces(position=positions, tension=-Ne, shear=V, moment=M, cut_force=N)
+    e, edd = kin.unit, kin.unit_acc                                       # (t, m, 3)
+    L = kin.length[:, :, None]                                            # (t, m, 1)
+    p = (kin.acceleration[:, conn[:, 0]] + kin.length_acc[..., None] * e
+         + 2.0 * kin.length_rate[..., None] * kin.unit_rate - g)          # a_0 − g
+    Fb = forces.end_force[:, :, 1]
+    mu = (bodies.tube_mass / bodies.tube_length)[None, :, None]
+    mseg = mu * u                                                         # (1, m, k)
+    Iseg = bodies.tube_inertia(positions.T, (mu[0, :, 0] * positions.T),
+                               full_length=full_length_inertia).T[None]   # (1, m, k)
+    lever = L - u / 2.0                                                   # (t, m, k)
+    pe = np.einsum("tmi,tmi->tm", p, e)[..., None]
+    qe = np.einsum("tmi,tmi->tm", edd, e)[..., None]
+    fe = np.einsum("tmi,tmi->tm", Fb, e)[..., None]
+    tension = -(mseg * (pe + lever * qe) - fe)
+    p_perp = p - pe * e
+    q_perp = edd - qe * e
+    f_perp = Fb - fe * e
+    V = ((mseg[..., None] * p_perp[:, :, None, :])
+         + (mseg * lever)[..., None] * q_perp[:, :, None, :] - f_perp[:, :, None, :])
+    c0 = np.cross(e, p)
+    c1 = np.cross(e, edd)
+    eF = np.cross(e, Fb)
+    half = (mseg * u / 2.0)[..., None]
+    M = (half * (c0[:, :, None, :] + lever[..., None] * c1[:, :, None, :])
+         + Iseg[..., None] * kin.alpha[:, :, None, :] - u[..., None] * eF[:, :, None, :])
+    return SectionForces(position=positions, tension=tension, shear=V, moment=M, unit=e)
 
 
 @dataclass

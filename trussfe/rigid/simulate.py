@@ -142,8 +142,9 @@ def simulate(structure: Structure, motion: Motion | None = None, *, scheme: str 
     -------
     SimulationResult
     """
-    if n_sections < 2 or int(n_sections) != n_sections:
-        raise InputError("sections", f"need an integer number of sections ≥ 2, got {n_sections}")
+    if n_sections < 1 or int(n_sections) != n_sections:
+        raise InputError("sections", f"need a positive integer number of sections (1 = the "
+                         f"midpoint only), got {n_sections}")
     if motion is None:
         motion = rest_motion(structure)
     acts = active_members(structure)
@@ -161,16 +162,16 @@ def simulate(structure: Structure, motion: Motion | None = None, *, scheme: str 
                         full_length_inertia=full_length_inertia)
     ss = section_forces(structure, still, fs, bodies, n_sections,
                         full_length_inertia=full_length_inertia)
-    mid = section_forces(structure, kin, f, bodies, positions=bodies.tube_length[:, None] / 2,
-                         full_length_inertia=full_length_inertia).tension[:, :, 0]
+    if n_sections == 1 or n_sections % 2:
+        mid = sf.tension[:, :, (sf.tension.shape[2] - 1) // 2]
+    else:
+        mid = section_forces(structure, kin, f, bodies, 1,
+                             full_length_inertia=full_length_inertia).tension[:, :, 0]
     st = section_stresses(structure, sf, shear_factor=shear_factor)
     sts = section_stresses(structure, ss, shear_factor=shear_factor)
-    # The cantilever connection is the last section (u = L_tube) of an active member.
-    cut = sf.cut_force[:, act_idx, -1]
-    e = kin.unit[:, act_idx]
-    act_force = np.einsum("tai,tai->ta", cut, e)
-    act_static = np.einsum("tai,tai->ta", ss.cut_force[:, act_idx, -1], e)
-    cmoment = sf.moment_magnitude[:, act_idx, -1]
+    # The cantilever connection: the cut at u = L_tube of an active member, where the
+    # piece is the whole leadscrew tube; its axial force is the actuator force.
+    act_force, act_static, cmoment = _cantilever(structure, kin, still, f, fs, bodies, act_idx)
     buck = buckling_check(structure, sf.tension, bodies.tube_length, buckling_constants)
     res = SimulationResult(structure=structure, motion=motion, kinematics=kin, bodies=bodies,
                            forces=f, static_forces=fs, sections=sf, static_sections=ss,
@@ -183,6 +184,20 @@ def simulate(structure: Structure, motion: Motion | None = None, *, scheme: str 
     if actuators and "actuators" in structure.extensions and act_idx.size:
         res.actuators = _actuator_histories(structure, motion, res)
     return res
+
+
+def _cantilever(structure, kin, still, f, fs, bodies, act_idx):
+    """Actuator force (dynamic and static) and cantilever moment of the active members."""
+    nt = kin.n_steps
+    if act_idx.size == 0:
+        z = np.zeros((nt, 0))
+        return z, z.copy(), z.copy()
+    pos = bodies.tube_length[:, None].copy()
+    cf = section_forces(structure, kin, f, bodies, positions=pos)
+    cs = section_forces(structure, still, fs, bodies, positions=pos)
+    # N·e = −T: positive when the base pushes the tube outward (Lacy ``actfor``).
+    return (-cf.tension[:, act_idx, 0], -cs.tension[:, act_idx, 0],
+            cf.moment_magnitude[:, act_idx, 0])
 
 
 def _actuator_histories(structure: Structure, motion: Motion, res: SimulationResult) -> dict:
