@@ -12,10 +12,11 @@ member) that realise a tilt θ about an axis a are the root of
 
 where n(q) is the unit normal of the top plane in the assembly of lengths q (the general
 forward-position solver, :func:`trussfe.kinematics.solve_positions`), u_1, u_2 span the plane
-normal to the target normal R_a(θ) n_0 (n_0 the normal at rest), and c is the third condition
-a pointing (gimbal) motion leaves free: by default the **height** of the top plane's centroid
-along the base normal, kept at its rest value (``hold = "height"``), or the mean active length
-(``hold = "mean_length"``).  Newton's method on q uses the exact sensitivity of the node
+normal to the target normal R_a(θ) n̂3 (angles are measured from the base normal n̂3, the
+orientation of a bay's top plane at its equilibrium position), and c is the third condition a
+pointing (gimbal) motion leaves free: by default the **height** of the top plane's centroid
+along the base normal, kept at its rest value or at ``height`` (``hold = "height"``), or the
+mean active length (``hold = "mean_length"``).  Newton's method on q uses the exact sensitivity of the node
 positions to the active lengths, ``B(x) ∂x/∂q_j = e_j`` (the compatibility matrix of the
 current assembly and the unit elongation of active member j), the same equations that give
 the velocities.
@@ -24,7 +25,8 @@ The map θ ↦ q(θ) is solved on a grid of angles by continuation from the rest
 and interpolated by a quintic spline, whose first and second derivatives give
 ``q̇ = q'(θ) θ̇`` and ``q̈ = q''(θ) θ̇² + q'(θ) θ̈``.  The angle follows the thesis' third-order
 actuator model in time (Lacy section 2.2, :func:`~trussfe.rigid.motion.third_order_response`),
-or given samples.
+a constant velocity between smooth ramps (:func:`constant_velocity_profile`, like Slewing
+Experiment 1), or given samples.
 
 Motion-file table::
 
@@ -37,6 +39,8 @@ Motion-file table::
     steps = 200
     top_nodes = ["N7", "N8", "N9"]  # default: the three nodes highest along the base normal
     hold = "height"               # or "mean_length"
+    height = 1.1218               # optional value held (default: the model's at rest)
+    profile = "third-order"       # or "constant-velocity" with ramp_time = 0.25 (s)
     # or a given profile instead of start/end/duration/steps:
     # time = [0.0, 0.1, ...]
     # angle = [-10.0, -9.9, ...]
@@ -60,7 +64,7 @@ from .motion import Motion, third_order_response
 log = logging.getLogger(__name__)
 
 _KEYS = ("type", "axis", "start", "end", "duration", "steps", "top_nodes", "hold", "time",
-         "angle", "grid", "damping_ratio", "settling_fraction", "settling_constant",
+         "angle", "grid", "height", "profile", "ramp_time", "damping_ratio", "settling_fraction", "settling_constant",
          "real_root_factor", "include_end", "first_sample")
 
 
@@ -98,9 +102,12 @@ class TopPlaneInverse:
         Rotation axis (in the base frame).
     hold : str
         Third condition: ``"height"`` or ``"mean_length"``.
+    height : float, optional
+        Value held (top centroid height, or mean active length), default its rest value.
     """
 
-    def __init__(self, structure: Structure, top_nodes, axis, hold: str = "height"):
+    def __init__(self, structure: Structure, top_nodes, axis, hold: str = "height",
+                 height: float | None = None):
         if structure.dim != 3:
             raise InputError("motion.type", "a top-plane rotation needs a spatial (3-D) truss")
         self.s = structure
@@ -115,11 +122,14 @@ class TopPlaneInverse:
         self.conn = structure.connectivity
         self.L = structure.lengths().copy()
         x0 = structure.coords
-        self.n0 = plane_normal(x0[self.top])
-        if self.n0[2] < 0:
-            self.n0 = -self.n0
+        # Angles are measured from the base normal n3 (the top plane of a bay at its
+        # equilibrium position is parallel to the base); the model may rest at any tilt.
         self.up = np.array([0.0, 0.0, 1.0])
-        self.c0 = self._third(x0, self.L[self.active])
+        self.n0 = self.up
+        n_rest = plane_normal(x0[self.top])
+        n_rest = n_rest if n_rest[2] > 0 else -n_rest
+        self.rest_angle = math.atan2(self.axis @ np.cross(self.up, n_rest), self.up @ n_rest)
+        self.c0 = self._third(x0, self.L[self.active]) if height is None else float(height)
 
     def _third(self, x: np.ndarray, q: np.ndarray) -> float:
         if self.hold == "height":
@@ -192,15 +202,51 @@ class TopPlaneInverse:
         """
         q = self.L[self.active].copy()
         x = self.s.coords.copy()
-        # Walk from the rest orientation (0) to the first angle in steps of at most 1 degree.
-        a0 = float(angles[0])
-        for a in np.linspace(0.0, a0, max(2, int(math.ceil(abs(a0) / math.radians(1.0))) + 1))[1:]:
+        # Walk from the rest orientation to the first angle in steps of at most 1 degree.
+        a0, ar = float(angles[0]), self.rest_angle
+        nwalk = max(2, int(math.ceil(abs(a0 - ar) / math.radians(1.0))) + 1)
+        for a in np.linspace(ar, a0, nwalk):
             q, x = self.solve(a, q, x)
         out = np.empty((len(angles), 3))
         for k, a in enumerate(angles):
             q, x = self.solve(float(a), q, x)
             out[k] = q
         return out
+
+
+def constant_velocity_profile(t: np.ndarray, duration: float, ramp: float
+                              ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Unit move at constant velocity between smooth ramps, with its two derivatives.
+
+    The velocity rises as ``V (1 − cos(π t/τ))/2`` over the ramp time τ, stays at V and falls
+    symmetrically, so that the move ends at 1 at ``t = duration``: ``V = 1/(T − τ)``.  It
+    mimics Lacy's Slewing Experiment 1 (section 5.5.1: virtually constant velocity with
+    acceleration spikes at both ends).
+
+    Examples
+    --------
+    >>> y, dy, ddy = constant_velocity_profile(np.array([0.0, 2.0, 4.0]), 4.0, 0.5)
+    >>> np.round(y, 12).tolist(), np.round(dy, 12).tolist()
+    ([0.0, 0.5, 1.0], [0.0, 0.285714285714, 0.0])
+    """
+    t = np.clip(np.asarray(t, dtype=float), 0.0, duration)
+    T, tau = duration, ramp
+    V = 1.0 / (T - tau)
+    w = math.pi / tau
+
+    def up(s):                                         # ramp from rest, s in [0, τ]
+        return (V * (s / 2 - np.sin(w * s) / (2 * w)), V * (1 - np.cos(w * s)) / 2,
+                V * w * np.sin(w * s) / 2)
+
+    y, dy, ddy = (np.empty_like(t) for _ in range(3))
+    a = t < tau
+    b = t > T - tau
+    c = ~(a | b)
+    y[a], dy[a], ddy[a] = up(t[a])
+    y[c], dy[c], ddy[c] = V * (t[c] - tau / 2), V, 0.0
+    yb, dyb, ddyb = up(T - t[b])
+    y[b], dy[b], ddy[b] = 1.0 - yb, dyb, -ddyb
+    return y, dy, ddy
 
 
 def _axis(v: Any, item: str) -> np.ndarray:
@@ -292,7 +338,25 @@ def rotation_motion(spec: dict, structure: Structure, *, steps: int | None = Non
         from .motion_csv import smooth_derivative
         dang = smooth_derivative(t, ang[:, None])[:, 0]
         ddang = smooth_derivative(t, ang[:, None], order=2)[:, 0]
+    elif spec.get("profile", "third-order") == "constant-velocity":
+        a0 = math.radians(_number(spec, "start", item))
+        a1 = math.radians(_number(spec, "end", item))
+        T = _number(spec, "duration", item, positive=True)
+        ramp = _number(spec, "ramp_time", item, positive=True)
+        if 2 * ramp > T:
+            raise InputError(f"{item}.ramp_time", f"must be at most half the duration ({T / 2:g}"
+                             " s)")
+        n = steps if steps is not None else spec.get("steps", 50)
+        if isinstance(n, bool) or not isinstance(n, int) or n < 1:
+            raise InputError(f"{item}.steps", f"must be a positive integer, got {n!r}")
+        last = n + (1 if spec.get("include_end", False) else 0)
+        t = np.arange(last) * (T / n)
+        y, dy, ddy = constant_velocity_profile(t, T, ramp)
+        ang, dang, ddang = a0 + (a1 - a0) * y, (a1 - a0) * dy, (a1 - a0) * ddy
     else:
+        if spec.get("profile", "third-order") != "third-order":
+            raise InputError(f"{item}.profile", "must be \"third-order\" or "
+                             f"\"constant-velocity\", got {spec['profile']!r}")
         a0 = math.radians(_number(spec, "start", item))
         a1 = math.radians(_number(spec, "end", item))
         T = _number(spec, "duration", item, positive=True)
@@ -307,7 +371,8 @@ def rotation_motion(spec: dict, structure: Structure, *, steps: int | None = Non
         t = np.arange(first, last) * (T / n)
         y, dy, ddy = third_order_response(t, T, **opts)
         ang, dang, ddang = a0 + (a1 - a0) * y, (a1 - a0) * dy, (a1 - a0) * ddy
-    inv = TopPlaneInverse(structure, top, axis, hold)
+    held = None if "height" not in spec else _number(spec, "height", item, positive=True)
+    inv = TopPlaneInverse(structure, top, axis, hold, held)
     # Grid over the swept range; the quintic spline of q(θ) is accurate to round-off for the
     # smooth inverse map of a bay well inside its workspace.
     lo, hi = float(ang.min()), float(ang.max())
