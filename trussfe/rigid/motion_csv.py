@@ -210,3 +210,25 @@ def read_motion_csv(path: str | Path, structure: Structure, *,
             a[:, j] = smooth_derivative(t, L[:, [j]], smoothing, order=2)[:, 0]
     return Motion(time=t, members=np.array(order, dtype=np.int64), length=L, velocity=v,
                   acceleration=a, source=name)
+
+
+def write_motion_csv(path: str | Path, motion: Motion, structure: Structure,
+                     comment: str = "") -> None:
+    """Write ``motion`` as a CSV file that :func:`read_motion_csv` reads back exactly.
+
+    Columns ``time, ID, ID.velocity, ID.acceleration`` per active member, 17 significant
+    digits; ``comment`` lines are written first with a leading ``#``.  The file is written to
+    a temporary name and renamed (nothing half-written).
+    """
+    from ..io.output import atomic_path
+
+    ids = [structure.member_ids[int(k)] for k in motion.members]
+    head = ["time"] + [f"{i}{q}" for i in ids for q in ("", ".velocity", ".acceleration")]
+    cols = [motion.time]
+    for j in range(len(ids)):
+        cols += [motion.length[:, j], motion.velocity[:, j], motion.acceleration[:, j]]
+    data = np.column_stack(cols)
+    lines = [f"# {c}" for c in comment.splitlines()] + [",".join(head)]
+    lines += [",".join(f"{x:.17g}" for x in row) for row in data]
+    with atomic_path(path) as tmp:
+        Path(tmp).write_text("\n".join(lines) + "\n", encoding="utf-8")
