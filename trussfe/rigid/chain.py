@@ -311,3 +311,110 @@ def thesis_angular_acceleration(frames: BayFrames) -> np.ndarray:
     alprev = np.concatenate([np.zeros_like(al[:, :1]), al[:, :-1]], axis=1)
     rel_rate = al - alprev - np.cross(wprev, w - wprev)
     return np.cumsum(rel_rate, axis=1)
+
+
+def kinematics_from_nodes(structure: Structure, time: np.ndarray, X: np.ndarray, V: np.ndarray,
+                          A: np.ndarray, length_rate: np.ndarray, length_acc: np.ndarray):
+    """Member kinematics (unit vectors, their rates, ω, α) from node fields (nt, n, 3).
+
+    The node fields may include moving supports (a bay's base inside a chain): ``ė = (v_b − v_a
+    − L̇ e)/L``, ``ë = (a_b − a_a − L̈ e)/L − 2 L̇ ė / L``, ``ω = e × ė``, ``α = e × ë``.
+    """
+    from .kinematics import Kinematics
+
+    conn = structure.connectivity
+    d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
+    L = np.linalg.norm(d, axis=2)
+    e = d / L[..., None]
+    vrel = V[:, conn[:, 1]] - V[:, conn[:, 0]]
+    arel = A[:, conn[:, 1]] - A[:, conn[:, 0]]
+    Ld, Ldd = length_rate[..., None], length_acc[..., None]
+    ed = (vrel - Ld * e) / L[..., None]
+    edd = (arel - Ldd * e) / L[..., None] - 2 * Ld * ed / L[..., None]
+    return Kinematics(time=np.asarray(time, dtype=float), coords=X, velocity=V, acceleration=A,
+                      length=L, length_rate=length_rate, length_acc=length_acc, unit=e,
+                      unit_rate=ed, unit_acc=edd, omega=np.cross(e, ed), alpha=np.cross(e, edd),
+                      scheme="exact")
+
+
+@dataclass
+class ChainForces:
+    """Forces of a chain found bay by bay.
+
+    Attributes
+    ----------
+    tension_end : ndarray, shape (nt, n_bays * 18)
+        Axial force at each member's end node (positive in tension), chain member order.
+    base_reactions : ndarray, shape (nt, n_bays, 3 nodes, 3)
+        Reaction on the base nodes of every bay (the force its base plane receives).
+    """
+
+    tension_end: np.ndarray
+    base_reactions: np.ndarray
+
+
+def chain_forces(bay: Structure, time: np.ndarray, lengths: np.ndarray, rates: np.ndarray,
+                 accs: np.ndarray, top_loads: np.ndarray | None = None) -> ChainForces:
+    """Nodal forces of a chain by Lacy's bay-by-bay method (chapter 6): top bay first, each
+    bay's base reactions applied, reversed, to the top plane of the bay below.
+
+    Parameters
+    ----------
+    bay : Structure
+        Bay template (its gravity is used; its loads and masses are ignored).
+    time : ndarray, shape (nt,)
+    lengths, rates, accs : ndarray, shape (nt, n_bays, n_active)
+    top_loads : ndarray, shape (3, 3), optional
+        External forces on the top bay's N7, N8, N9, N.
+
+    Returns
+    -------
+    ChainForces
+    """
+    from .forces import nodal_forces
+
+    ck = chain_kinematics(bay, lengths, rates, accs)
+    nt, nb, _ = lengths.shape
+    acts = np.array([a.member for a in active_members(bay)], dtype=np.int64)
+    m = bay.n_members
+    template = bay.copy()
+    template.masses = np.zeros_like(template.masses)
+    tension = np.empty((nt, nb * m))
+    react = np.empty((nt, nb, 3, 3))
+    idx_of = []
+    base_idx = np.array([0, 1, 2])
+    for k in range(nb):
+        idx = np.concatenate([base_idx, 3 + 6 * k + np.arange(6)])
+        idx_of.append(idx)
+        base_idx = idx[list(TOP_AS_NEXT_BASE)]
+    below = np.zeros((nt, 3, 3)) if top_loads is None else \
+        np.broadcast_to(np.asarray(top_loads, dtype=float), (nt, 3, 3)).copy()
+    for k in range(nb - 1, -1, -1):
+        idx = idx_of[k]
+        Ld = np.zeros((nt, m))
+        Ldd = np.zeros((nt, m))
+        Ld[:, acts] = rates[:, k]
+        Ldd[:, acts] = accs[:, k]
+        kin = kinematics_from_nodes(template, time, ck.coords[:, idx], ck.velocity[:, idx],
+                                    ck.acceleration[:, idx], Ld, Ldd)
+        for t in range(nt):             # loads change with time: one step at a time
+            s = template.with_coords(ck.coords[t, idx])
+            s.loads = np.zeros_like(s.loads)
+            s.loads[6:9, :3] = below[t]
+            kt = _step(kin, t)
+            f = nodal_forces(s, kt)
+            tension[t, k * m:(k + 1) * m] = f.tension_end[0]
+            react[t, k] = f.reactions[0, :3, :3]
+        # The bay below carries this bay's base: minus the reactions, on its N7, N9, N8.
+        below = np.zeros((nt, 3, 3))
+        below[:, [0, 2, 1]] = -react[:, k]
+    return ChainForces(tension_end=tension, base_reactions=react)
+
+
+def _step(kin, t: int):
+    """The kinematics of time step ``t`` alone."""
+    from dataclasses import fields, replace
+
+    arrays = {f.name: getattr(kin, f.name)[t:t + 1] for f in fields(kin)
+              if isinstance(getattr(kin, f.name), np.ndarray)}
+    return replace(kin, **arrays)
