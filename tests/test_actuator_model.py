@@ -11,7 +11,6 @@ from trussfe.rigid.actuator import (Actuator, max_leadscrew_gain, motor_historie
                                     parse_actuator, select_gearhead_gain, thread_ratio)
 from trussfe.rigid.motion import third_order_response
 
-NAN = math.nan
 
 
 def make(**kw) -> Actuator:
@@ -115,11 +114,12 @@ def test_thesis_convention_is_appendix_c():
     xdd = np.array([0.1, -0.2, 0.0, 0.0])
     h = motor_histories(a, F, xd, xdd, Fs)
     same = np.sign(F) == np.sign(Fs)
+    pi = math.pi
     Tm = np.where(same,
-                  Jm * abs(xdd) * Ggh / Gls + dm / 2 * abs(F) * ((2 * math.pi * Gls + math.pi * mu * dm)
-                                                                / (math.pi * dm - mu * 2 * math.pi * Gls)),
-                  Jm * abs(xdd) * Ggh / Gls + dm / 2 * abs(F) * ((-2 * math.pi * Gls + math.pi * mu * dm)
-                                                                / (math.pi * dm + mu * 2 * math.pi * Gls)))
+                  Jm * abs(xdd) * Ggh / Gls + dm / 2 * abs(F)
+                  * ((2 * pi * Gls + pi * mu * dm) / (pi * dm - mu * 2 * pi * Gls)),
+                  Jm * abs(xdd) * Ggh / Gls + dm / 2 * abs(F)
+                  * ((-2 * pi * Gls + pi * mu * dm) / (pi * dm + mu * 2 * pi * Gls)))
     Vm = Tm * Ra / Kt + Kb * Ggh * abs(xd) / Gls
     Tmn = Jm * abs(xdd) * Ggh / Gls + abs(F) * Gls
     assert_allclose(h["motor_torque"], Tm, rtol=1e-12)

@@ -1,6 +1,5 @@
 # SPDX-License-Identifier: MIT
 """Actuators along a simulated motion: model file, ``simulate`` JSON, thesis reproductions."""
-import math
 from pathlib import Path
 
 import numpy as np
@@ -8,7 +7,6 @@ import pytest
 from numpy.testing import assert_allclose
 
 import trussfe.rigid.actuator  # noqa: F401  (registers [actuators])
-from trussfe._resources import data_dir
 from trussfe.errors import InputError
 from trussfe.io.model_file import read_model
 from trussfe.rigid.actuator_reproductions import (base_simulation_gains, holding_voltage, slew1,

@@ -96,7 +96,8 @@ def slew1(convention: str = "thesis", steps: int = 220) -> dict:
         tube: the leadscrew pushes it outward), ``M7_voltage_max`` and ``_frictionless_max``
         (V), ``M7_voltage_start``/``_end`` (holding voltage before/after the motion),
         ``M7_torque_max``, ``M7_current_max``, ``M7_speed_max`` (rad/s), ``voltage_flag``
-        (1.0 when the 25 V supply is exceeded), ``M7_velocity_max`` (m/s), ``voltage_ratio`` (with/without friction peak voltage) and
+        (1.0 when the 25 V supply is exceeded), ``M7_velocity_max`` (m/s), ``voltage_ratio``
+        (with/without friction peak voltage) and
         ``force_decreasing`` (fig. 5.13: "the compressive load is decreasing throughout the
         motion"; checked over the constant-velocity phase), and the ``flags``.
     """

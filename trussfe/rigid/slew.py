@@ -16,10 +16,10 @@ normal to the target normal R_a(θ) n̂3 (angles are measured from the base norm
 orientation of a bay's top plane at its equilibrium position), and c is the third condition a
 pointing (gimbal) motion leaves free: by default the **height** of the top plane's centroid
 along the base normal, kept at its rest value or at ``height`` (``hold = "height"``), or the
-mean active length (``hold = "mean_length"``).  Newton's method on q uses the exact sensitivity of the node
-positions to the active lengths, ``B(x) ∂x/∂q_j = e_j`` (the compatibility matrix of the
-current assembly and the unit elongation of active member j), the same equations that give
-the velocities.
+mean active length (``hold = "mean_length"``).  Newton's method on q uses the exact
+sensitivity of the node positions to the active lengths, ``B(x) ∂x/∂q_j = e_j`` (the
+compatibility matrix of the current assembly and the unit elongation of active member j), the
+same equations that give the velocities.
 
 The map θ ↦ q(θ) is solved on a grid of angles by continuation from the rest configuration
 and interpolated by a quintic spline, whose first and second derivatives give
@@ -64,7 +64,8 @@ from .motion import Motion, third_order_response
 log = logging.getLogger(__name__)
 
 _KEYS = ("type", "axis", "start", "end", "duration", "steps", "top_nodes", "hold", "time",
-         "angle", "grid", "height", "profile", "ramp_time", "damping_ratio", "settling_fraction", "settling_constant",
+         "angle", "grid", "height", "profile", "ramp_time", "damping_ratio",
+         "settling_fraction", "settling_constant",
          "real_root_factor", "include_end", "first_sample")
 
 
