@@ -132,3 +132,24 @@ def test_holding_voltages_quoted_by_the_thesis_do_not_follow_from_its_forces():
     assert_allclose(holding_voltage(74.5), 3.336, rtol=1e-3)
     assert_allclose(holding_voltage(29.5), 1.321, rtol=1e-3)
     assert abs(3.8 / holding_voltage(74.5) - 2.4 / holding_voltage(29.5)) > 0.5
+
+
+def test_actuators_command(tmp_path, capsys):
+    """``trussfe actuators``: one line per actuator with its flags, a JSON summary whose peak
+    current is the peak torque over K_t, and exit status 2 with one line for a bad table."""
+    from trussfe.cli import main
+    out = tmp_path / "a.json"
+    assert main(["actuators", str(MODEL), "--motion", str(MESHES / "slew1_motion.csv"),
+                 "--json", str(out)]) == 0
+    text = capsys.readouterr().out
+    assert "M7_8: G_ls 0.00025266 m/rad (self-locking" in text
+    assert "flag: voltage:" in text
+    import json
+    d = json.loads(out.read_text())["actuators"]["M7_8"]
+    assert_allclose(d["motor_current"]["value"], d["motor_torque"]["value"] / 0.0398, rtol=1e-12)
+    bad = tmp_path / "bad.toml"
+    bad.write_text(MODEL.read_text().replace("friction = 0.1", "friction = -0.1", 1))
+    assert main(["actuators", str(bad)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == [f"trussfe: error: {bad}: actuators.M7_8.friction: must not be negative, "
+                   "got -0.1"]
