@@ -153,3 +153,16 @@ def test_actuators_command(tmp_path, capsys):
     err = capsys.readouterr().err.strip().splitlines()
     assert err == [f"trussfe: error: {bad}: actuators.M7_8.friction: must not be negative, "
                    "got -0.1"]
+
+
+def test_base_simulation_motor():
+    """Lacy section 3.7 / fig. 3.8: the torque nearly vanishes about 0.5 s, where the actuator
+    force changes sign (ours 0.60 s and 0.61 s; the figure is read to ±0.15 s), and ends near
+    the torque that holds the final static load (1 %: the motion has almost settled)."""
+    from trussfe.rigid.actuator_reproductions import base_simulation_motor
+    d = base_simulation_motor()
+    assert_allclose(d["gearhead_gain"], 0.9618, rtol=5e-5)
+    assert abs(d["min_torque_time"] - 0.5) <= 0.15
+    assert abs(d["force_zero_time"] - d["min_torque_time"]) < 0.06      # one step
+    assert_allclose(d["final_torque"], d["final_holding_torque"], rtol=1e-2)
+    assert_allclose(d["max_speed"], 400.0, rtol=1e-12)                  # eq. 3.1 by design

@@ -19,11 +19,12 @@
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
 from ..model.structure import Structure
-from .actuator import Actuator, max_leadscrew_gain, select_gearhead_gain
+from .actuator import Actuator, max_leadscrew_gain, motor_histories, select_gearhead_gain
 from .motion import Motion, third_order_response
 from .reproductions import double_octahedron
 from .simulate import simulate
@@ -129,8 +130,11 @@ def slew1(convention: str = "thesis", steps: int = 220) -> dict:
 
 
 def validation_actuator_gains() -> dict:
-    """Quantities of :func:`base_simulation_gains` for ``trussfe validate``."""
-    return base_simulation_gains()
+    """Quantities of :func:`base_simulation_gains` and (``motor.…``) of
+    :func:`base_simulation_motor` for ``trussfe validate``."""
+    out = base_simulation_gains()
+    out.update({f"motor.{k}": v for k, v in base_simulation_motor().items()})
+    return out
 
 
 def validation_slew1() -> dict:
@@ -158,5 +162,53 @@ def holding_voltage(force: float, act: Actuator | None = None) -> float:
     return abs(force) * a.mean_diameter / 2 * ratio * a.resistance / a.torque_constant
 
 
-__all__ = ["base_simulation_gains", "slew1", "slew1_motion", "slew1_structure",
+__all__ = ["base_simulation_gains", "base_simulation_motor", "slew1", "slew1_motion", "slew1_structure",
            "holding_voltage", "validation_actuator_gains", "validation_slew1"]
+
+
+#: Section 3.7's motor for the triangular truss: square thread, μ = 0.3, d_m = 0.02 m, the
+#: self-locking limit G_ls = 0.003 m/rad, gearhead gain selected for 400 rad/s (eq. 3.1),
+#: Appendix A's motor constants.
+TRIANGLE_MOTOR = dict(leadscrew_gain=0.003, mean_diameter=0.02, thread="square",
+                      thread_angle=0.0, friction=0.3, gearhead_gain=math.nan,
+                      armature_inertia=6.76e-6, resistance=2.0, torque_constant=0.0398,
+                      back_emf_constant=0.0398, max_speed=400.0)
+
+
+def base_simulation_motor(convention: str = "thesis") -> dict:
+    """Motor torque, voltage and current of the Base Simulation (Lacy section 3.7, figs.
+    3.8–3.10): T = 3 s, 10 kg, 50 steps, thesis kinematics scheme.
+
+    Returns
+    -------
+    dict
+        ``gearhead_gain`` (selected), ``min_torque_time`` (s, thesis: "approaches 0 N·m at
+        approximately 0.5 seconds"), ``force_zero_time`` (s, the actuator force changes sign),
+        ``final_torque`` and ``final_holding_torque`` (N·m: the torque at the end and that
+        needed to hold the final static force), ``max_voltage`` (V), ``max_speed`` (rad/s).
+    """
+    from .reproductions import L2, L3MIN, triangular_truss
+    from .motion import third_order_motion
+
+    s = triangular_truss(mass=10.0)
+    k = s.member_index("active")
+    s.extensions["actuators"] = [Actuator(member=k, name="active", convention=convention,
+                                          **TRIANGLE_MOTOR)]
+    m = third_order_motion(s, [L3MIN + L2], [L3MIN + 1.2 + L2], 3.0, 50)
+    r = simulate(s, m, scheme="thesis", full_length_inertia=True)
+    h = r.actuators["active"]
+    tq = np.abs(h["motor_torque"])
+    f = r.actuator_force[:, 0]
+    z = int(np.flatnonzero(np.sign(f[1:]) != np.sign(f[:-1]))[0])
+    t = m.time
+    # Linear interpolation of the sign change between samples z and z+1.
+    tz = t[z] + (t[z + 1] - t[z]) * f[z] / (f[z] - f[z + 1])
+    a = replace(s.extensions["actuators"][0], gearhead_gain=h["gearhead_gain"])
+    hold = motor_histories(a, r.static_actuator_force[-1:, 0], np.zeros(1), np.zeros(1),
+                           r.static_actuator_force[-1:, 0])
+    return {"gearhead_gain": float(h["gearhead_gain"]),
+            "min_torque_time": float(t[int(np.argmin(tq))]), "force_zero_time": float(tz),
+            "final_torque": float(tq[-1]),
+            "final_holding_torque": float(abs(hold["motor_torque"][0])),
+            "max_voltage": float(h["max_motor_voltage"]),
+            "max_speed": float(h["max_motor_speed"])}
