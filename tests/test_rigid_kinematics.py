@@ -58,3 +58,16 @@ def test_exact_kinematics_double_octahedron():
     s = double_octahedron((1.2289, 1.1079, 1.1079))
     m = third_order_motion(s, [1.2289, 1.1079, 1.1079], [1.1079, 1.2289, 1.2289], 2.0, 600)
     _fd_check(s, m)
+
+
+def test_blocked_evaluation_equals_whole_motion(monkeypatch):
+    """Long motions are evaluated in blocks of steps; the results do not depend on it."""
+    import trussfe.rigid.simulate as sim
+    s = double_octahedron((1.2289, 1.1079, 1.1079), gravity=-9.81, top_load=46.0)
+    m = third_order_motion(s, [1.2289, 1.1079, 1.1079], [1.1079, 1.2289, 1.2289], 2.0, 300)
+    whole = sim.simulate(s, m)
+    monkeypatch.setattr(sim, "CHUNK_ENTRIES", 18 * 37)       # blocks of 37 steps
+    blocked = sim.simulate(s, m)
+    assert_allclose(blocked.stresses.von_mises, whole.stresses.von_mises, rtol=1e-13)
+    assert_allclose(blocked.forces.reactions, whole.forces.reactions, rtol=1e-13, atol=1e-12)
+    assert_allclose(blocked.actuator_force, whole.actuator_force, rtol=1e-13)

@@ -147,7 +147,7 @@ def element_accelerations(kin: Kinematics, bodies: MemberBodies, conn: np.ndarra
 
 
 def nodal_forces(structure: Structure, kin: Kinematics, bodies: MemberBodies | None = None,
-                 *, check: bool = False) -> NodalForces:
+                 *, check: bool | None = None) -> NodalForces:
     """Solve the Newton–Euler equations at every time step (Lacy eqs. 2.13–2.14, 4.20).
 
     Parameters
@@ -158,9 +158,10 @@ def nodal_forces(structure: Structure, kin: Kinematics, bodies: MemberBodies | N
         Its kinematics along the motion (use ``kin.at_rest()`` for the static forces).
     bodies : MemberBodies, optional
         Mass elements (default :func:`member_bodies`).
-    check : bool
-        Test every step's equilibrium matrix for singularity again (:func:`compute_kinematics`
-        has already tested the same matrices).
+    check : bool, optional
+        Test every step's equilibrium matrix for singularity; by default only when the
+        kinematics carry no factorisation (:func:`compute_kinematics` has tested the same
+        matrices already).
 
     Returns
     -------
@@ -178,6 +179,8 @@ def nodal_forces(structure: Structure, kin: Kinematics, bodies: MemberBodies | N
                             f"'{structure.member_ids[int(np.flatnonzero(structure.is_beam)[0])]}'"
                             " is a beam")
     bodies = member_bodies(structure) if bodies is None else bodies
+    if check is None:
+        check = kin.compat is None
     conn = structure.connectivity
     dim = structure.dim
     nt, m = kin.length.shape
@@ -209,9 +212,9 @@ def nodal_forces(structure: Structure, kin: Kinematics, bodies: MemberBodies | N
     Mn = structure.masses[None, :, None]
     rhs = (P + Mn * (g - kin.acceleration) - S)[..., :dim].reshape(nt, n * dim)
     try:
-        if kin.compat_inverse is not None:
-            # Bᵀ t = rhs  ⇒  t = B⁻ᵀ rhs with the inverse kept from the kinematics.
-            tl = np.einsum("tfm,tf->tm", kin.compat_inverse, rhs[:, pattern.free_flat])
+        if kin.compat is not None:
+            # Bᵀ t = rhs with the factorisation kept from the kinematics.
+            tl = kin.compat.solve(rhs[:, pattern.free_flat], transpose=True)
         else:
             tl = batched_solve(pattern.cols, pattern.rows, pattern.values(e[..., :dim]),
                                (pattern.nfree, pattern.m), rhs[:, pattern.free_flat],
@@ -232,3 +235,38 @@ def nodal_forces(structure: Structure, kin: Kinematics, bodies: MemberBodies | N
         raise AnalysisError(f"step {k}", "non-finite forces (degenerate geometry)")
     return NodalForces(end_force=np.stack([Fa, Fb], axis=2), tension_end=t,
                        tension_start=t - Re, reactions=react)
+
+
+def composite_cg_inertia(bodies: MemberBodies, length: np.ndarray
+                         ) -> tuple[np.ndarray, np.ndarray]:
+    """Moving centre of gravity and varying inertia of every member (Lacy eqs. 4.58–4.61).
+
+    Parameters
+    ----------
+    bodies : MemberBodies
+    length : ndarray, shape (nt, m)
+        Member lengths along the motion.
+
+    Returns
+    -------
+    cg : ndarray, shape (nt, m)
+        Distance of the member's centre of gravity from its start node, m.
+    inertia : ndarray, shape (nt, m)
+        Transverse moment of inertia about that centre of gravity, kg·m².
+
+    Notes
+    -----
+    For an active member (Appendix C, ``cg7``, ``i7b1``)
+
+    .. math:: cg = \\frac{m_t (L - l_t/2) + m_b\\, cg_b}{m_t + m_b}, \\quad
+              I = I_t + I_b + m_t (L - l_t/2 - cg)^2 + m_b (cg - cg_b)^2 .
+
+    The force model itself keeps the tube and base as separate bodies, which is equivalent.
+    """
+    L = np.asarray(length, dtype=float)
+    mt, mb = bodies.tube_mass, bodies.base_mass
+    st = L - bodies.tube_length / 2.0
+    cg = (mt * st + mb * bodies.base_cg) / (mt + mb)
+    inertia = (bodies.tube_inertia(bodies.tube_length, mt) + bodies.base_inertia_cg
+               + mt * (st - cg) ** 2 + mb * (cg - bodies.base_cg) ** 2)
+    return cg, inertia

@@ -35,8 +35,7 @@ import numpy as np
 from ..errors import AnalysisError
 from ..kinematics.assembly import solve_positions
 from ..model.structure import Structure
-from .linalg import (DENSE_LIMIT, SINGULAR_RCOND, SingularStep, batched_solve,
-                     check_singular)
+from .linalg import CompatSolver, SingularStep
 from .motion import Motion
 
 log = logging.getLogger(__name__)
@@ -76,9 +75,9 @@ class Kinematics:
     omega: np.ndarray
     alpha: np.ndarray
     scheme: str = "exact"
-    #: Inverse of the compatibility matrix on the free coordinates (nt, nfree, m_loaded)
-    #: for small trusses: reused for velocities, accelerations and (transposed) forces.
-    compat_inverse: np.ndarray | None = None
+    #: Factorised compatibility matrices (free coordinates × loaded members) of every step,
+    #: reused for velocities, accelerations and (transposed) member forces.
+    compat: CompatSolver | None = None
 
     @property
     def n_steps(self) -> int:
@@ -92,7 +91,7 @@ class Kinematics:
         zu = np.zeros_like(self.unit)
         return Kinematics(self.time, self.coords, z3, z3.copy(), self.length, zm, zm.copy(),
                           self.unit, zu, zu.copy(), zu.copy(), zu.copy(), self.scheme,
-                          self.compat_inverse)
+                          self.compat)
 
 
 def pad3(x: np.ndarray) -> np.ndarray:
@@ -162,14 +161,19 @@ def solve_motion_positions(structure: Structure, motion: Motion,
 
 
 #: Motions longer than this are solved by coarse continuation + batched Newton.
-BATCH_MIN_STEPS = 200
+BATCH_MIN_STEPS = 120
 #: Steps of the coarse continuation.
-COARSE_STEPS = 60
+COARSE_STEPS = 20
 
 
 def _sequential_positions(structure, motion, L, x0, steps, progress) -> np.ndarray:
     """Warm-started forward position, one step after the other, at the given step indices."""
     fixed = structure.translation_supports
+    # Members between two fixed nodes neither move nor constrain: leaving them out keeps the
+    # Newton system square (sparse LU instead of least squares).
+    keep = _Pattern(structure).loaded_idx
+    conn = structure.connectivity[keep]
+    ids = [structure.member_ids[i] for i in keep]
     x = x0
     out = np.empty((len(steps),) + x0.shape)
     it = steps
@@ -178,22 +182,27 @@ def _sequential_positions(structure, motion, L, x0, steps, progress) -> np.ndarr
         it = tqdm(steps, desc="positions", unit="step", leave=False)
     for j, k in enumerate(it):
         try:
-            r = solve_positions(x, structure.connectivity, L[k], fixed,
-                                member_ids=structure.member_ids, item=_step_item(motion, k))
+            r = solve_positions(x, conn, L[k, keep], fixed, member_ids=ids,
+                                item=_step_item(motion, k))
         except AnalysisError as err:
             acts = ", ".join(f"'{structure.member_ids[i]}' = {motion.length[k, c]:.6g} m"
-                             for c, i in enumerate(motion.members))
+                             for c, i in enumerate(motion.members[:6]))
+            if motion.members.size > 6:
+                acts += f", … ({motion.members.size} active members)"
             raise AnalysisError(err.item, f"{err.message} (active lengths {acts})") from None
         x = r.coords
         out[j] = x
     return out
 
 
-def _batched_newton(structure, pattern, L, X, tolerance=1e-12, iterations=12):
-    """Newton on the bar-length equations of every step at once.
+def _batched_newton(structure, pattern, L, X, tolerance=1e-12, iterations=30):
+    """Chord (modified) Newton on the bar-length equations of every step at once.
 
-    Returns the positions and a per-step flag: converged and within a tenth of the truss size
-    of its guess (so that no step has jumped to another assembly branch).
+    The Jacobian (the compatibility matrix) is factorised once at the interpolated guess and
+    reused: the guess is close, so the iteration contracts fast, and one factorisation per
+    step costs far less than one per iteration.  Returns the positions and a per-step flag:
+    converged and within a tenth of the truss size of its guess (so that no step has jumped
+    to another assembly branch).
     """
     conn = structure.connectivity
     X = X.copy()
@@ -202,19 +211,19 @@ def _batched_newton(structure, pattern, L, X, tolerance=1e-12, iterations=12):
     scale = float(L.max())
     Lk = L[:, pattern.loaded_idx]
     flat = X.reshape(nt, -1)
+    d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
+    try:
+        solver = CompatSolver(pattern.rows, pattern.cols,
+                              pattern.values(d / np.linalg.norm(d, axis=2)[..., None]),
+                              pattern.m)
+    except SingularStep:
+        return X, np.zeros(nt, dtype=bool)
     for _ in range(iterations):
         d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
-        cur = np.linalg.norm(d, axis=2)
-        r = cur[:, pattern.loaded_idx] - Lk
-        res = np.abs(r).max(axis=1)
-        if np.all(res <= tolerance * scale):
+        r = np.linalg.norm(d, axis=2)[:, pattern.loaded_idx] - Lk
+        if np.abs(r).max() <= tolerance * scale:
             break
-        e = d / cur[..., None]
-        try:
-            dx = batched_solve(pattern.rows, pattern.cols, pattern.values(e), (pattern.m,
-                               pattern.nfree), -r, check=False)
-        except (SingularStep, np.linalg.LinAlgError):
-            return X, np.zeros(nt, dtype=bool)
+        dx = solver.solve(-r)
         if not np.all(np.isfinite(dx)):
             return X, np.zeros(nt, dtype=bool)
         flat[:, pattern.free_flat] += dx
@@ -256,70 +265,30 @@ class _Pattern:
         return vals[:, self.keep]
 
 
-def _solve_compat(structure: Structure, pattern: _Pattern, unit: np.ndarray, rhs: np.ndarray,
-                  motion: Motion, what: str, inv: np.ndarray | None = None) -> np.ndarray:
+def _solve_compat(structure: Structure, pattern: _Pattern, solver: CompatSolver,
+                  rhs: np.ndarray) -> np.ndarray:
     """Solve B x = rhs (nt, m) for the free node coordinates; returns (nt, n, dim)."""
-    nt = unit.shape[0]
-    if inv is not None:
-        out = np.zeros((nt, structure.n_nodes * structure.dim))
-        out[:, pattern.free_flat] = np.einsum("tfm,tm->tf", inv, rhs[:, pattern.loaded_idx])
-        return out.reshape(nt, structure.n_nodes, structure.dim)
-    if pattern.m != pattern.nfree:
-        raise AnalysisError(structure.source or structure.name, _count_message(pattern))
-    try:
-        xf = batched_solve(pattern.rows, pattern.cols, pattern.values(unit),
-                           (pattern.m, pattern.nfree), rhs[:, pattern.loaded_idx], check=False)
-    except SingularStep as s:
-        raise AnalysisError(_step_item(motion, s.step), f"the assembly is at a singular position "
-                            f"(its compatibility matrix is rank deficient), so its {what} are not "
-                            "determined by the member lengths; choose a motion that avoids it"
-                            ) from None
+    nt = rhs.shape[0]
     out = np.zeros((nt, structure.n_nodes * structure.dim))
-    out[:, pattern.free_flat] = xf
+    out[:, pattern.free_flat] = solver.solve(rhs[:, pattern.loaded_idx])
     return out.reshape(nt, structure.n_nodes, structure.dim)
 
 
-def _check_steps(structure: Structure, pattern: _Pattern, X: np.ndarray, motion: Motion
-                 ) -> np.ndarray | None:
-    """Inverse of the compatibility matrix at every step, or an error at the first singular
-    step (checked once: the velocity, acceleration and force solves all use this matrix or
-    its transpose).
-
-    Singular means a reciprocal condition number (Frobenius norms, which bound the spectral
-    one within a factor n) below :data:`~trussfe.rigid.linalg.SINGULAR_RCOND`.  Large trusses
-    return ``None``: their sparse solves check their own pivots.
-    """
-    if pattern.nfree > DENSE_LIMIT:
-        return None
+def _factorise(structure: Structure, pattern: _Pattern, X: np.ndarray, motion: Motion
+               ) -> CompatSolver:
+    """Factorise the compatibility matrix of every step, or raise at the first singular step
+    (once: velocities, accelerations and member forces all use this matrix or its
+    transpose)."""
     conn = structure.connectivity
     d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
     e = d / np.linalg.norm(d, axis=2)[..., None]
-    nt = X.shape[0]
-    A = np.zeros((nt, pattern.m * pattern.nfree))
-    A[:, pattern.rows * pattern.nfree + pattern.cols] = pattern.values(e)   # no duplicates
-    A = A.reshape(nt, pattern.m, pattern.nfree)
     try:
-        inv = np.linalg.inv(A)
-        with np.errstate(over="ignore", invalid="ignore"):
-            rc = 1.0 / (np.linalg.norm(A, axis=(1, 2)) * np.linalg.norm(inv, axis=(1, 2)))
-        bad = np.flatnonzero(~(rc >= SINGULAR_RCOND))
-        if bad.size:
-            raise SingularStep(int(bad[0]))
-    except np.linalg.LinAlgError:
-        try:
-            check_singular(A)
-        except SingularStep as s:
-            bad = np.array([s.step])
-        else:                                        # pragma: no cover - LAPACK disagreement
-            bad = np.array([0])
-    except SingularStep:
-        pass
-    if bad.size:
-        raise AnalysisError(_step_item(motion, int(bad[0])), "the assembly is at a singular "
+        return CompatSolver(pattern.rows, pattern.cols, pattern.values(e), pattern.m)
+    except SingularStep as s:
+        raise AnalysisError(_step_item(motion, s.step), "the assembly is at a singular "
                             "position (its compatibility matrix is rank deficient): its "
                             "velocities, accelerations and member forces are not determined "
-                            "there; choose a motion that avoids it")
-    return inv
+                            "there; choose a motion that avoids it") from None
 
 
 def _count_message(pattern: _Pattern) -> str:
@@ -361,7 +330,7 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
         raise AnalysisError(structure.source or structure.name, _count_message(pattern))
     X = (solve_motion_positions(structure, motion, progress=progress) if coords is None
          else coords)
-    inv = _check_steps(structure, pattern, X, motion)
+    solver = _factorise(structure, pattern, X, motion)
     nt = X.shape[0]
     conn = structure.connectivity
     d = X[:, conn[:, 1]] - X[:, conn[:, 0]]                      # (time, member, dim)
@@ -373,10 +342,10 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     Ldd[:, motion.members] = motion.acceleration
     e3 = pad3(e)
     if scheme == "exact":
-        V = _solve_compat(structure, pattern, e, Ld, motion, "velocities", inv)
+        V = _solve_compat(structure, pattern, solver, Ld)
         vrel = V[:, conn[:, 1]] - V[:, conn[:, 0]]
         quad = (np.einsum("tmi,tmi->tm", vrel, vrel) - Ld ** 2) / L
-        A = _solve_compat(structure, pattern, e, Ldd - quad, motion, "accelerations", inv)
+        A = _solve_compat(structure, pattern, solver, Ldd - quad)
         arel = A[:, conn[:, 1]] - A[:, conn[:, 0]]
         ed = pad3((vrel - Ld[..., None] * e) / L[..., None])
         edd = pad3((arel - Ldd[..., None] * e) / L[..., None]) - 2 * Ld[..., None] * ed / \
@@ -384,7 +353,7 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
         omega = np.cross(e3, ed)
         alpha = np.cross(e3, edd)
         return Kinematics(motion.time, X, pad3(V), pad3(A), L, Ld, Ldd, e3, ed, edd, omega,
-                          alpha, "exact", inv)
+                          alpha, "exact", solver)
     # Lacy Appendix A: angle rates by backward differences.
     omega = np.zeros((nt, structure.n_members, 3))
     if nt > 1:
@@ -402,7 +371,7 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     edd = np.cross(alpha, e3) + np.cross(omega, ed)
     V, A = _walk_nodes(structure, motion, e3, ed, edd, L, Ld, Ldd)
     return Kinematics(motion.time, X, V, A, L, Ld, Ldd, e3, ed, edd, omega, alpha, "thesis",
-                      inv)
+                      solver)
 
 
 def _walk_nodes(structure, motion, e, ed, edd, L, Ld, Ldd):

@@ -102,3 +102,89 @@ def lacy_triangle(x, xvel, xacel, dt: float, mass4: float, g: float = G) -> Lacy
     SM[:, 10, [3, 4]] = -1
     F = np.linalg.solve(SM, rhs[..., None])[..., 0]
     return LacyTriangle(forces=F, matrix=SM, rhs=rhs)
+
+
+# ------------------------------------------------------------------ the unreduced system
+def newton_euler_system(structure, kin, bodies=None):
+    """Lacy's unreduced Newton–Euler system (eq. 4.20, Table 4.1) for any pin-jointed truss.
+
+    Unknowns: the three components of the force each node exerts on each member end (F_a,
+    F_b; 6 per member in 3-D, 4 in 2-D) and the support reactions.  Equations: each member's
+    force balance (dim rows) and its moment balance about its start node along two directions
+    perpendicular to it (one in 2-D), and the nodal constraint equations (dim rows per node).
+    For the double-octahedral bay: 18 × 6 + 9 = 117 unknowns and 18 × 5 + 27 = 117 equations —
+    Lacy's 117 × 117 system.  Dense, assembled and solved per step (``numpy.linalg.solve``
+    over the time axis); kept as an independent check of :func:`~trussfe.rigid.forces.
+    nodal_forces`, which eliminates each member's transverse forces first.
+
+    Returns
+    -------
+    A : ndarray, shape (nt, N, N)
+    b : ndarray, shape (nt, N)
+    layout : dict
+        ``"end_force"``: index array (m, 2, dim) of the force unknowns; ``"reaction"``: list of
+        (node, component, column).
+    """
+    from .forces import element_accelerations, member_bodies
+    from .kinematics import pad3
+
+    bodies = member_bodies(structure) if bodies is None else bodies
+    dim = structure.dim
+    conn = structure.connectivity
+    m, n = structure.n_members, structure.n_nodes
+    nt = kin.n_steps
+    e = kin.unit
+    g = pad3(np.asarray(structure.gravity, dtype=float))
+    a_t, s_t, a_b = element_accelerations(kin, bodies, conn)
+    f_t = bodies.tube_mass[None, :, None] * (a_t - g)
+    f_b = bodies.base_mass[None, :, None] * (a_b - g)
+    R = f_t + f_b
+    inertia = (bodies.tube_inertia(bodies.tube_length, bodies.tube_mass)
+               + bodies.base_inertia_cg)[None, :, None]
+    Ma = (np.cross(s_t * e, f_t) + np.cross(bodies.base_cg[None, :, None] * e, f_b)
+          + inertia * kin.alpha)
+    # Directions of the moment equations: perpendicular to the member (Lacy's b1, b2).
+    if dim == 2:
+        dirs = np.zeros((nt, m, 1, 3))
+        dirs[..., 0, 2] = 1.0
+    else:
+        helper = np.where(np.abs(e[..., 2:3]) < 0.9, [0.0, 0.0, 1.0], [1.0, 0.0, 0.0])
+        b1 = np.cross(e, helper)
+        b1 /= np.linalg.norm(b1, axis=2)[..., None]
+        b2 = np.cross(e, b1)
+        dirs = np.stack([b1, b2], axis=2)                     # (t, m, 2, 3)
+    nmom = dirs.shape[2]
+    fcol = np.arange(m * 2 * dim).reshape(m, 2, dim)
+    sup = np.argwhere(structure.translation_supports)
+    rcol = m * 2 * dim + np.arange(len(sup))
+    N = m * 2 * dim + len(sup)
+    rows_member = m * (dim + nmom)
+    if rows_member + n * dim != N:
+        raise ValueError(f"the unreduced system is {rows_member + n * dim} × {N}: the truss is "
+                         "not statically determinate (or has members between fixed nodes)")
+    A = np.zeros((nt, N, N))
+    b = np.zeros((nt, N))
+    ar = np.arange(m)
+    for c in range(dim):                                      # force balance
+        row = ar * (dim + nmom) + c
+        A[:, row, fcol[:, 0, c]] = 1.0
+        A[:, row, fcol[:, 1, c]] = 1.0
+        b[:, row] = R[..., c]
+    d = (kin.length[..., None] * e)
+    for j in range(nmom):                                     # moment balance about start
+        row = ar * (dim + nmom) + dim + j
+        coef = np.cross(dirs[:, :, j], d)                     # (b_j × d)·F_b = b_j·(d × F_b)
+        for c in range(dim):
+            A[:, row, fcol[:, 1, c]] = coef[..., c]
+        b[:, row] = np.einsum("tmi,tmi->tm", dirs[:, :, j], Ma)
+    P = pad3(structure.loads[:, :dim])
+    Mn = structure.masses
+    rhs_nodes = P[None] + Mn[None, :, None] * (g - kin.acceleration)
+    for c in range(dim):                                      # nodal equations
+        for end in (0, 1):
+            A[:, rows_member + conn[:, end] * dim + c, fcol[:, end, c]] = 1.0
+        b[:, rows_member + np.arange(n) * dim + c] = rhs_nodes[..., c]
+    for (node, c), col in zip(sup, rcol):
+        A[:, rows_member + node * dim + c, col] = -1.0
+    return A, b, {"end_force": fcol, "reaction": [(int(a), int(c), int(k))
+                                                  for (a, c), k in zip(sup, rcol)]}

@@ -121,3 +121,81 @@ def check_singular(A: np.ndarray) -> None:
     bad = np.flatnonzero(~(rc >= SINGULAR_RCOND))
     if bad.size:
         raise SingularStep(int(bad[0]))
+
+
+class CompatSolver:
+    """Factorised compatibility matrices B_k of every step, for ``B x = b`` and ``Bᵀ y = c``.
+
+    Small systems keep the stacked inverses (one batched LAPACK call; every later solve is a
+    batched matrix–vector product); large ones keep one SuperLU factorisation of the
+    block-diagonal matrix per chunk of steps, used for both B and Bᵀ (``trans="T"``).  The
+    velocities, the accelerations and the dynamic and static member forces of a motion all
+    reuse the same factorisation.
+
+    Parameters
+    ----------
+    rows, cols : ndarray of int, shape (nnz,)
+        Pattern of B (no duplicates).
+    vals : ndarray, shape (nt, nnz)
+    n : int
+        Size of each square B_k.
+
+    Raises
+    ------
+    SingularStep
+        At the first step whose reciprocal condition number (dense: Frobenius norms, which
+        bound the spectral one within a factor n) or relative pivot (sparse) is below
+        :data:`SINGULAR_RCOND`.
+    """
+
+    def __init__(self, rows: np.ndarray, cols: np.ndarray, vals: np.ndarray, n: int):
+        self.n = n
+        self.nt = vals.shape[0]
+        self.inverse = None
+        self.blocks: list[tuple[int, int, object]] = []
+        if n == 0:
+            return
+        if n <= DENSE_LIMIT:
+            A = np.zeros((self.nt, n * n))
+            A[:, rows * n + cols] = vals
+            A = A.reshape(self.nt, n, n)
+            try:
+                inv = np.linalg.inv(A)
+            except np.linalg.LinAlgError:
+                check_singular(A)
+                raise SingularStep(0) from None          # pragma: no cover
+            with np.errstate(over="ignore", invalid="ignore"):
+                rc = 1.0 / (np.linalg.norm(A, axis=(1, 2)) * np.linalg.norm(inv, axis=(1, 2)))
+            bad = np.flatnonzero(~(rc >= SINGULAR_RCOND))
+            if bad.size:
+                raise SingularStep(int(bad[0]))
+            self.inverse = inv
+            return
+        chunk = max(1, 200_000 // n)
+        scale = np.abs(vals).max()
+        for k0 in range(0, self.nt, chunk):
+            k1 = min(self.nt, k0 + chunk)
+            nk = k1 - k0
+            off = (np.arange(nk) * n)[:, None]
+            A = sp.csc_matrix((vals[k0:k1].ravel(), ((rows[None, :] + off).ravel(),
+                                                     (cols[None, :] + off).ravel())),
+                              shape=(nk * n, nk * n))
+            try:
+                lu = spla.splu(A)
+            except RuntimeError:
+                raise SingularStep(k0) from None
+            d = np.abs(lu.U.diagonal())
+            if d.min() <= SINGULAR_RCOND * max(scale, 1e-300):
+                raise SingularStep(k0 + int(lu.perm_c[np.argmin(d)]) // n)
+            self.blocks.append((k0, k1, lu))
+
+    def solve(self, rhs: np.ndarray, transpose: bool = False) -> np.ndarray:
+        """x with B_k x_k = rhs_k (or B_kᵀ x_k = rhs_k), rhs of shape (nt, n)."""
+        if self.inverse is not None:
+            sub = "tji,tj->ti" if transpose else "tij,tj->ti"
+            return np.einsum(sub, self.inverse, rhs)
+        out = np.empty_like(rhs, dtype=float)
+        for k0, k1, lu in self.blocks:
+            out[k0:k1] = lu.solve(np.ascontiguousarray(rhs[k0:k1]).ravel(),
+                                  trans="T" if transpose else "N").reshape(k1 - k0, self.n)
+        return out

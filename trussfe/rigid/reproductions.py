@@ -15,7 +15,7 @@ import numpy as np
 from ..model.sections import Material, Section
 from ..model.structure import Structure, build_structure
 from .active import ActiveMember
-from .motion import rest_motion, third_order_motion
+from .motion import third_order_motion
 from .simulate import simulate
 
 #: Lacy Table 3.1 / Appendix A data.
@@ -261,3 +261,47 @@ def validation_double_octahedron() -> dict:
     out = _flatten(double_octahedron_static())
     out.update(_flatten(double_octahedron_static(46.0), "stated_46N."))
     return out
+
+
+def double_octahedral_chain(n_bays: int, *, top_load: float = 0.0, gravity: float = 0.0
+                            ) -> Structure:
+    """A chain of ``n_bays`` double-octahedral bays at the equilibrium position (Lacy ch. 6).
+
+    Bay k's top plane is bay k+1's base; the base triangle (3 members between fixed nodes) is
+    included, so the chain has 18 n + 3 members (1,803 for 100 bays) and 6 n free nodes.
+    Active members ``M7_8.k``, ``M9_10.k``, ``M11_12.k`` carry Appendix C's data.
+    """
+    if n_bays < 1:
+        raise ValueError("n_bays must be at least 1")
+    bay = double_octahedron()
+    x = bay.coords
+    h = float(x[6, 2])
+    base = x[:3]
+    mid = x[3:6]
+    coords = [base]
+    conn = [(0, 1), (1, 2), (2, 0)]
+    names = ["B12", "B23", "B31"]
+    for k in range(n_bays):
+        lvl = 6 * k                                 # first node of this bay's base level
+        m0 = len(np.vstack(coords))
+        coords.append(mid + [0.0, 0.0, k * h])
+        coords.append(base + [0.0, 0.0, (k + 1) * h])
+        t0 = m0 + 3
+        node = {1: lvl, 2: lvl + 1, 3: lvl + 2, 4: m0, 5: m0 + 1, 6: m0 + 2,
+                7: t0, 9: t0 + 1, 8: t0 + 2}
+        for mid_name, (a, b) in DO_MEMBERS.items():
+            conn.append((node[a], node[b]))
+            names.append(f"{mid_name}.{k + 1}")
+    X = np.vstack(coords)
+    top = range(len(X) - 3, len(X))
+    s = build_structure(X, conn, section=DO_TUBE, material=ALUMINIUM,
+                        supports={0: "xyz", 1: "xyz", 2: "xyz"},
+                        loads={i: [0.0, 0.0, top_load] for i in top} if top_load else None,
+                        gravity=None if gravity == 0.0 else [0.0, 0.0, -gravity],
+                        node_ids=[f"N{i + 1}" for i in range(len(X))], member_ids=names,
+                        name=f"{n_bays}-bay double-octahedral chain")
+    s.extensions["active_members"] = [
+        ActiveMember(member=i, base_mass=3.0, base_length=0.7, base_cg=0.35,
+                     base_inertia=3.0 * 0.7 ** 2 / 3, tube_length=0.254)
+        for i, nm in enumerate(names) if nm.split(".")[0] in ("M7_8", "M9_10", "M11_12")]
+    return s

@@ -80,7 +80,8 @@ class SectionForces:
 def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
                    bodies: MemberBodies, n_sections: int = 7, *,
                    positions: np.ndarray | None = None,
-                   full_length_inertia: bool = False) -> SectionForces:
+                   full_length_inertia: bool = False,
+                   members: np.ndarray | None = None) -> SectionForces:
     """Internal forces at sections along every member, all steps at once.
 
     Parameters
@@ -94,6 +95,8 @@ def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
         Explicit section positions from the end node instead.
     full_length_inertia : bool
         Use the whole tube length in every piece's moment of inertia (Lacy Appendix A quirk).
+    members : ndarray of int, optional
+        Only these members (the member axis of the result follows this selection).
 
     Notes
     -----
@@ -102,21 +105,24 @@ def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
     sections only scale them:
     M = m_s (u/2) [e × (a_0 − g) + (L − u/2) e × ë] + I_s α − u e × F_b.
     """
+    sel = slice(None) if members is None else np.asarray(members, dtype=np.int64)
+    tube_length = bodies.tube_length[sel]
     if positions is None:
         frac = np.array([0.5]) if n_sections == 1 else np.linspace(0.0, 1.0, n_sections)
-        positions = bodies.tube_length[:, None] * frac[None, :]          # (member, section)
+        positions = tube_length[:, None] * frac[None, :]                 # (member, section)
     u = positions[None, :, :]                                             # (1, m, k)
     g = pad3(np.asarray(structure.gravity, dtype=float))
-    conn = structure.connectivity
-    e, edd = kin.unit, kin.unit_acc                                       # (t, m, 3)
-    L = kin.length[:, :, None]                                            # (t, m, 1)
-    p = (kin.acceleration[:, conn[:, 0]] + kin.length_acc[..., None] * e
-         + 2.0 * kin.length_rate[..., None] * kin.unit_rate - g)          # a_0 − g
-    Fb = forces.end_force[:, :, 1]
-    mu = (bodies.tube_mass / bodies.tube_length)[None, :, None]
+    conn = structure.connectivity[sel]
+    e, edd = kin.unit[:, sel], kin.unit_acc[:, sel]                       # (t, m, 3)
+    L = kin.length[:, sel, None]                                          # (t, m, 1)
+    p = (kin.acceleration[:, conn[:, 0]] + kin.length_acc[:, sel, None] * e
+         + 2.0 * kin.length_rate[:, sel, None] * kin.unit_rate[:, sel] - g)   # a_0 − g
+    Fb = forces.end_force[:, sel, 1]
+    mu = (bodies.tube_mass[sel] / tube_length)[None, :, None]
     mseg = mu * u                                                         # (1, m, k)
-    Iseg = bodies.tube_inertia(positions.T, (mu[0, :, 0] * positions.T),
-                               full_length=full_length_inertia).T[None]   # (1, m, k)
+    ell = tube_length[:, None] if full_length_inertia else positions
+    Iseg = (mu[0] * positions * (bodies.tube_radius2[sel][:, None]
+                                 + np.square(ell) / 12.0))[None]          # (1, m, k)
     lever = L - u / 2.0                                                   # (t, m, k)
     pe = np.einsum("tmi,tmi->tm", p, e)[..., None]
     qe = np.einsum("tmi,tmi->tm", edd, e)[..., None]
@@ -132,7 +138,7 @@ def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
     eF = np.cross(e, Fb)
     half = (mseg * u / 2.0)[..., None]
     M = (half * (c0[:, :, None, :] + lever[..., None] * c1[:, :, None, :])
-         + Iseg[..., None] * kin.alpha[:, :, None, :] - u[..., None] * eF[:, :, None, :])
+         + Iseg[..., None] * kin.alpha[:, sel, None, :] - u[..., None] * eF[:, :, None, :])
     return SectionForces(position=positions, tension=tension, shear=V, moment=M, unit=e)
 
 

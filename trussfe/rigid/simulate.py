@@ -19,7 +19,7 @@ from ..model.structure import Structure
 from .active import active_members
 from .buckling import BucklingCheck, buckling_check
 from .forces import MemberBodies, NodalForces, member_bodies, nodal_forces
-from .kinematics import Kinematics, compute_kinematics
+from .kinematics import Kinematics, compute_kinematics, solve_motion_positions
 from .motion import Motion, rest_motion
 from .sections import SectionForces, SectionStresses, section_forces, section_stresses
 
@@ -112,7 +112,8 @@ class SimulationResult:
 
 
 def simulate(structure: Structure, motion: Motion | None = None, *, scheme: str = "exact",
-             n_sections: int = 7, full_length_inertia: bool = False, shear_factor: float = 3.0,
+             n_sections: int = 7, full_length_inertia: bool | None = None,
+             shear_factor: float = 3.0,
              buckling_constants: np.ndarray | float = 1.0, actuators: bool = True,
              progress: bool = False) -> SimulationResult:
     """Rigid-body dynamic force analysis of a truss along a motion (Lacy chapters 2–4).
@@ -127,8 +128,9 @@ def simulate(structure: Structure, motion: Motion | None = None, *, scheme: str 
         Kinematics: exact compatibility equations, or Lacy's backward differences.
     n_sections : int
         Sections per member (Lacy: 7 in the triangular truss).
-    full_length_inertia : bool
-        Lacy's Appendix A section inertia (whole tube length in every piece).
+    full_length_inertia : bool, optional
+        Lacy's Appendix A section inertia (whole tube length in every piece); default: True
+        with the thesis scheme, False (physical) with the exact one.
     shear_factor : float
         3 for von Mises at S1 (eq. 2.24); Lacy's code uses 1.
     buckling_constants : float or array (m,)
@@ -145,6 +147,8 @@ def simulate(structure: Structure, motion: Motion | None = None, *, scheme: str 
     if n_sections < 1 or int(n_sections) != n_sections:
         raise InputError("sections", f"need a positive integer number of sections (1 = the "
                          f"midpoint only), got {n_sections}")
+    if full_length_inertia is None:
+        full_length_inertia = scheme == "thesis"
     if motion is None:
         motion = rest_motion(structure)
     acts = active_members(structure)
@@ -153,9 +157,49 @@ def simulate(structure: Structure, motion: Motion | None = None, *, scheme: str 
         bad = sorted(set(motion.members.tolist()) - set(act_idx.tolist()))[0]
         raise InputError("motion", f"member '{structure.member_ids[bad]}' is not an active "
                          "member of the model (add it to [active_members])")
-    kin = compute_kinematics(structure, motion, scheme=scheme, progress=progress)
-    still = kin.at_rest()
     bodies = member_bodies(structure)
+    opts = dict(n_sections=n_sections, full_length_inertia=full_length_inertia,
+                shear_factor=shear_factor)
+    nt, m = motion.n_steps, structure.n_members
+    step = max(1, CHUNK_ENTRIES // max(m, 1))
+    if scheme == "exact" and nt > step:
+        # Positions for the whole motion (warm starts link the steps), then everything else
+        # one block of steps at a time: the exact kinematics are independent per step, and
+        # blocks that fit in the processor cache are several times faster than whole-motion
+        # arrays (the work is memory-bound).
+        X = solve_motion_positions(structure, motion, progress=progress)
+        parts = [_steps(structure, _slice_motion(motion, k0, min(nt, k0 + step)),
+                        X[k0:k0 + step], scheme, bodies, act_idx, **opts)
+                 for k0 in range(0, nt, step)]
+        kin, f, fs, sf, ss, st, sts, mid, act_force, act_static, cmoment = (
+            _concat([p[i] for p in parts]) for i in range(len(parts[0])))
+    else:
+        X = solve_motion_positions(structure, motion, progress=progress) if nt > 1 else None
+        (kin, f, fs, sf, ss, st, sts, mid, act_force, act_static,
+         cmoment) = _steps(structure, motion, X, scheme, bodies, act_idx, **opts)
+    buck = buckling_check(structure, sf.tension, bodies.tube_length, buckling_constants)
+    res = SimulationResult(structure=structure, motion=motion, kinematics=kin, bodies=bodies,
+                           forces=f, static_forces=fs, sections=sf, static_sections=ss,
+                           stresses=st, static_stresses=sts, midpoint_axial_force=mid,
+                           actuator_force=act_force, static_actuator_force=act_static,
+                           cantilever_moment=cmoment, buckling=buck,
+                           options={"scheme": scheme, "n_sections": int(n_sections),
+                                    "full_length_inertia": full_length_inertia,
+                                    "shear_factor": shear_factor})
+    if actuators and "actuators" in structure.extensions and act_idx.size:
+        res.actuators = _actuator_histories(structure, motion, res)
+    return res
+
+
+#: Members × steps per block of the blocked evaluation (about 4 MB per 3-vector array).
+CHUNK_ENTRIES = 1 << 17
+
+
+def _steps(structure, motion, X, scheme, bodies, act_idx, *, n_sections, full_length_inertia,
+           shear_factor):
+    """Kinematics, forces, sections, stresses and actuator force for a block of steps."""
+    kin = compute_kinematics(structure, motion, scheme=scheme, coords=X)
+    still = kin.at_rest()
     f = nodal_forces(structure, kin, bodies)
     fs = nodal_forces(structure, still, bodies)
     sf = section_forces(structure, kin, f, bodies, n_sections,
@@ -172,18 +216,29 @@ def simulate(structure: Structure, motion: Motion | None = None, *, scheme: str 
     # The cantilever connection: the cut at u = L_tube of an active member, where the
     # piece is the whole leadscrew tube; its axial force is the actuator force.
     act_force, act_static, cmoment = _cantilever(structure, kin, still, f, fs, bodies, act_idx)
-    buck = buckling_check(structure, sf.tension, bodies.tube_length, buckling_constants)
-    res = SimulationResult(structure=structure, motion=motion, kinematics=kin, bodies=bodies,
-                           forces=f, static_forces=fs, sections=sf, static_sections=ss,
-                           stresses=st, static_stresses=sts, midpoint_axial_force=mid,
-                           actuator_force=act_force, static_actuator_force=act_static,
-                           cantilever_moment=cmoment, buckling=buck,
-                           options={"scheme": scheme, "n_sections": int(n_sections),
-                                    "full_length_inertia": full_length_inertia,
-                                    "shear_factor": shear_factor})
-    if actuators and "actuators" in structure.extensions and act_idx.size:
-        res.actuators = _actuator_histories(structure, motion, res)
-    return res
+    kin.compat = None                  # factorisations of one block are not kept
+    return kin, f, fs, sf, ss, st, sts, mid, act_force, act_static, cmoment
+
+
+def _slice_motion(motion: Motion, k0: int, k1: int) -> Motion:
+    return Motion(time=motion.time[k0:k1], members=motion.members,
+                  length=motion.length[k0:k1], velocity=motion.velocity[k0:k1],
+                  acceleration=motion.acceleration[k0:k1], source=motion.source)
+
+
+def _concat(items: list):
+    """Join per-block results along the time axis (dataclasses field by field)."""
+    first = items[0]
+    if isinstance(first, np.ndarray):
+        return np.concatenate(items, axis=0)
+    values = {}
+    for name in first.__dataclass_fields__:
+        v = getattr(first, name)
+        if isinstance(v, np.ndarray) and name not in ("position",):
+            values[name] = np.concatenate([getattr(it, name) for it in items], axis=0)
+        else:
+            values[name] = None if name == "compat" else v
+    return type(first)(**values)
 
 
 def _cantilever(structure, kin, still, f, fs, bodies, act_idx):
@@ -192,12 +247,11 @@ def _cantilever(structure, kin, still, f, fs, bodies, act_idx):
     if act_idx.size == 0:
         z = np.zeros((nt, 0))
         return z, z.copy(), z.copy()
-    pos = bodies.tube_length[:, None].copy()
-    cf = section_forces(structure, kin, f, bodies, positions=pos)
-    cs = section_forces(structure, still, fs, bodies, positions=pos)
+    pos = bodies.tube_length[act_idx, None].copy()
+    cf = section_forces(structure, kin, f, bodies, positions=pos, members=act_idx)
+    cs = section_forces(structure, still, fs, bodies, positions=pos, members=act_idx)
     # N·e = −T: positive when the base pushes the tube outward (Lacy ``actfor``).
-    return (-cf.tension[:, act_idx, 0], -cs.tension[:, act_idx, 0],
-            cf.moment_magnitude[:, act_idx, 0])
+    return -cf.tension[:, :, 0], -cs.tension[:, :, 0], cf.moment_magnitude[:, :, 0]
 
 
 def _actuator_histories(structure: Structure, motion: Motion, res: SimulationResult) -> dict:
