@@ -209,7 +209,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                 monitor: int | None = None, branch: bool = False,
                 tolerance: float = 1e-9, max_iterations: int = 30,
                 event_tolerance: float = 1e-6, locate_critical: bool = True,
-                handover: bool = True, max_cuts: int = 12) -> PathResult:
+                handover: bool = True, max_cuts: int = 12,
+                branch_step: float = 0.01) -> PathResult:
     """Follow the equilibrium path of a structure under ``λ f``.
 
     Parameters
@@ -242,6 +243,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
         Hand over to the finite-mechanism motion when the bars left form a mechanism.
     max_cuts : int
         Halvings of a step that fails to converge before the path ends.
+    branch_step : float
+        First step on a secondary branch, as a fraction of the structure's size.
 
     Returns
     -------
@@ -309,7 +312,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
 
     record(uf, lam, res, fac.negative)
     ds = float(step)
-    ds_max = abs(ds) * (1.0 if control == "load" else 8.0)
+    size = float(np.ptp(m.X, axis=0).max())
+    ds_max = abs(ds) if control == "load" else max(8.0 * abs(ds), 0.05 * size)
     du_prev = None
     branch_dir = None
     neg = fac.negative
@@ -349,17 +353,28 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
             neg1 = fac1.negative
         except SingularTangent:
             fac1, neg1 = None, -1
-        if locate_critical and fac1 is not None and neg1 != neg and not hit.any():
-            _critical_point(st, m, out, uf, lam, fac, dss, branch_dir, du_prev, mode, neg,
-                            neg1, lam1, record, branch)
+        if (locate_critical and fac1 is not None and neg1 != neg and not hit.any()
+                and mode != "branch"):
+            crit = _critical_point(st, m, out, uf, lam, fac, dss, branch_dir, du_prev, mode,
+                                   neg, neg1, record, branch)
+        else:
+            crit = None
+        branch_dir = None
         m.commit(res1)
+        if crit is not None:
+            # branch: restart from the bifurcation point along the critical eigenvector
+            u2, lam2, res2, phi = crit
+            du_prev = None
+            uf, lam, res = u2, lam2, res2
+            fac1 = factorize(st.eval(uf)[2])
+            neg1 = fac1.negative
+            branch_dir = phi if phi @ st.f >= 0 else -phi
+            ds = max(dss, branch_step * size)
+            fac, neg = fac1, neg1
+            k += 1
+            continue
         du_prev = uf1 - uf
         uf, lam, res = uf1, lam1, res1
-        branch_dir = None
-        if out.events and out.events[-1].kind == "bifurcation" and branch \
-                and getattr(out.events[-1], "_phi", None) is not None:
-            branch_dir = out.events[-1]._phi
-            out.events[-1]._phi = None
         point = record(uf, lam, res, neg1)
         k += 1
         # ---- apply the failure events at this state
@@ -440,7 +455,7 @@ def _locate_failure(st, m, uf, lam, fac, dss, direction, du_prev, mode, mg0, uf1
 
 
 def _critical_point(st, m, out, uf, lam, fac, dss, direction, du_prev, mode, neg0, neg1,
-                    lam1, record, branch):
+                    record, branch):
     """Bisect the step for the inertia change, record a limit point or a bifurcation."""
     lo, hi = 0.0, 1.0
     state_hi = None
@@ -464,7 +479,7 @@ def _critical_point(st, m, out, uf, lam, fac, dss, direction, du_prev, mode, neg
         new = st.step(uf, lam, fac, dss * hi, direction, du_prev, mode)
         state_hi = new
     if state_hi is None:
-        return
+        return None
     u2, l2, r2, _ = state_hi
     K = st.eval(u2)[2]
     w, phi = critical_mode(K)
@@ -473,10 +488,11 @@ def _critical_point(st, m, out, uf, lam, fac, dss, direction, du_prev, mode, neg
     p = record(u2, l2, r2, neg1)
     ev = Event(kind, l2, point=p,
                detail=f"negative eigenvalues {neg0} -> {neg1}; |phi.f|/|f| = {ratio:.2e}")
-    if kind == "bifurcation" and branch:
-        ev._phi = phi
-        ev.detail += "; branch taken along the critical eigenvector"
     out.events.append(ev)
+    if kind == "bifurcation" and branch:
+        ev.detail += "; branch taken along the critical eigenvector"
+        return u2, l2, r2, phi
+    return None
 
 
 def _apply_failures(st, m, out, hit, mg, res, lam, point):
