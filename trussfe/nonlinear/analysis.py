@@ -14,6 +14,7 @@ options override them)::
     subdivisions = 8
     imperfection = 0.001          # m, amplitude of the first linear buckling mode
     branch = false                # follow the secondary branch at a bifurcation
+    max_displacement = 0.5        # m, stop when the monitored displacement exceeds it
 """
 from __future__ import annotations
 
@@ -33,7 +34,7 @@ from .path import CONTROLS, PathResult, follow_path
 
 SETTINGS = {"control": str, "steps": int, "step": float, "max_load_factor": float,
             "monitor": str, "bar_model": str, "subdivisions": int, "imperfection": float,
-            "branch": bool}
+            "branch": bool, "max_displacement": float}
 AXES = "xyz"
 
 
@@ -51,7 +52,7 @@ def parse_settings(raw: Any, structure: Structure | None = None, base_dir=None) 
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
                 raise InputError(item, f"expected a finite number, got {v!r}")
             v = float(v)
-            if k in ("step", "max_load_factor") and v <= 0:
+            if k in ("step", "max_load_factor", "max_displacement") and v <= 0:
                 raise InputError(item, f"must be positive, got {v}")
             if k == "imperfection" and v < 0:
                 raise InputError(item, f"must not be negative, got {v}")

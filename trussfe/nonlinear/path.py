@@ -39,6 +39,8 @@ log = logging.getLogger(__name__)
 
 CONTROLS = ("load", "displacement", "arc-length")
 _CAUSE = ("buckling", "yield", "fracture")
+#: Newton iterations per step that the step-size control aims at.
+_TARGET_ITERATIONS = 6.0
 
 
 @dataclass
@@ -210,7 +212,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                 tolerance: float = 1e-9, max_iterations: int = 30,
                 event_tolerance: float = 1e-6, locate_critical: bool = True,
                 handover: bool = True, max_cuts: int = 12,
-                branch_step: float = 0.01) -> PathResult:
+                branch_step: float = 0.01,
+                max_displacement: float | None = None) -> PathResult:
     """Follow the equilibrium path of a structure under ``λ f``.
 
     Parameters
@@ -245,6 +248,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
         Halvings of a step that fails to converge before the path ends.
     branch_step : float
         First step on a secondary branch, as a fraction of the structure's size.
+    max_displacement : float, optional
+        Stop when the monitored displacement exceeds this magnitude, m.
 
     Returns
     -------
@@ -313,7 +318,7 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
     record(uf, lam, res, fac.negative)
     ds = float(step)
     size = float(np.ptp(m.X, axis=0).max())
-    ds_max = abs(ds) if control == "load" else max(8.0 * abs(ds), 0.05 * size)
+    ds_max = abs(ds) if control == "load" else 8.0 * abs(ds)
     du_prev = None
     branch_dir = None
     neg = fac.negative
@@ -321,6 +326,9 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
     while k < steps:
         if max_load_factor is not None and lam >= max_load_factor * (1 - 1e-12):
             out.termination = f"reached the maximum load factor {max_load_factor:g}"
+            break
+        if max_displacement is not None and abs(uf[st.c]) >= max_displacement:
+            out.termination = f"reached the maximum displacement {max_displacement:g} m"
             break
         dss = ds
         if control == "load" and max_load_factor is not None:
@@ -370,6 +378,7 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
             neg1 = fac1.negative
             branch_dir = phi if phi @ st.f >= 0 else -phi
             ds = max(dss, branch_step * size)
+            ds_max = max(ds_max, 8.0 * ds)
             fac, neg = fac1, neg1
             k += 1
             continue
@@ -393,7 +402,7 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
             break
         fac = fac1
         neg = neg1
-        ds = float(np.clip(dss * np.sqrt(5.0 / max(its, 1)), 0.25 * dss, 2.0 * dss))
+        ds = float(np.clip(dss * np.sqrt(_TARGET_ITERATIONS / max(its, 1)), 0.25 * dss, 2.0 * dss))
         ds = min(ds, ds_max) if control != "displacement" else dss
     else:
         out.termination = f"completed {steps} steps"
