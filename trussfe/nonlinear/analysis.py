@@ -24,7 +24,7 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import InputError
+from ..errors import AnalysisError, InputError
 from ..io.model_file import read_model, register_table
 from ..model.structure import Structure
 from .buckling import apply_imperfection, linear_buckling
@@ -99,7 +99,12 @@ def run_postcritical(structure: Structure, **options) -> PathResult:
     are ignored.  Extra keywords go to :func:`~trussfe.nonlinear.path.follow_path`.
     """
     opts = dict(structure.extensions.get("postcritical", {}))
-    opts.update({k: v for k, v in options.items() if v is not None})
+    given = {k: v for k, v in options.items() if v is not None}
+    if "control" in given and given["control"] != opts.get("control", "arc-length") \
+            and "step" not in given:
+        # the file's first increment belongs to its own control (Δλ, Δu and Δs differ)
+        opts.pop("step", None)
+    opts.update(given)
     laws = structure.extensions.get("failure") or FailureLaws.none(structure.n_members)
     model = NonlinearModel(structure, bar_model=opts.pop("bar_model", "truss"),
                            subdivisions=opts.pop("subdivisions", 8), laws=laws)
@@ -111,7 +116,10 @@ def run_postcritical(structure: Structure, **options) -> PathResult:
     if monitor is not None:
         node, axis = parse_monitor(monitor, structure) if isinstance(monitor, str) else monitor
         monitor = model.dof(node, axis)
-    return follow_path(model, monitor=monitor, **opts)
+    result = follow_path(model, monitor=monitor, **opts)
+    if len(result.path) < 2 and result.termination.startswith("path cannot"):
+        raise AnalysisError(structure.source or structure.name, result.termination)
+    return result
 
 
 def result_document(result: PathResult) -> dict:

@@ -39,6 +39,8 @@ log = logging.getLogger(__name__)
 
 CONTROLS = ("load", "displacement", "arc-length")
 _CAUSE = ("buckling", "yield", "fracture")
+#: |φᵀf|/(|φ||f|) below which a critical point is a bifurcation (φ orthogonal to the load).
+_BIFURCATION_RATIO = 1e-3
 #: Newton iterations per step that the step-size control aims at.
 _TARGET_ITERATIONS = 6.0
 
@@ -118,6 +120,9 @@ class _Stepper:
         self.tol = tol
         self.max_iter = max_iter
         self.lam_unit = 1.0
+        self.size = float(np.ptp(model.X, axis=0).max())
+        #: displacement control moves the monitored DOF the way the load first pushes it
+        self.dsign = 1.0
 
     def full(self, uf):
         u = np.zeros(self.m.ndof)
@@ -143,7 +148,7 @@ class _Stepper:
         elif mode == "displacement":
             if abs(ut[self.c]) < 1e-300:
                 return None
-            dlam = ds / ut[self.c]
+            dlam = ds * self.dsign / ut[self.c]
             du = dlam * ut
         elif mode == "branch":
             du = ds * direction
@@ -188,8 +193,12 @@ class _Stepper:
                     return None
                 roots = ((-b + np.sqrt(disc)) / (2 * a), (-b - np.sqrt(disc)) / (2 * a))
                 dl = max(roots, key=lambda r: (w + r * dt) @ du)
-            du = du + dr + dl * dt
+            corr = dr + dl * dt
+            du = du + corr
             dlam += dl
+            # round-off floor of the residual: accept when the correction is negligible
+            if np.linalg.norm(corr) <= 1e-13 * (np.linalg.norm(uf0 + du) + self.size):
+                return uf0 + du, lam0 + dlam, self.m.evaluate(self.full(uf0 + du)), it
         return None
 
 
@@ -299,12 +308,17 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                              "needs a stiff start — see 'trussfe mechanism'",
                              mechanisms=nm) from None
     ut = fac.solve(f)
+    if control == "displacement":
+        if abs(ut[st.c]) <= 1e-12 * np.abs(ut).max():
+            raise InputError("monitor", "the reference load does not move the monitored "
+                                        "displacement: choose another for displacement control")
+        st.dsign = float(np.sign(ut[st.c]))
     lam_ref = max_load_factor if max_load_factor is not None else 1.0
     if step is None:
         if control == "load":
             step = lam_ref / steps
         elif control == "displacement":
-            step = lam_ref * ut[st.c] / 10.0
+            step = lam_ref * abs(ut[st.c]) / 10.0
         else:
             step = lam_ref * np.linalg.norm(ut) / 10.0
     st.lam_unit = abs(step / ut[st.c]) if control == "displacement" else (
@@ -340,7 +354,7 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
             if new is not None:
                 break
             dss *= 0.5
-        if new is None:
+        if new is None or (control == "load" and dss < 1e-4 * abs(step)):
             out.termination = _cannot_continue(control, lam, neg)
             out.events.append(Event("end", lam, detail=out.termination))
             break
@@ -361,8 +375,20 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
             neg1 = fac1.negative
         except SingularTangent:
             fac1, neg1 = None, -1
+        if control == "load" and fac1 is not None and neg1 > neg and not hit.any():
+            # load control cannot pass a critical point: a limit point ends the path; on a
+            # bifurcation the (now unstable) fundamental path is followed
+            kind, detail, _ = _classify(st, uf1, neg, neg1)
+            out.events.append(Event(kind, lam1, point=len(out.path), detail=detail
+                                    + "; located within the last load step"))
+            if kind == "limit_point":
+                m.commit(res1)
+                record(uf1, lam1, res1, neg1)
+                out.termination = _cannot_continue(control, lam1, neg1)
+                out.events.append(Event("end", lam1, detail=out.termination))
+                break
         if (locate_critical and fac1 is not None and neg1 != neg and not hit.any()
-                and mode != "branch"):
+                and mode != "branch" and control != "load"):
             crit = _critical_point(st, m, out, uf, lam, fac, dss, branch_dir, du_prev, mode,
                                    neg, neg1, record, branch)
         else:
@@ -490,18 +516,23 @@ def _critical_point(st, m, out, uf, lam, fac, dss, direction, du_prev, mode, neg
     if state_hi is None:
         return None
     u2, l2, r2, _ = state_hi
-    K = st.eval(u2)[2]
-    w, phi = critical_mode(K)
-    ratio = abs(phi @ st.f) / (np.linalg.norm(st.f) * np.linalg.norm(phi))
-    kind = "limit_point" if ratio > 1e-3 else "bifurcation"
+    kind, detail, phi = _classify(st, u2, neg0, neg1)
     p = record(u2, l2, r2, neg1)
-    ev = Event(kind, l2, point=p,
-               detail=f"negative eigenvalues {neg0} -> {neg1}; |phi.f|/|f| = {ratio:.2e}")
+    ev = Event(kind, l2, point=p, detail=detail)
     out.events.append(ev)
     if kind == "bifurcation" and branch:
         ev.detail += "; branch taken along the critical eigenvector"
         return u2, l2, r2, phi
     return None
+
+
+def _classify(st, uf, neg0, neg1):
+    """Limit point (the critical mode does work on the load) or bifurcation (it does not)."""
+    w, phi = critical_mode(st.eval(uf)[2])
+    ratio = abs(phi @ st.f) / (np.linalg.norm(st.f) * np.linalg.norm(phi))
+    kind = "limit_point" if ratio > _BIFURCATION_RATIO else "bifurcation"
+    return kind, (f"negative eigenvalues {neg0} -> {neg1}; |phi.f|/(|phi||f|) = "
+                  f"{ratio:.2e}"), phi
 
 
 def _apply_failures(st, m, out, hit, mg, res, lam, point):
@@ -556,12 +587,7 @@ def _reequilibrate(st, m, out, uf, lam, handover, record):
                                               f"{lam:.6g}; " + out.mechanism.reason)
                 return None, None, None, (f"the structure became a mechanism at load factor "
                                           f"{lam:.6g}")
-        try:
-            fac0 = factorize(st.eval(uf)[2])
-        except SingularTangent:
-            return None, None, None, (f"path cannot be continued at load factor {lam:.6g}: "
-                                      "the tangent is singular after the failure")
-        new = st.step(uf, lam, fac0, 0.0, None, None, "load")
+        new = _release(st, uf, lam)
         if new is None:
             reason = (f"path cannot be continued at load factor {lam:.6g}: no equilibrium "
                       "after the failure of member "
@@ -569,10 +595,10 @@ def _reequilibrate(st, m, out, uf, lam, handover, record):
                       " (the structure collapses dynamically)")
             out.events.append(Event("end", lam, detail=reason))
             return None, None, None, reason
-        uf, _, res, _ = new
+        uf, res, interrupted = new
         m.commit(res)
         mg = m.margins(res)
-        over = mg > st.tol * 0 + 1e-9
+        over = mg >= (-1e-6 if interrupted else 1e-9)
         if not over.any():
             fac = factorize(st.eval(uf)[2])
             record(uf, lam, res, fac.negative)
@@ -585,6 +611,79 @@ def _reequilibrate(st, m, out, uf, lam, handover, record):
         _apply_failures(st, m, out, hit, mg, res, lam, point)
         out.events[-1].detail += " (redistribution at the same load factor)"
     return None, None, None, "too many cascading failures"
+
+
+def _release(st, uf0, lam, event_tolerance=1e-6, min_increment=1.0 / 4096):
+    """Quasi-static release of the forces of removed members at constant λ.
+
+    Just after a removal the structure is out of balance by ``r0 = f_int(u0) − λf`` (minus
+    the removed members' forces).  The equilibrium of the reduced structure is followed from
+    ``f_int(u) − λf = τ r0`` at τ = 1 (satisfied by ``u0``) to τ = 0 in load-controlled
+    increments, so that the state found is the one the structure reaches by a slow release —
+    not an arbitrary remote equilibrium that Newton from ``u0`` might jump to.  When another
+    member reaches its failure limit during the release, the release stops there (located by
+    bisection in τ to ``event_tolerance``) so that the member fails at its limit.
+
+    Returns
+    -------
+    tuple or None
+        ``(uf, res, interrupted)``, or ``None`` when no equilibrium exists for some τ (the
+        structure snaps through: a dynamic collapse).
+    """
+    m = st.m
+    res, fint, _ = st.eval(uf0, tangent=False)
+    r0 = fint - lam * st.f
+    scale = st.fn * max(abs(lam), st.lam_unit)
+    if np.linalg.norm(r0) <= st.tol * scale:
+        return uf0, m.evaluate(st.full(uf0)), False
+    mg_start = m.margins(res)
+
+    def solve(u, target):
+        for _ in range(st.max_iter):
+            r, fi, K = st.eval(u)
+            R = fi - lam * st.f - target * r0
+            if np.linalg.norm(R) <= st.tol * scale:
+                return u, r
+            try:
+                u = u - factorize(K).solve(R)
+            except SingularTangent:
+                return None
+            if not np.all(np.isfinite(u)):
+                return None
+        return None
+
+    tau, dtau, uf = 1.0, 0.25, uf0
+    while tau > 0.0:
+        target = max(tau - dtau, 0.0)
+        new = solve(uf.copy(), target)
+        if new is None:
+            dtau *= 0.5
+            if dtau < min_increment:
+                return None
+            continue
+        u, r = new
+        mg = m.margins(r)
+        crossed = (mg > event_tolerance) & (mg_start <= event_tolerance)
+        if crossed.any():
+            lo, hi, u_lo = tau, target, uf          # τ decreases from lo to hi
+            for _ in range(60):
+                mid = 0.5 * (lo + hi)
+                new = solve(u_lo.copy(), mid)
+                if new is None:
+                    break
+                um, rm = new
+                mgm = m.margins(rm)
+                cm = (mgm > event_tolerance) & (mg_start <= event_tolerance)
+                if cm.any():
+                    hi, u, r = mid, um, rm
+                else:
+                    lo, u_lo = mid, um
+                    if np.any((mgm >= -event_tolerance) & (mg_start < -event_tolerance)):
+                        return um, rm, True
+            return u, r, True
+        uf, tau, res = u, target, r
+        dtau = min(2.0 * dtau, 0.25)
+    return uf, res, False
 
 
 def _handover(st, m, out, x, conn, lam):
