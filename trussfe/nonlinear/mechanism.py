@@ -29,6 +29,10 @@ log = logging.getLogger(__name__)
 
 #: Relative tolerance on singular values of B (scaled by the largest) for the rank.
 RANK_TOLERANCE = 1e-9
+#: Free coordinates up to which the rank comes from a dense SVD (exact); above, from pivots.
+DENSE_RANK_LIMIT = 600
+#: Relative pivot size of ``BᵀB`` below which the sparse rank counts a pivot as zero.
+PIVOT_TOLERANCE = 1e-9
 
 
 def mechanism_count(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarray,
@@ -66,7 +70,7 @@ def mechanism_count(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
     if len(connectivity) == 0:
         return nf, 0
     B = compatibility_matrix(coords, connectivity, free)
-    if nf <= 4000:
+    if nf <= DENSE_RANK_LIMIT:
         sv = sla.svdvals(B.toarray())
         rank = int(np.sum(sv > tolerance * sv.max())) if sv.size else 0
     else:
@@ -75,20 +79,24 @@ def mechanism_count(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
 
 
 def _sparse_rank(B, tolerance: float) -> int:
-    """Rank of a large sparse B from the pivots of ``BᵀB`` (no pivoting across rows).
+    """Rank of a large sparse B from the LDLᵀ pivots of the Gram matrix ``BᵀB``.
 
-    Used above 4000 free coordinates, where a dense SVD is too slow; the pivots of the
-    Gram matrix are compared with ``tolerance²`` times the largest.
+    Used above :data:`DENSE_RANK_LIMIT` free coordinates, where a dense SVD is too slow.  A
+    mechanism makes a pivot vanish to round-off.  ``BᵀB`` is shifted by ``1e-12`` of its
+    largest diagonal entry (so that SuperLU does not stop at an exact zero pivot) and pivots
+    below :data:`PIVOT_TOLERANCE` of the largest count as zero — singular values of B below
+    about 3e-5 of the largest (BᵀB squares them).  This is coarser than the SVD's 1e-9 and is
+    checked against it in the tests.
     """
     from scipy.sparse.linalg import splu
     G = (B.T @ B).tocsc()
     nf = G.shape[0]
-    shift = tolerance ** 2 * abs(G.diagonal()).max() * 1e-3
-    lu = splu(G + shift * sp.eye(nf, format="csc"),
-              permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
-              options=dict(SymmetricMode=True))
+    # a tiny shift keeps SuperLU from stopping at an exactly zero pivot
+    shift = 1e-12 * abs(G.diagonal()).max()
+    lu = splu((G + shift * sp.eye(nf, format="csc")).tocsc(), permc_spec="COLAMD",
+              diag_pivot_thresh=0.0, options=dict(SymmetricMode=True))
     d = np.abs(lu.U.diagonal())
-    return int(np.sum(d > tolerance ** 2 * d.max()))
+    return int(np.sum(d > PIVOT_TOLERANCE * d.max()))
 
 
 @dataclass

@@ -123,6 +123,8 @@ class _Stepper:
         self.size = float(np.ptp(model.X, axis=0).max())
         #: displacement control moves the monitored DOF the way the load first pushes it
         self.dsign = 1.0
+        #: free DOFs up to which every Newton iteration refactorises the tangent
+        self.full_newton_size = 2000
 
     def full(self, uf):
         u = np.zeros(self.m.ndof)
@@ -163,20 +165,30 @@ class _Stepper:
             dlam = sign * ds / np.linalg.norm(ut)
             du = dlam * ut
         ds_arc = np.linalg.norm(du)
+        # full Newton on small systems; on large ones modified Newton: the tangent is
+        # refactorised only when the residual stops falling fast (ratio > 0.25)
+        modified = len(uf0) > self.full_newton_size
+        fac, dt_fac, rprev = fac0, ut, np.inf
         for it in range(1, self.max_iter + 1):
             uf = uf0 + du
             lam = lam0 + dlam
-            res, fint, K = self.eval(uf)
+            res, fint, K = self.eval(uf, tangent=not modified)
             R = fint - lam * f
             scale = self.fn * max(abs(lam), self.lam_unit)
             if not np.all(np.isfinite(R)):
                 return None
-            if np.linalg.norm(R) <= self.tol * scale:
+            rn = np.linalg.norm(R)
+            if rn <= self.tol * scale:
                 return uf, lam, res, it
             try:
-                fac = factorize(K)
+                if not modified or rn > 0.25 * rprev:
+                    if K is None:
+                        K = self.eval(uf)[2]
+                    fac = factorize(K)
+                    dt_fac = fac.solve(f)
+                rprev = rn
                 dr = -fac.solve(R)
-                dt = fac.solve(f)
+                dt = dt_fac
             except SingularTangent:
                 return None
             if mode == "load":
@@ -222,7 +234,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                 event_tolerance: float = 1e-6, locate_critical: bool = True,
                 handover: bool = True, max_cuts: int = 12,
                 branch_step: float = 0.01,
-                max_displacement: float | None = None) -> PathResult:
+                max_displacement: float | None = None,
+                max_failures: int | None = None) -> PathResult:
     """Follow the equilibrium path of a structure under ``λ f``.
 
     Parameters
@@ -259,6 +272,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
         First step on a secondary branch, as a fraction of the structure's size.
     max_displacement : float, optional
         Stop when the monitored displacement exceeds this magnitude, m.
+    max_failures : int, optional
+        Stop after this many member failure events.
 
     Returns
     -------
@@ -341,6 +356,10 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
         if max_load_factor is not None and lam >= max_load_factor * (1 - 1e-12):
             out.termination = f"reached the maximum load factor {max_load_factor:g}"
             break
+        if max_failures is not None and sum(e.kind in _CAUSE for e in out.events) \
+                >= max_failures:
+            out.termination = f"reached {max_failures} member failure events"
+            break
         if max_displacement is not None and abs(uf[st.c]) >= max_displacement:
             out.termination = f"reached the maximum displacement {max_displacement:g} m"
             break
@@ -413,8 +432,7 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
         point = record(uf, lam, res, neg1)
         k += 1
         # ---- apply the failure events at this state
-        if hit.any():
-            _apply_failures(st, m, out, hit, mg1, res, lam, point)
+        if hit.any() and _apply_failures(st, m, out, hit, mg1, res, lam, point):
             uf_new, res_new, fac_new, reason = _reequilibrate(st, m, out, uf, lam, handover,
                                                               record)
             if reason:
@@ -456,36 +474,51 @@ def _cannot_continue(control: str, lam: float, neg: int) -> str:
 
 def _locate_failure(st, m, uf, lam, fac, dss, direction, du_prev, mode, mg0, uf1, lam1, res1,
                     tol):
-    """Cut the step so that the first member to fail sits on its threshold."""
-    lo, hi = 0.0, 1.0
-    mlo = mg0
+    """Cut the step so that the first member to fail sits on its threshold.
+
+    Root of ``g(θ) = max margin`` over the members that crossed within the step, θ the
+    fraction of the step: secant steps through the last two iterates, kept inside the
+    bracket (else an Illinois regula-falsi step); the state returned has ``|g| ≤ tol``.
+    """
+    mg1 = m.margins(res1)
+    cand = (mg1 > tol) & (mg0 <= tol)
+    g = lambda mg: float(np.max(mg[cand]))
+    a, ga = 0.0, g(mg0)
+    b, gb = 1.0, g(mg1)
     best = (uf1, lam1, res1)
-    mhi = m.margins(res1)
+    side = 0
+    hist = [(a, ga), (b, gb)]
     for _ in range(60):
-        crossed = (mhi > tol) & (mlo <= tol)
-        if not crossed.any():
-            break
-        # secant estimate of each crossing, earliest wins; guarded to the bracket
-        with np.errstate(divide="ignore", invalid="ignore"):
-            th = lo + (hi - lo) * (-mlo[crossed]) / (mhi[crossed] - mlo[crossed])
-        theta = float(np.nanmin(th)) if th.size else 0.5 * (lo + hi)
-        theta = min(max(theta, lo + 0.02 * (hi - lo)), hi - 0.02 * (hi - lo))
-        new = st.step(uf, lam, fac, dss * theta, direction, du_prev, mode)
+        (c0, g0), (c1, g1) = hist[-2], hist[-1]
+        c = c1 - g1 * (c1 - c0) / (g1 - g0) if g1 != g0 else 0.5 * (a + b)
+        if not a < c < b or len(hist) == 2:
+            c = b - gb * (b - a) / (gb - ga) if gb != ga else 0.5 * (a + b)
+        if not a < c < b:
+            c = 0.5 * (a + b)
+        new = st.step(uf, lam, fac, dss * c, direction, du_prev, mode)
         if new is None:
-            theta = 0.5 * (lo + hi)
-            new = st.step(uf, lam, fac, dss * theta, direction, du_prev, mode)
+            c = 0.5 * (a + b)
+            new = st.step(uf, lam, fac, dss * c, direction, du_prev, mode)
             if new is None:
                 break
         u2, l2, r2, _ = new
-        mg = m.margins(r2)
-        over = (mg > tol) & (mlo <= tol)
-        if over.any():
-            hi, mhi, best = theta, mg, (u2, l2, r2)
+        gc = g(m.margins(r2))
+        hist.append((c, gc))
+        log.debug("locate: theta %.12g margin %.3e", c, gc)
+        if abs(gc) <= tol:
+            return u2, l2, r2
+        if gc > 0:
+            b, gb, best = c, gc, (u2, l2, r2)
+            if side == 1:
+                ga *= 0.5
+            side = 1
         else:
-            lo, mlo = theta, mg
-            best = (u2, l2, r2)
-            if np.any((mg >= -tol) & (mg0 < -tol)):
-                return best
+            a, ga = c, gc
+            if side == -1:
+                gb *= 0.5
+            side = -1
+        if b - a < 1e-14:
+            break
     return best
 
 

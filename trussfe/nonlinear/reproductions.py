@@ -248,3 +248,56 @@ def linear_buckling_agreement(subdivisions: int = 16) -> dict:
     except Exception:  # not installed yet: the comparison is skipped, not faked
         pass
     return out
+
+
+# ------------------------------------------------------------------------- large lattice
+def double_layer_grid(n: int, spacing: float = 1.0, depth: float = 0.7,
+                      load: float = -1000.0, spread: float = 0.1, seed: int = 0,
+                      law: str = "cap"):
+    """Square-on-square double-layer grid with buckling laws on its chords.
+
+    ``n × n`` top nodes (pinned along the perimeter, each loaded by ``load`` N vertically),
+    ``(n−1)²`` bottom nodes offset by half a bay, top and bottom chords and four diagonals
+    per bottom node: ``2n(n−1) + 2(n−1)(n−2) + 4(n−1)²`` bars (9800 for n = 36).  Every bar
+    has a buckling law (``law``) with its Euler load scaled by a random factor in
+    ``1 ± spread`` (seeded), so that members fail one at a time.
+
+    Returns
+    -------
+    structure : Structure
+    laws : FailureLaws
+    """
+    from ..model.sections import Material, Section
+    from ..model.structure import build_structure
+    from .failure import BUCKLING, FailureLaws
+    i, j = np.meshgrid(np.arange(n), np.arange(n), indexing="ij")
+    top = np.stack([i.ravel() * spacing, j.ravel() * spacing, np.zeros(n * n)], axis=1)
+    k, l = np.meshgrid(np.arange(n - 1), np.arange(n - 1), indexing="ij")
+    bot = np.stack([(k.ravel() + 0.5) * spacing, (l.ravel() + 0.5) * spacing,
+                    np.full((n - 1) ** 2, -depth)], axis=1)
+    T = (i * n + j)                                        # top node numbers (n, n)
+    Bn = n * n + (k * (n - 1) + l)                         # bottom node numbers (n-1, n-1)
+    bars = [np.stack([T[:-1, :].ravel(), T[1:, :].ravel()], 1),
+            np.stack([T[:, :-1].ravel(), T[:, 1:].ravel()], 1),
+            np.stack([Bn[:-1, :].ravel(), Bn[1:, :].ravel()], 1),
+            np.stack([Bn[:, :-1].ravel(), Bn[:, 1:].ravel()], 1)]
+    for di in (0, 1):
+        for dj in (0, 1):
+            bars.append(np.stack([Bn.ravel(), T[di:n - 1 + di, dj:n - 1 + dj].ravel()], 1))
+    conn = np.concatenate(bars)
+    edge = (i == 0) | (j == 0) | (i == n - 1) | (j == n - 1)
+    s = build_structure(np.vstack([top, bot]), conn,
+                        section=Section.tube("tube", 0.04, 0.036),
+                        material=Material(name="steel", E=2.1e11, G=8.1e10, density=7850.0,
+                                          yield_strength=3.55e8),
+                        name=f"double-layer grid {n}x{n}")
+    s.supports[np.flatnonzero(edge.ravel()), :3] = True
+    s.loads[np.flatnonzero(~edge.ravel()), 2] = load
+    m = s.n_members
+    rng = np.random.default_rng(seed)
+    laws = FailureLaws.none(m)
+    laws.buckling[:] = BUCKLING.index(law)
+    L = s.lengths()
+    laws.critical_load[:] = (math.pi ** 2 * s.E * s.Iy / L ** 2
+                             * (1.0 + spread * (2 * rng.random(m) - 1)))
+    return s, laws
