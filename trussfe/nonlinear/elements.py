@@ -50,7 +50,7 @@ def truss_kinematics(x: np.ndarray, conn: np.ndarray, L0: np.ndarray):
 
 
 def truss_matrices(e: np.ndarray, l: np.ndarray, L0: np.ndarray, N: np.ndarray,
-                   dNde: np.ndarray):
+                   dNde: np.ndarray, tangent: bool = True):
     """Internal force vectors and tangent matrices of co-rotational bars.
 
     Parameters
@@ -67,7 +67,7 @@ def truss_matrices(e: np.ndarray, l: np.ndarray, L0: np.ndarray, N: np.ndarray,
     -------
     f : ndarray, shape (element, 2*dim)
         ``N [-e, e]`` — the equilibrium matrix row of the bar times its force.
-    k : ndarray, shape (element, 2*dim, 2*dim)
+    k : ndarray, shape (element, 2*dim, 2*dim), or None when ``tangent`` is False
 
     Notes
     -----
@@ -81,6 +81,8 @@ def truss_matrices(e: np.ndarray, l: np.ndarray, L0: np.ndarray, N: np.ndarray,
     """
     dim = e.shape[1]
     f = np.concatenate([-N[:, None] * e, N[:, None] * e], axis=1)    # (element, 2*dim)
+    if not tangent:
+        return f, None
     eet = e[:, :, None] * e[:, None, :]                               # (element, dim, dim)
     k0 = ((dNde / L0)[:, None, None] * eet
           + (N / l)[:, None, None] * (np.eye(dim)[None] - eet))       # (element, dim, dim)

@@ -30,7 +30,7 @@ log = logging.getLogger(__name__)
 #: Relative tolerance on singular values of B (scaled by the largest) for the rank.
 RANK_TOLERANCE = 1e-9
 #: Free coordinates up to which the rank comes from a dense SVD (exact); above, from pivots.
-DENSE_RANK_LIMIT = 600
+DENSE_RANK_LIMIT = 200
 #: Relative pivot size of ``BᵀB`` below which the sparse rank counts a pivot as zero.
 PIVOT_TOLERANCE = 1e-9
 

@@ -233,7 +233,8 @@ class NonlinearModel:
                    t_length=l)
         idx = np.flatnonzero(live_t)
         if idx.size:
-            f, k = truss_matrices(e[idx], l[idx], self.t_len0[idx], N[idx], dNde[idx])
+            f, k = truss_matrices(e[idx], l[idx], self.t_len0[idx], N[idx], dNde[idx],
+                                  tangent)
             fs.append(f)
             ks.append(k)
             ds.append(self.t_dofs[idx])

@@ -166,9 +166,9 @@ class _Stepper:
             du = dlam * ut
         ds_arc = np.linalg.norm(du)
         # full Newton on small systems; on large ones modified Newton: the tangent is
-        # refactorised only when the residual stops falling fast (ratio > 0.25)
+        # refactorised only when the residual stops falling fast (ratio > 0.5)
         modified = len(uf0) > self.full_newton_size
-        fac, dt_fac, rprev = fac0, ut, np.inf
+        fac, dt_fac, rprev, fresh = fac0, ut, np.inf, None
         for it in range(1, self.max_iter + 1):
             uf = uf0 + du
             lam = lam0 + dlam
@@ -179,12 +179,13 @@ class _Stepper:
                 return None
             rn = np.linalg.norm(R)
             if rn <= self.tol * scale:
-                return uf, lam, res, it
+                return uf, lam, res, it, fresh
             try:
-                if not modified or rn > 0.25 * rprev:
+                if not modified or rn > 0.5 * rprev:
                     if K is None:
                         K = self.eval(uf)[2]
                     fac = factorize(K)
+                    fresh = fac
                     dt_fac = fac.solve(f)
                 rprev = rn
                 dr = -fac.solve(R)
@@ -210,7 +211,8 @@ class _Stepper:
             dlam += dl
             # round-off floor of the residual: accept when the correction is negligible
             if np.linalg.norm(corr) <= 1e-13 * (np.linalg.norm(uf0 + du) + self.size):
-                return uf0 + du, lam0 + dlam, self.m.evaluate(self.full(uf0 + du)), it
+                return (uf0 + du, lam0 + dlam, self.m.evaluate(self.full(uf0 + du)), it,
+                        fresh)
         return None
 
 
@@ -377,20 +379,21 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
             out.termination = _cannot_continue(control, lam, neg)
             out.events.append(Event("end", lam, detail=out.termination))
             break
-        uf1, lam1, res1, its = new
+        uf1, lam1, res1, its, fac_new = new
         # ---- member failure events inside the step: cut the step to the first one
         mg0 = m.margins(res)
         mg1 = m.margins(res1)
         crossed = (mg1 > event_tolerance) & (mg0 <= event_tolerance)
         if crossed.any():
             located = _locate_failure(st, m, uf, lam, fac, dss, branch_dir, du_prev, mode,
-                                      mg0, uf1, lam1, res1, event_tolerance)
-            uf1, lam1, res1 = located
+                                      mg0, uf1, lam1, res1, fac_new, event_tolerance)
+            uf1, lam1, res1, fac_new = located
         mg1 = m.margins(res1)
         hit = (mg1 >= -event_tolerance) & (mg0 < -event_tolerance)
-        # ---- accept the step
+        # ---- accept the step; the factor of the last Newton iteration (one tiny correction
+        # away from the converged state) serves the next predictor and the inertia count
         try:
-            fac1 = factorize(st.eval(uf1)[2])
+            fac1 = fac_new if fac_new is not None else factorize(st.eval(uf1)[2])
             neg1 = fac1.negative
         except SingularTangent:
             fac1, neg1 = None, -1
@@ -473,7 +476,7 @@ def _cannot_continue(control: str, lam: float, neg: int) -> str:
 
 
 def _locate_failure(st, m, uf, lam, fac, dss, direction, du_prev, mode, mg0, uf1, lam1, res1,
-                    tol):
+                    fac1, tol):
     """Cut the step so that the first member to fail sits on its threshold.
 
     Root of ``g(θ) = max margin`` over the members that crossed within the step, θ the
@@ -485,7 +488,7 @@ def _locate_failure(st, m, uf, lam, fac, dss, direction, du_prev, mode, mg0, uf1
     g = lambda mg: float(np.max(mg[cand]))
     a, ga = 0.0, g(mg0)
     b, gb = 1.0, g(mg1)
-    best = (uf1, lam1, res1)
+    best = (uf1, lam1, res1, fac1)
     side = 0
     hist = [(a, ga), (b, gb)]
     for _ in range(60):
@@ -501,14 +504,14 @@ def _locate_failure(st, m, uf, lam, fac, dss, direction, du_prev, mode, mg0, uf1
             new = st.step(uf, lam, fac, dss * c, direction, du_prev, mode)
             if new is None:
                 break
-        u2, l2, r2, _ = new
+        u2, l2, r2, _, f2 = new
         gc = g(m.margins(r2))
         hist.append((c, gc))
         log.debug("locate: theta %.12g margin %.3e", c, gc)
         if abs(gc) <= tol:
-            return u2, l2, r2
+            return u2, l2, r2, f2
         if gc > 0:
-            b, gb, best = c, gc, (u2, l2, r2)
+            b, gb, best = c, gc, (u2, l2, r2, f2)
             if side == 1:
                 ga *= 0.5
             side = 1
@@ -535,7 +538,7 @@ def _critical_point(st, m, out, uf, lam, fac, dss, direction, du_prev, mode, neg
         if new is None:
             break
         try:
-            fmid = factorize(st.eval(new[0])[2])
+            fmid = new[4] if new[4] is not None else factorize(st.eval(new[0])[2])
         except SingularTangent:
             state_hi = new
             break
@@ -548,7 +551,7 @@ def _critical_point(st, m, out, uf, lam, fac, dss, direction, du_prev, mode, neg
         state_hi = new
     if state_hi is None:
         return None
-    u2, l2, r2, _ = state_hi
+    u2, l2, r2 = state_hi[:3]
     kind, detail, phi = _classify(st, u2, neg0, neg1)
     p = record(u2, l2, r2, neg1)
     ev = Event(kind, l2, point=p, detail=detail)
