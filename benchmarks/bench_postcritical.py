@@ -13,10 +13,13 @@ from __future__ import annotations
 import argparse
 import time
 
+import numpy as np
+
 from trussfe._resources import mesh_path
 from trussfe.io.model_file import read_model
 from trussfe.nonlinear import NonlinearModel, follow_path
 from trussfe.nonlinear.reproductions import double_layer_grid
+from trussfe.nonlinear.solvers import factorize
 
 
 def von_mises(steps: int = 200):
@@ -34,8 +37,12 @@ def lattice(n: int = 36, events: int = 50, law: str = "cap"):
     t = time.perf_counter()
     m = NonlinearModel(s, laws=laws)
     centre = (n // 2) * n + n // 2
+    # first arc length: the linear displacement norm of one load factor unit
+    free = np.flatnonzero(m.free)
+    K = m.reference_tangent()[free][:, free]
+    ds = float(np.linalg.norm(factorize(K).solve(m.load[free])))
     r = follow_path(m, "arc-length", steps=100000, monitor=m.dof(centre, 2),
-                    max_failures=events, step=None, max_load_factor=None)
+                    max_failures=events, step=ds)
     dt = time.perf_counter() - t
     fails = [e for e in r.events if e.kind in ("buckling", "yield", "fracture")]
     worst = max((abs(e.force / e.threshold - 1) for e in fails), default=float("nan"))

@@ -349,7 +349,7 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
     record(uf, lam, res, fac.negative)
     ds = float(step)
     size = float(np.ptp(m.X, axis=0).max())
-    ds_max = abs(ds) if control == "load" else 8.0 * abs(ds)
+    ds_max = abs(ds) if control == "load" else 32.0 * abs(ds)
     du_prev = None
     branch_dir = None
     neg = fac.negative
