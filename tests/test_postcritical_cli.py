@@ -1,9 +1,7 @@
 """``trussfe postcritical`` command: outputs, contract JSON, VTK series, plot, bad input."""
 import json
-import math
 
 import meshio
-import numpy as np
 import pytest
 
 from trussfe._resources import mesh_path

@@ -1,7 +1,5 @@
 """Validation of the post-critical analysis against closed-form and independent solutions
 (trussfe.nonlinear.reproductions; the same numbers appear in ``trussfe validate``)."""
-import math
-
 import numpy as np
 import pytest
 from numpy.testing import assert_allclose

@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..errors import AnalysisError, InputError, MechanismError
+from ..errors import InputError, MechanismError
 from .mechanism import MechanismMotion, equilibrium_form, mechanism_count
 from .model import NonlinearModel
 from .solvers import SingularTangent, critical_mode, factorize
@@ -41,6 +41,9 @@ CONTROLS = ("load", "displacement", "arc-length")
 _CAUSE = ("buckling", "yield", "fracture")
 #: |φᵀf|/(|φ||f|) below which a critical point is a bifurcation (φ orthogonal to the load).
 _BIFURCATION_RATIO = 1e-3
+#: A load- or displacement-controlled step whose converged increment exceeds this multiple of
+#: the tangent predictor has jumped to a remote equilibrium: it is cut.
+_JUMP_FACTOR = 5.0
 #: Newton iterations per step that the step-size control aims at.
 _TARGET_ITERATIONS = 6.0
 
@@ -165,6 +168,11 @@ class _Stepper:
             dlam = sign * ds / np.linalg.norm(ut)
             du = dlam * ut
         ds_arc = np.linalg.norm(du)
+        # load and displacement control may converge to a remote equilibrium beyond a limit
+        # point (a dynamic snap); such a step is refused (and cut) rather than followed
+        jump = _JUMP_FACTOR * max(ds_arc, 1e-12 * self.size) if mode in ("load",
+                                                                         "displacement") \
+            else np.inf
         # full Newton on small systems; on large ones modified Newton: the tangent is
         # refactorised only when the residual stops falling fast (ratio > 0.5)
         modified = len(uf0) > self.full_newton_size
@@ -179,6 +187,8 @@ class _Stepper:
                 return None
             rn = np.linalg.norm(R)
             if rn <= self.tol * scale:
+                if np.linalg.norm(du) > jump:
+                    return None
                 return uf, lam, res, it, fresh
             try:
                 if not modified or rn > 0.5 * rprev:
@@ -211,6 +221,8 @@ class _Stepper:
             dlam += dl
             # round-off floor of the residual: accept when the correction is negligible
             if np.linalg.norm(corr) <= 1e-13 * (np.linalg.norm(uf0 + du) + self.size):
+                if np.linalg.norm(du) > jump:
+                    return None
                 return (uf0 + du, lam0 + dlam, self.m.evaluate(self.full(uf0 + du)), it,
                         fresh)
         return None
@@ -415,6 +427,11 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                                    neg, neg1, record, branch)
         else:
             crit = None
+            if fac1 is not None and neg1 != neg and hit.any() and control != "load":
+                # a failure event changed the inertia: the critical point is the event state
+                kind, detail, _ = _classify(st, uf1, neg, neg1)
+                out.events.append(Event(kind, lam1, point=len(out.path),
+                                        detail=detail + "; at a member failure event"))
         branch_dir = None
         m.commit(res1)
         if crit is not None:
@@ -449,7 +466,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
             break
         fac = fac1
         neg = neg1
-        ds = float(np.clip(dss * np.sqrt(_TARGET_ITERATIONS / max(its, 1)), 0.25 * dss, 2.0 * dss))
+        ds = float(np.clip(dss * np.sqrt(_TARGET_ITERATIONS / max(its, 1)),
+                           0.25 * dss, 2.0 * dss))
         ds = min(ds, ds_max) if control != "displacement" else dss
     else:
         out.termination = f"completed {steps} steps"
@@ -625,10 +643,11 @@ def _reequilibrate(st, m, out, uf, lam, handover, record):
                                           f"{lam:.6g}")
         new = _release(st, uf, lam)
         if new is None:
+            last = out.events[-1].member
+            who = s.member_ids[last] if last is not None else "?"
             reason = (f"path cannot be continued at load factor {lam:.6g}: no equilibrium "
-                      "after the failure of member "
-                      f"{s.member_ids[out.events[-1].member] if out.events[-1].member is not None else '?'}"
-                      " (the structure collapses dynamically)")
+                      f"after the failure of member {who} (the structure snaps: a dynamic "
+                      "collapse that a static analysis cannot follow)")
             out.events.append(Event("end", lam, detail=reason))
             return None, None, None, reason
         uf, res, interrupted = new
