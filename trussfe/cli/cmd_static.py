@@ -1,0 +1,110 @@
+# SPDX-License-Identifier: MIT
+"""``trussfe static MODEL [--bar-model truss|pinned-beam] [--subdivisions K] [--json OUT]
+[--vtk OUT.vtu]``: linear static finite-element analysis (CONTRACT.md §2–4)."""
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import InputError
+from ..fem.discretisation import BAR_MODELS
+from ..fem.static import StaticResult, solve_static, static_json
+from ..io.model_file import read_model
+from ..io.output import atomic_path, write_json
+
+
+def register(subparsers) -> None:
+    """Add the ``static`` command."""
+    p = subparsers.add_parser("static", help="linear static finite-element analysis",
+                              description="Linear static finite-element analysis: "
+                              "displacements, reactions, member forces and stresses.")
+    p.add_argument("model", help="model file (TOML)")
+    p.add_argument("--bar-model", choices=BAR_MODELS, default="truss",
+                   help="bars as axial-only truss elements (default) or as pinned beams")
+    p.add_argument("--subdivisions", type=int, default=None, metavar="K",
+                   help="elements per frame member (default 4)")
+    p.add_argument("--json", metavar="OUT", help="write the results as JSON")
+    p.add_argument("--vtk", metavar="OUT.vtu", help="write the deformed-shape fields as VTU")
+    p.set_defaults(func=_main)
+
+
+def run_static(model_path: str | Path, bar_model: str = "truss",
+               subdivisions: int | None = None) -> StaticResult:
+    """Read a model file and solve it (errors name the file)."""
+    if subdivisions is not None and subdivisions < 1:
+        raise InputError("--subdivisions", f"must be a positive integer, got {subdivisions}")
+    structure = read_model(model_path)
+    return solve_static(structure, bar_model=bar_model, subdivisions=subdivisions)
+
+
+def analyse(model_path: str | Path, bar_model: str = "truss", subdivisions: int | None = None,
+            **_ignored) -> dict:
+    """Static analysis of a model file; returns the CONTRACT.md §3 ``static`` document."""
+    return static_json(run_static(model_path, bar_model, subdivisions))
+
+
+def write_vtu(path: str | Path, result: StaticResult) -> None:
+    """Undeformed mesh with point data ``displacement`` (and ``rotation``, ``reaction``) and
+    cell data ``axial_force``, ``axial_stress``, ``strain``, ``von_mises``; written atomically.
+    """
+    try:
+        from ..io.vtk import write_vtu as _shared_write_vtu
+    except ImportError:
+        _shared_write_vtu = None
+    s = result.structure
+    dim = s.dim
+    disp = np.zeros((s.n_nodes, 3))
+    disp[:, :dim] = result.displacements[:, :dim]
+    reac = np.zeros((s.n_nodes, 3))
+    reac[:, :dim] = result.reactions[:, :dim]
+    point_data = {"displacement": disp, "reaction": reac}
+    cell_data = {"axial_force": result.axial_force, "axial_stress": result.axial_stress,
+                 "strain": result.strain, "von_mises": result.max_von_mises}
+    if _shared_write_vtu is not None:
+        _shared_write_vtu(path, s, point_data=point_data, cell_data=cell_data)
+        return
+    import meshio
+
+    pts = np.zeros((s.n_nodes, 3))
+    pts[:, :dim] = s.coords
+    mesh = meshio.Mesh(pts, [("line", s.connectivity)], point_data=point_data,
+                       cell_data={k: [np.asarray(v, float)] for k, v in cell_data.items()})
+    with atomic_path(path) as tmp:
+        meshio.write(tmp, mesh, file_format="vtu")
+
+
+def _table(result: StaticResult) -> str:
+    s = result.structure
+    dim = s.dim
+    axes = "xyz"[:dim]
+    lines = [f"trussfe static: {s.name} ({result.fe.bar_model} model, {result.fe.n_dof} DOFs, "
+             f"residual {result.residual:.1e})", "", "nodes"]
+    hdr = "  ".join(f"{'u' + a:>12}" for a in axes) + "  " + "  ".join(
+        f"{'R' + a:>12}" for a in axes)
+    lines.append(f"{'id':>8}  {hdr}")
+    sup = s.supports[:, :dim].any(axis=1)
+    for i, nid in enumerate(s.node_ids):
+        u = "  ".join(f"{x:12.4e}" for x in result.displacements[i, :dim])
+        r = "  ".join(f"{x:12.4f}" for x in result.reactions[i, :dim]) if sup[i] else ""
+        lines.append(f"{nid:>8}  {u}  {r}".rstrip())
+    lines += ["", "members", f"{'id':>8}  {'N [N]':>12}  {'sigma [Pa]':>12}  "
+              f"{'max vM [Pa]':>12}"]
+    for i, mid in enumerate(s.member_ids):
+        lines.append(f"{mid:>8}  {result.axial_force[i]:12.4f}  {result.axial_stress[i]:12.4e}"
+                     f"  {result.max_von_mises[i]:12.4e}")
+    return "\n".join(lines)
+
+
+def _main(args: argparse.Namespace) -> int:
+    result = run_static(args.model, args.bar_model, args.subdivisions)
+    doc = static_json(result)
+    # all outputs are produced before any is renamed into place
+    if args.vtk:
+        write_vtu(args.vtk, result)
+    if args.json:
+        write_json(args.json, doc)
+    sys.stdout.write(_table(result) + "\n")
+    return 0

@@ -1,0 +1,728 @@
+# SPDX-License-Identifier: MIT
+"""Discretisation of a :class:`~trussfe.model.structure.Structure` into finite elements.
+
+Every member is cut into ``k`` sub-elements.  All sub-elements of one kind (axial-only truss
+bars, or frames) are held by one scikit-fem ``MeshLine1`` in which each sub-element is a
+disjoint segment ``[0, h_e]`` on its own local axis ("exploded" mesh: points ``2e, 2e+1``).
+The forms of :mod:`trussfe.fem.forms` are assembled on that mesh, giving block-diagonal
+*local* matrices; one sparse transformation ``T`` from global DOFs to local field DOFs gives
+
+.. math:: K = T^T K_\\ell T, \\qquad M = T^T M_\\ell T, \\qquad f = T^T f_\\ell .
+
+``T = S G`` where ``G`` gathers, for each sub-element, its end DOFs in member axes (rotation to
+member axes, interior points, end releases, joint numbering) and ``S`` selects the field DOFs
+(``θy = −w'``).
+
+Global DOFs
+-----------
+* every node: ``dim`` translations (global axes);
+* rotations (1 in 2-D, 3 in 3-D, global axes) only at nodes where a frame member attaches
+  without a moment release;
+* interior points of subdivided frame members: translations and rotations in member axes
+  (no twist DOF where torsion is suppressed, see below);
+* a released frame end: private bending rotations in member axes (2-D: θz; 3-D: θy, θz).
+  Its twist follows the joint's rotation when the joint has rotations and is zero otherwise
+  (a pin-ended member cannot spin freely about its own axis).
+
+Bar models (CONTRACT.md §2)
+---------------------------
+``truss``: bars are axial-only two-node elements (``k = 1``) with P1 transverse fields that
+carry mass and geometric stiffness only; their self-weight is lumped half to each end node
+(MSC/PAL practice).  ``pinned-beam``: bars are frame members with both end moments released
+and torsion suppressed (twist θ = 0 along the member), subdivided, carrying their self-weight
+in bending.  Members of type ``beam`` are frames in both models.
+
+Local axes
+----------
+x runs from the start to the end node.  2-D: y = x rotated by +90°.  3-D: y is the member's
+``orientation`` vector made orthogonal to x when given; otherwise the global Z axis made
+orthogonal to x (so local y points "up" for non-vertical members) or, for a vertical member,
+the global X axis.  z = x × y.
+"""
+from __future__ import annotations
+
+import logging
+from dataclasses import dataclass, field
+
+import numpy as np
+import scipy.sparse as sp
+from skfem import Basis, ElementLineHermite, ElementLineP1, MeshLine1, asm
+
+from ..errors import InputError
+from ..model.structure import Structure
+from . import forms
+
+log = logging.getLogger(__name__)
+
+#: Default number of sub-elements of a frame member (beams and pinned-beam bars).  Four cubic
+#: elements give the midspan moment of a uniformly loaded pinned member exactly at the nodes
+#: and deflections to round-off; truss bars are never subdivided.
+DEFAULT_FRAME_SUBDIVISIONS = 4
+
+BAR_MODELS = ("truss", "pinned-beam")
+
+#: Quadrature order: exact for the Hermite consistent mass (degree 6).
+_INTORDER = 6
+
+
+def local_axes(structure: Structure, coords: np.ndarray | None = None) -> np.ndarray:
+    """Rotation matrices from global to member axes.
+
+    Parameters
+    ----------
+    structure : Structure
+    coords : ndarray, optional
+        Node positions (default ``structure.coords``).
+
+    Returns
+    -------
+    ndarray, shape (m, dim, dim)
+        ``R[i]`` has the member's local axes as rows, so ``x_local = R[i] @ x_global``.
+
+    Examples
+    --------
+    >>> from trussfe.model.structure import build_structure
+    >>> from trussfe.model.sections import Section, Material
+    >>> s = build_structure([[0, 0, 0], [1, 0, 0]], [(0, 1)], section=Section.tube("t", .02),
+    ...                     material=Material("al", 7e10, 2.6e10))
+    >>> local_axes(s)[0]
+    array([[ 1.,  0.,  0.],
+           [ 0.,  0.,  1.],
+           [ 0., -1.,  0.]])
+    """
+    ex = structure.unit_vectors(coords)                      # (member, dim)
+    m, dim = ex.shape
+    if dim == 2:
+        ey = np.stack([-ex[:, 1], ex[:, 0]], axis=1)
+        return np.stack([ex, ey], axis=1)
+    ref = np.array(structure.orientation, dtype=float).reshape(m, 3)
+    missing = ~np.all(np.isfinite(ref), axis=1)
+    vertical = np.abs(ex[:, 2]) > 1.0 - 1e-9
+    ref[missing & ~vertical] = (0.0, 0.0, 1.0)
+    ref[missing & vertical] = (1.0, 0.0, 0.0)
+    ey = ref - np.sum(ref * ex, axis=1)[:, None] * ex
+    norm = np.linalg.norm(ey, axis=1)
+    bad = norm < 1e-9
+    if np.any(bad):
+        i = int(np.flatnonzero(bad)[0])
+        raise InputError(f"members.{structure.member_ids[i]}",
+                         "orientation vector is parallel to the member; give a vector "
+                         "in the local x-y plane that is not along the member")
+    ey /= norm[:, None]
+    ez = np.cross(ex, ey)
+    return np.stack([ex, ey, ez], axis=1)
+
+
+@dataclass
+class _Field:
+    name: str
+    basis: Basis
+    comps: tuple[int, ...]      # element component of each element DOF of the basis
+    signs: tuple[float, ...]
+    offset: int = 0
+
+    @property
+    def hermite(self) -> bool:
+        return isinstance(self.basis.elem, ElementLineHermite)
+
+
+@dataclass
+class _Group:
+    """The sub-elements of one kind ("bar" or "frame") on one exploded mesh."""
+
+    kind: str
+    elements: np.ndarray            # global element numbers, (n_el_g,)
+    ncomp: int                      # element DOF components per end
+    fields: list[_Field]
+    n_local: int                    # size of the local (field) vector
+    S: sp.csr_matrix                # field DOFs <- element components
+    G_coo: tuple                    # element components <- global DOFs (COO, built lazily)
+    T: sp.csr_matrix                # S @ G
+    _G: sp.csr_matrix | None = None
+    _K_local: sp.csr_matrix | None = None
+
+    @property
+    def G(self) -> sp.csr_matrix:
+        """Element components (member axes) <- global DOFs."""
+        if self._G is None:
+            vals, rows, cols, shape = self.G_coo
+            self._G = sp.csr_matrix((vals, (rows, cols)), shape=shape)
+        return self._G
+
+    def field(self, name: str) -> _Field | None:
+        for f in self.fields:
+            if f.name == name:
+                return f
+        return None
+
+
+def _exploded_mesh(h: np.ndarray) -> MeshLine1:
+    """One disjoint segment [0, h_e] per element."""
+    n = h.size
+    p = np.zeros((1, 2 * n))
+    p[0, 1::2] = h
+    t = np.ascontiguousarray(np.arange(2 * n, dtype=np.int64).reshape(n, 2).T)
+    return MeshLine1(p, t)
+
+
+def _qp(basis: Basis, values: np.ndarray) -> np.ndarray:
+    """Per-element values broadcast to the quadrature points, shape (n_el, n_qp)."""
+    return np.repeat(np.asarray(values, dtype=float)[:, None], basis.X.shape[-1], axis=1)
+
+
+class FEModel:
+    """A structure discretised into truss and frame elements on local axes.
+
+    Build it with :func:`discretise`.
+
+    Attributes
+    ----------
+    structure : Structure
+    bar_model : str
+        ``"truss"`` or ``"pinned-beam"``.
+    subdivisions : int
+        Sub-elements per frame member (truss bars always have one).
+    n_dof : int
+        Number of global DOFs.
+    node_dofs : ndarray of int, shape (n_nodes, ndof_node)
+        Global DOF of each node DOF (columns x, y, (z), (rx, ry), rz); −1 where absent.
+    fixed : ndarray of bool, shape (n_dof,)
+        Supported DOFs.
+    free : ndarray of int
+        Indices of the free DOFs.
+    element_member : ndarray of int, shape (n_elements,)
+        Member of each element; elements of a member are consecutive, start to end.
+    element_x : ndarray, shape (n_elements, 2)
+        Stations (distance from the member's start node) of each element's ends.
+    member_elements : ndarray of int, shape (m + 1,)
+        Member i owns elements ``member_elements[i]:member_elements[i+1]``.
+    member_subdivisions : ndarray of int, shape (m,)
+    is_frame : ndarray of bool, shape (m,)
+        Member modelled as a frame (beam elements).
+    rotation : ndarray, shape (m, dim, dim)
+        Member axes, rows = local x, y, (z) (see :func:`local_axes`).
+    """
+
+    def __init__(self, structure: Structure, bar_model: str = "truss",
+                 subdivisions: int | None = None):
+        if bar_model not in BAR_MODELS:
+            raise InputError("--bar-model", f"unknown bar model {bar_model!r}; use one of "
+                             + ", ".join(BAR_MODELS))
+        k = DEFAULT_FRAME_SUBDIVISIONS if subdivisions is None else subdivisions
+        if int(k) != k or k < 1:
+            raise InputError("--subdivisions", f"must be a positive integer, got {k!r}")
+        self.structure = structure
+        self.bar_model = bar_model
+        self.subdivisions = int(k)
+        self._build()
+
+    # ------------------------------------------------------------------ construction
+    def _build(self) -> None:
+        s = self.structure
+        dim = s.dim
+        nrot = 1 if dim == 2 else 3
+        self.ndim = dim
+        self.nrot = nrot
+        n, m = s.n_nodes, s.n_members
+        conn = s.connectivity
+        L = s.lengths()
+        self.rotation = local_axes(s)
+        is_frame = s.is_beam.copy() if self.bar_model == "truss" else np.ones(m, dtype=bool)
+        self.is_frame = is_frame
+        # released ends: beams as given; pinned-beam bars both ends
+        released = np.where(s.is_beam[:, None], s.releases, True) & is_frame[:, None]
+        self.released = released
+        # torsion exists in beams only (pinned-beam bars: θ = 0 along the member)
+        self.twist_member = s.is_beam & (dim == 3)
+        self._check_properties(is_frame)
+
+        ksub = np.where(is_frame, self.subdivisions, 1).astype(np.int64)
+        self.member_subdivisions = ksub
+        offs = np.zeros(m + 1, dtype=np.int64)
+        np.cumsum(ksub, out=offs[1:])
+        self.member_elements = offs
+        n_el = int(offs[-1])
+        emem = np.repeat(np.arange(m), ksub)
+        j = np.arange(n_el) - offs[emem]                      # position within member
+        self.element_member = emem
+        h = L[emem] / ksub[emem]
+        self.element_x = np.stack([j * h, (j + 1) * h], axis=1)
+        self.element_length = h
+
+        # ---- global DOF numbering
+        node_dofs = -np.ones((n, dim + nrot), dtype=np.int64)
+        node_dofs[:, :dim] = np.arange(n * dim).reshape(n, dim)
+        has_rot = np.zeros(n, dtype=bool)
+        for end in (0, 1):
+            has_rot[conn[is_frame & ~released[:, end], end]] = True
+        nxt = n * dim
+        nr = int(has_rot.sum())
+        node_dofs[has_rot, dim:] = nxt + np.arange(nr * nrot).reshape(nr, nrot)
+        nxt += nr * nrot
+        self.has_rotation = has_rot
+        # interior points of frame members: member, index 1..k-1, DOFs in member axes
+        npts_m = ksub - 1
+        pt_off = np.zeros(m + 1, dtype=np.int64)
+        np.cumsum(npts_m, out=pt_off[1:])
+        pt_member = np.repeat(np.arange(m), npts_m)
+        mask = np.ones((pt_member.size, dim + nrot), dtype=bool)
+        if dim == 3:
+            mask[:, dim] = self.twist_member[pt_member]
+        interior_dofs = -np.ones(mask.shape, dtype=np.int64)
+        interior_dofs[mask] = nxt + np.arange(int(mask.sum()))
+        nxt += int(mask.sum())
+        # private rotations at released ends (member axes): 2-D θz; 3-D θy, θz
+        npriv = 1 if dim == 2 else 2
+        private = -np.ones((m, 2, npriv), dtype=np.int64)
+        nrel = int(released.sum())
+        private[released] = nxt + np.arange(nrel * npriv).reshape(nrel, npriv)
+        nxt += nrel * npriv
+        self.n_dof = int(nxt)
+        self.node_dofs = node_dofs
+        self.interior_dofs = interior_dofs
+        self.interior_member = pt_member
+        self.private_dofs = private
+
+        # ---- supports
+        fixed = np.zeros(self.n_dof, dtype=bool)
+        sup = s.supports
+        cols = np.r_[np.arange(dim), dim + np.arange(nrot)]      # DOF columns of supports
+        # structure.supports columns: 2-D x,y,rz; 3-D x,y,z,rx,ry,rz — same order as node_dofs
+        gd = node_dofs[:, cols]
+        hit = sup[:, : dim + nrot] & (gd >= 0)
+        fixed[gd[hit]] = True
+        self.fixed = fixed
+        self.free = np.flatnonzero(~fixed)
+
+        # ---- element end points: joint node or interior point
+        first = j == 0
+        last = j == ksub[emem] - 1
+        start_pt = pt_off[emem] + j - 1          # interior point index when not at a joint
+        end_pt = pt_off[emem] + j
+        ends = [(first, conn[emem, 0], start_pt), (last, conn[emem, 1], end_pt)]
+
+        self.groups: list[_Group] = []
+        for kind, sel in (("bar", ~is_frame[emem]), ("frame", is_frame[emem])):
+            els = np.flatnonzero(sel)
+            if els.size:
+                self.groups.append(self._group(kind, els, h[els], ends, emem, released))
+        self.n_elements = n_el
+        log.info("discretised %d members into %d elements, %d DOFs (%s model)",
+                 m, n_el, self.n_dof, self.bar_model)
+
+    def _check_properties(self, is_frame: np.ndarray) -> None:
+        s = self.structure
+        checks = [("area", "area", np.ones(s.n_members, bool)),
+                  ("E", "E", np.ones(s.n_members, bool))]
+        # bending and torsion properties are looked at only where a member needs them
+        if np.any(is_frame):
+            checks += [("Iz", "Iz", is_frame)] if s.dim == 2 else [
+                ("Iy", "Iy", is_frame), ("Iz", "Iz", is_frame)]
+        if s.dim == 3 and np.any(s.is_beam):
+            checks += [("J", "J", s.is_beam), ("G", "G", s.is_beam)]
+        for name, attr, need in checks:
+            values = getattr(s, attr)
+            bad = need & ~(np.isfinite(values) & (values > 0))
+            if np.any(bad):
+                i = int(np.flatnonzero(bad)[0])
+                owner = (f"materials.{s.materials[i].name}" if name in ("E", "G")
+                         else f"sections.{s.sections[i].name}")
+                why = ("beam members bend" if not (self.bar_model == "pinned-beam"
+                                                   and not s.is_beam[i])
+                       else "--bar-model pinned-beam makes bars bend")
+                if name in ("area", "E"):
+                    why = "every member needs it"
+                raise InputError(owner, f"{name} is missing or not positive (member "
+                                 f"{s.member_ids[i]}); {why}: give a positive {name}")
+
+    def _group(self, kind, els, h, ends, emem, released) -> _Group:
+        dim, nrot = self.ndim, self.nrot
+        mesh = _exploded_mesh(h)
+        P1 = Basis(mesh, ElementLineP1(), intorder=_INTORDER)
+        frame = kind == "frame"
+        ncomp = dim + nrot if frame else dim
+        c1 = ncomp                                             # first component of end 2
+        if not frame:
+            names = ("u", "v", "w")[:dim]
+            fields = [_Field(nm, P1, (i, c1 + i), (1.0, 1.0)) for i, nm in enumerate(names)]
+        else:
+            H = Basis(mesh, ElementLineHermite(), intorder=_INTORDER)
+            if dim == 2:
+                fields = [_Field("u", P1, (0, c1), (1.0, 1.0)),
+                          _Field("v", H, (1, 2, c1 + 1, c1 + 2), (1.0, 1.0, 1.0, 1.0))]
+            else:
+                fields = [_Field("u", P1, (0, c1), (1.0, 1.0)),
+                          _Field("v", H, (1, 5, c1 + 1, c1 + 5), (1.0, 1.0, 1.0, 1.0)),
+                          _Field("w", H, (2, 4, c1 + 2, c1 + 4), (1.0, -1.0, 1.0, -1.0)),
+                          _Field("theta", P1, (3, c1 + 3), (1.0, 1.0))]
+        ne = els.size
+        nc2 = 2 * ncomp
+        # S: field DOFs <- element components
+        # S: field DOFs <- element components.  Every element component is exactly one
+        # field DOF (with sign), so S has one entry per column.
+        comp_row = np.empty((ne, nc2), dtype=np.int64)
+        comp_sign = np.empty((ne, nc2))
+        off = 0
+        for f in fields:
+            f.offset = off
+            edofs = f.basis.element_dofs                          # (nbfun, ne)
+            for b, (comp, sign) in enumerate(zip(f.comps, f.signs)):
+                comp_row[:, comp] = off + edofs[b]
+                comp_sign[:, comp] = sign
+            off += f.basis.N
+        S = sp.csc_matrix((comp_sign.ravel(), comp_row.ravel(), np.arange(ne * nc2 + 1)),
+                          shape=(off, ne * nc2)).tocsr()
+        # G: element components <- global DOFs, in pieces
+        rows, cols, vals = [], [], []
+
+        def add(el_local, comp, gdof, val):
+            ok = gdof >= 0
+            rows.append((el_local * nc2 + comp)[ok])
+            cols.append(gdof[ok])
+            vals.append(np.broadcast_to(val, gdof.shape)[ok])
+
+        def add_block(el_local, comp0, gdofs, Rsub):
+            """local comps comp0 + i  <-  Σ_j Rsub[:, i, j] · U[gdofs[:, j]]."""
+            k, di, dj = Rsub.shape
+            el3 = el_local[:, None, None] * nc2 + comp0 + np.arange(di)[None, :, None]
+            add(np.zeros(1, np.int64), np.broadcast_to(el3, (k, di, dj)).ravel(),
+                np.broadcast_to(gdofs[:, None, :], (k, di, dj)).ravel(), Rsub.ravel())
+
+        mem = emem[els]
+        R = self.rotation[mem]                                    # (el, dim, dim)
+        eidx = np.arange(ne)
+        for end, (at_joint, node, pt) in enumerate(ends):
+            at_joint = at_joint[els]
+            node = node[els]
+            pt = pt[els]
+            base = end * ncomp
+            jj = np.flatnonzero(at_joint)
+            ii = np.flatnonzero(~at_joint)
+            # translations at joints: local_i = Σ_j R_ij U_j
+            add_block(eidx[jj], base, self.node_dofs[node[jj], :dim], R[jj])
+            # interior translations are in member axes
+            for i in range(dim):
+                add(eidx[ii], base + i, self.interior_dofs[pt[ii], i], 1.0)
+            if not frame:
+                continue
+            rel = released[mem, end] & at_joint
+            jr = np.flatnonzero(at_joint & ~rel)
+            kr = np.flatnonzero(rel)
+            if dim == 2:
+                add(eidx[jr], base + 2, self.node_dofs[node[jr], 2], 1.0)
+                add(eidx[kr], base + 2, self.private_dofs[mem[kr], end, 0], 1.0)
+                add(eidx[ii], base + 2, self.interior_dofs[pt[ii], 2], 1.0)
+                continue
+            twist = self.twist_member[mem]
+            Rr = R[jr].copy()
+            Rr[:, 0, :] *= twist[jr, None]
+            add_block(eidx[jr], base + 3, self.node_dofs[node[jr], 3:], Rr)
+            for i in range(3):
+                add(eidx[ii], base + 3 + i, self.interior_dofs[pt[ii], 3 + i], 1.0)
+            # released end: twist from the joint's rotation (zero if the joint has none),
+            # bending rotations private
+            kt = kr[twist[kr]]
+            for jd in range(3):
+                add(eidx[kt], base + 3, self.node_dofs[node[kt], 3 + jd], R[kt, 0, jd])
+            add(eidx[kr], base + 4, self.private_dofs[mem[kr], end, 0], 1.0)
+            add(eidx[kr], base + 5, self.private_dofs[mem[kr], end, 1], 1.0)
+        rows, cols, vals = (np.concatenate(a) for a in (rows, cols, vals))
+        nz = vals != 0.0
+        rows, cols, vals = rows[nz], cols[nz], vals[nz]
+        # T = S G without a sparse product: map each G entry through S's single entry
+        T = sp.csr_matrix((vals * comp_sign.ravel()[rows], (comp_row.ravel()[rows], cols)),
+                          shape=(off, self.n_dof))
+        return _Group(kind=kind, elements=els, ncomp=ncomp, fields=fields, n_local=off,
+                      S=S, G_coo=(vals, rows, cols, (ne * nc2, self.n_dof)), T=T)
+
+    # ------------------------------------------------------------------ local matrices
+    def _block_local(self, g: _Group, per_field) -> sp.csr_matrix:
+        """Block-diagonal local matrix; ``per_field(field, members)`` gives the form and
+        the per-element coefficient dict (or None for a zero block)."""
+        blocks = []
+        mem = self.element_member[g.elements]
+        for f in g.fields:
+            spec = per_field(f, mem)
+            if spec is None:
+                blocks.append(sp.csr_matrix((f.basis.N, f.basis.N)))
+                continue
+            form, coeffs = spec
+            kw = {k: _qp(f.basis, v) for k, v in coeffs.items()}
+            blocks.append(asm(form, f.basis, **kw))
+        return sp.block_diag(blocks, format="csr")
+
+    def _stiffness_spec(self, g: _Group):
+        s = self.structure
+
+        def spec(f: _Field, mem):
+            if f.name == "u":
+                return forms.axial_stiffness, {"EA": (s.E * s.area)[mem]}
+            if f.name == "theta":
+                GJ = np.where(self.twist_member, s.G * np.nan_to_num(s.J), 0.0)
+                return forms.axial_stiffness, {"EA": GJ[mem]}
+            if g.kind == "bar":
+                return None
+            # v bends about local z, w about local y
+            EI = s.E * (s.Iz if f.name == "v" else s.Iy)
+            return forms.bending_stiffness, {"EI": EI[mem]}
+        return spec
+
+    def local_stiffness(self, g: _Group) -> sp.csr_matrix:
+        """Block-diagonal local stiffness of one element group (field DOF space); assembled
+        once and kept, since static recovery and every later solve reuse it."""
+        if g._K_local is None:
+            g._K_local = self._block_local(g, self._stiffness_spec(g))
+        return g._K_local
+
+    def local_mass(self, g: _Group) -> sp.csr_matrix:
+        """Block-diagonal consistent local mass of one element group."""
+        s = self.structure
+
+        def spec(f, mem):
+            if f.name == "theta":
+                rhoJ = np.where(self.twist_member, s.density * np.nan_to_num(s.J), 0.0)
+                return forms.mass, {"rhoA": rhoJ[mem]}
+            return forms.mass, {"rhoA": (s.density * s.area)[mem]}
+        return self._block_local(g, spec)
+
+    def local_geometric_stiffness(self, g: _Group, N: np.ndarray) -> sp.csr_matrix:
+        """Block-diagonal local geometric stiffness of one group; ``N`` per global element."""
+        Ng = np.asarray(N, dtype=float)[g.elements]
+
+        def spec(f, mem):
+            if f.name in ("u", "theta"):
+                return None
+            return forms.geometric_stiffness, {"N": Ng}
+        return self._block_local(g, spec)
+
+    def local_self_weight(self, g: _Group, gravity: np.ndarray) -> np.ndarray:
+        """Local load vector of the member self-weight ρA·g (field DOF space)."""
+        s = self.structure
+        mem = self.element_member[g.elements]
+        q = (s.density * s.area)[mem, None] * np.asarray(gravity, dtype=float)[None, :]
+        q_local = np.einsum("eij,ej->ei", self.rotation[mem], q)  # (el, dim)
+        out = np.zeros(g.n_local)
+        for f in g.fields:
+            if f.name == "theta":
+                continue
+            comp = {"u": 0, "v": 1, "w": 2}[f.name]
+            qf = q_local[:, comp]
+            if not np.any(qf):
+                continue
+            out[f.offset:f.offset + f.basis.N] = asm(forms.distributed_load, f.basis,
+                                                     q=_qp(f.basis, qf))
+        return out
+
+    # ------------------------------------------------------------------ global matrices
+    def stiffness(self) -> sp.csr_matrix:
+        """Global elastic stiffness K = Σ Tᵀ K_local T, shape (n_dof, n_dof)."""
+        K = sp.csr_matrix((self.n_dof, self.n_dof))
+        for g in self.groups:
+            K = K + g.T.T @ self.local_stiffness(g) @ g.T
+        return K.tocsr()
+
+    def mass(self, kind: str = "consistent", include_nodal_masses: bool = True
+             ) -> sp.csr_matrix:
+        """Global mass matrix.
+
+        Parameters
+        ----------
+        kind : {"consistent", "lumped"}
+            Consistent: ρA on every translation (P1 for bars, i.e. ρAL/6 [[2,1],[1,2]];
+            Hermite + P1 for frames) and ρJ on the twist.  Lumped: ρA·h/2 on each
+            translation DOF at both ends of every element, nothing on rotations.
+        include_nodal_masses : bool
+            Add ``structure.masses`` to the translations of their nodes.
+        """
+        s = self.structure
+        if kind == "consistent":
+            M = sp.csr_matrix((self.n_dof, self.n_dof))
+            for g in self.groups:
+                M = M + g.T.T @ self.local_mass(g) @ g.T
+        elif kind == "lumped":
+            diag = np.zeros(self.n_dof)
+            for g in self.groups:
+                mem = self.element_member[g.elements]
+                half = 0.5 * (s.density * s.area)[mem] * self.element_length[g.elements]
+                # translation components of both ends, weighted through G (rotation-free)
+                ne, nc2 = g.elements.size, 2 * g.ncomp
+                w = np.zeros((ne, nc2))
+                w[:, : self.ndim] = half[:, None]
+                w[:, g.ncomp: g.ncomp + self.ndim] = half[:, None]
+                # Σ over element components of w·G² distributes mass onto the global DOFs
+                # (G rows of translations are orthonormal rotations, so this is exact)
+                diag += g.G.multiply(g.G).T @ w.ravel()
+            M = sp.diags(diag, format="csr")
+        else:
+            raise InputError("--mass", f"unknown mass kind {kind!r}; use consistent or lumped")
+        if include_nodal_masses and np.any(s.masses):
+            d = np.zeros(self.n_dof)
+            d[self.node_dofs[:, : self.ndim]] = s.masses[:, None]
+            M = M + sp.diags(d)
+        return M.tocsr()
+
+    def geometric_stiffness(self, element_axial_force: np.ndarray) -> sp.csr_matrix:
+        """Global geometric stiffness K_g for element axial forces N (tension positive).
+
+        Parameters
+        ----------
+        element_axial_force : ndarray, shape (n_elements,)
+        """
+        N = np.asarray(element_axial_force, dtype=float).reshape(self.n_elements)
+        Kg = sp.csr_matrix((self.n_dof, self.n_dof))
+        for g in self.groups:
+            Kg = Kg + g.T.T @ self.local_geometric_stiffness(g, N) @ g.T
+        return Kg.tocsr()
+
+    def load_vector(self, self_weight: bool = True, nodal_loads: bool = True,
+                    gravity: np.ndarray | None = None, loads: np.ndarray | None = None
+                    ) -> np.ndarray:
+        """Global load vector f = Tᵀ f_local + nodal loads + gravity on nodal masses.
+
+        Parameters
+        ----------
+        self_weight : bool
+            Include member self-weight (consistent for frames; for truss bars the P1 load
+            form gives exactly half the weight at each end) and the weight of the nodal
+            masses.
+        nodal_loads : bool
+            Include nodal forces and moments (``loads`` or ``structure.loads``).
+        gravity : ndarray, optional
+            Gravity vector (default ``structure.gravity``).
+        loads : ndarray, shape (n_nodes, ndof_node), optional
+            Nodal loads replacing ``structure.loads``.
+        """
+        s = self.structure
+        f = np.zeros(self.n_dof)
+        grav = s.gravity if gravity is None else np.asarray(gravity, dtype=float)
+        if self_weight and np.any(grav):
+            for g in self.groups:
+                f += g.T.T @ self.local_self_weight(g, grav)
+            f[self.node_dofs[:, : self.ndim]] += s.masses[:, None] * grav[None, :]
+        if nodal_loads:
+            P = s.loads if loads is None else np.asarray(loads, dtype=float)
+            dofs = self.node_dofs
+            present = dofs >= 0
+            lost = ~present & (P[:, : dofs.shape[1]] != 0)
+            if np.any(lost):
+                i, c = np.argwhere(lost)[0]
+                from ..model.structure import DOF_NAMES
+                raise InputError(f"loads.{s.node_ids[i]}",
+                                 f"a moment ({DOF_NAMES[s.dim][c]}) is applied at a pin joint "
+                                 "that has no rotational stiffness; attach a beam without a "
+                                 "release or remove the moment")
+            np.add.at(f, dofs[present], P[:, : dofs.shape[1]][present])
+        return f
+
+    # ------------------------------------------------------------------ recovery
+    def element_self_weight_local(self, gravity: np.ndarray | None = None) -> list[np.ndarray]:
+        """Per group, the local self-weight vector carried *by the elements* (frames only:
+        truss bars have their weight lumped at the joints)."""
+        grav = self.structure.gravity if gravity is None else np.asarray(gravity, float)
+        out = []
+        for g in self.groups:
+            if g.kind == "frame" and np.any(grav):
+                out.append(self.local_self_weight(g, grav))
+            else:
+                out.append(np.zeros(g.n_local))
+        return out
+
+    def element_forces(self, u_global: np.ndarray, f_local: list[np.ndarray] | None = None
+                       ) -> np.ndarray:
+        """End forces acting on every element, in member axes.
+
+        ``f_e = Sᵀ (K_local T u − f_local)`` on the exploded mesh.
+
+        Parameters
+        ----------
+        u_global : ndarray, shape (n_dof,)
+        f_local : list of ndarray, optional
+            Local distributed-load vectors per group (default: member self-weight of frames,
+            see :meth:`element_self_weight_local`).
+
+        Returns
+        -------
+        ndarray, shape (n_elements, 2, 6)
+            ``[Fx, Fy, Fz, Mx, My, Mz]`` exerted on the element at its start (index 0) and
+            end (index 1), member axes.  2-D: ``[Fx, Fy, 0, 0, 0, Mz]``.
+        """
+        if f_local is None:
+            f_local = self.element_self_weight_local()
+        out = np.zeros((self.n_elements, 2, 6))
+        dim = self.ndim
+        for g, fl in zip(self.groups, f_local):
+            fe = self.local_stiffness(g) @ (g.T @ u_global) - fl
+            comp = (g.S.T @ fe).reshape(g.elements.size, 2, g.ncomp)
+            out[g.elements, :, :dim] = comp[:, :, :dim]
+            if g.kind == "frame":
+                if dim == 2:
+                    out[g.elements, :, 5] = comp[:, :, 2]
+                else:
+                    out[g.elements, :, 3:] = comp[:, :, 3:]
+        return out
+
+    def station_displacements(self, u_global: np.ndarray) -> np.ndarray:
+        """Translations (global axes) at every station of every member.
+
+        Returns
+        -------
+        ndarray, shape (m, kmax + 1, dim)
+            Station ``j`` of member ``i`` is at ``x = j L_i / k_i`` (NaN past ``k_i``).
+        """
+        dim = self.ndim
+        m = self.structure.n_members
+        k = self.member_subdivisions
+        kmax = int(k.max()) if m else 1
+        out = np.full((m, kmax + 1, dim), np.nan)
+        emem = self.element_member
+        j = np.arange(self.n_elements) - self.member_elements[emem]
+        for g in self.groups:
+            comp = (g.G @ u_global).reshape(g.elements.size, 2, g.ncomp)[:, :, :dim]
+            R = self.rotation[emem[g.elements]]
+            glob = np.einsum("eji,esj->esi", R, comp)             # Rᵀ · local
+            els = g.elements
+            out[emem[els], j[els]] = glob[:, 0]
+            lastmask = j[els] == k[emem[els]] - 1
+            out[emem[els][lastmask], k[emem[els]][lastmask]] = glob[lastmask, 1]
+        return out
+
+    def node_values(self, u_global: np.ndarray) -> np.ndarray:
+        """Global vector → per-node array (n_nodes, ndof_node); 0 where a DOF is absent."""
+        dofs = self.node_dofs
+        out = np.zeros(dofs.shape)
+        ok = dofs >= 0
+        out[ok] = u_global[dofs[ok]]
+        return out
+
+
+def discretise(structure: Structure, bar_model: str = "truss",
+               subdivisions: int | None = None) -> FEModel:
+    """Discretise a structure into finite elements.
+
+    Parameters
+    ----------
+    structure : Structure
+    bar_model : {"truss", "pinned-beam"}
+        How members of type ``bar`` are modelled (CONTRACT.md §2).
+    subdivisions : int, optional
+        Sub-elements per frame member (default :data:`DEFAULT_FRAME_SUBDIVISIONS`).
+
+    Returns
+    -------
+    FEModel
+
+    Examples
+    --------
+    Two bars meeting at a loaded joint (truss model): 3 nodes × 2 translations.
+
+    >>> from trussfe.model.structure import build_structure
+    >>> from trussfe.model.sections import Section, Material
+    >>> s = build_structure([[0, 0], [1, 0], [0, 1]], [(0, 1), (2, 1)],
+    ...                     section=Section("a", area=1e-4),
+    ...                     material=Material("steel", 2e11, 8e10),
+    ...                     supports={0: "xy", 2: "xy"})
+    >>> fe = discretise(s)
+    >>> fe.n_dof, fe.free.tolist()
+    (6, [2, 3])
+    """
+    return FEModel(structure, bar_model=bar_model, subdivisions=subdivisions)

@@ -1,0 +1,167 @@
+# SPDX-License-Identifier: MIT
+"""Sparse factorisation of the free-DOF stiffness, with mechanism detection.
+
+A singular stiffness never reaches the user as a traceback or a NaN: the factorisation
+(:mod:`trussfe.fem.linsolve`) is checked for negligible pivots, and when it fails
+the null space of the (diagonally scaled) stiffness is computed to say how many independent
+mechanisms there are and which nodes move in them.
+"""
+from __future__ import annotations
+
+import logging
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.linalg as sla
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+
+from ..errors import MechanismError
+from .linsolve import SINGULAR_PIVOT, SingularMatrixError, factorize
+
+log = logging.getLogger(__name__)
+
+#: Eigenvalues of the diagonally scaled stiffness below this (the largest is O(1)) are
+#: counted as mechanisms.
+NULL_TOLERANCE = 1e-10
+
+#: Largest free-DOF count for which the null space is computed densely.
+DENSE_LIMIT = 3000
+
+
+@dataclass
+class Factorised:
+    """A factorised stiffness restricted to the free DOFs.
+
+    Attributes
+    ----------
+    free : ndarray of int
+        Global indices of the free DOFs.
+    n_dof : int
+        Size of the global system.
+    """
+
+    lu: object
+    free: np.ndarray
+    n_dof: int
+
+    def solve(self, f: np.ndarray) -> np.ndarray:
+        """Solve K u = f on the free DOFs; fixed DOFs get 0.  ``f`` (n_dof,) or (n_dof, r)."""
+        f = np.asarray(f, dtype=float)
+        u = np.zeros(f.shape)
+        u[self.free] = self.lu.solve(np.ascontiguousarray(f[self.free]))
+        return u
+
+
+def factorise(K: sp.spmatrix, free: np.ndarray, fe=None, item: str = "structure",
+              backend: str = "auto") -> Factorised:
+    """Factorise K_ff (:func:`trussfe.fem.linsolve.factorize`), raising
+    :class:`MechanismError` when it is singular.
+
+    Parameters
+    ----------
+    K : sparse matrix, shape (n_dof, n_dof)
+    free : ndarray of int
+        Free DOFs.
+    fe : FEModel, optional
+        Used to name the moving nodes in the error.
+    item : str
+        Item named in the error message (the model file).
+    backend : {"auto", "superlu", "pardiso"}
+        Linear-solver backend.
+    """
+    Kff = K[free][:, free].tocsr()
+    n = Kff.shape[0]
+    if n == 0:
+        return Factorised(lu=_Empty(), free=free, n_dof=K.shape[0])
+    d = Kff.diagonal()
+    if np.any(d <= 0):                     # a DOF nothing is attached to
+        _raise_mechanism(Kff, free, fe, item)
+    try:
+        lu = factorize(Kff, backend=backend)
+    except SingularMatrixError:
+        _raise_mechanism(Kff, free, fe, item)
+    log.debug("factorised %d free DOFs (%s)", n, lu.backend)
+    return Factorised(lu=lu, free=free, n_dof=K.shape[0])
+
+
+class _Empty:
+    def solve(self, f):
+        return np.zeros(f.shape)
+
+
+def null_space(Kff: sp.spmatrix, max_vectors: int = 12) -> np.ndarray:
+    """Mechanism modes of a positive semi-definite K_ff.
+
+    The stiffness is scaled by its diagonal (``D^-1/2 K D^-1/2``, largest eigenvalue O(1));
+    eigenvalues below :data:`NULL_TOLERANCE` are mechanisms.  Dense ``eigh`` up to
+    :data:`DENSE_LIMIT` DOFs, else shift-invert ``eigsh`` for at most ``max_vectors`` modes.
+
+    Returns
+    -------
+    ndarray, shape (n_free, r)
+        Mechanism modes in the original (unscaled) DOFs, each of unit max-norm.
+    """
+    d = Kff.diagonal().astype(float)
+    zero = d <= 0
+    dd = np.where(zero, 1.0, d)
+    s = 1.0 / np.sqrt(dd)
+    Ks = sp.diags(s) @ Kff @ sp.diags(s)
+    n = Ks.shape[0]
+    if n <= DENSE_LIMIT:
+        w, V = sla.eigh(Ks.toarray())
+        keep = w < NULL_TOLERANCE * max(1.0, w[-1])
+        V = V[:, keep]
+    else:
+        k = min(max_vectors, n - 2)
+        v0 = np.random.default_rng(0).standard_normal(n)     # reproducible start vector
+        try:
+            w, V = spla.eigsh(Ks.tocsc(), k=k, sigma=-1e-6, which="LM", v0=v0,
+                              maxiter=50 * n)
+        except spla.ArpackNoConvergence as exc:               # keep what converged
+            w, V = exc.eigenvalues, exc.eigenvectors
+        V = V[:, w < NULL_TOLERANCE]
+    V = V * s[:, None]
+    if V.size:
+        V = V / np.abs(V).max(axis=0)
+    return V
+
+
+def _raise_mechanism(Kff, free, fe, item):
+    V = null_space(Kff)
+    r = V.shape[1]
+    if r == 0:
+        # pivots collapsed without an exact null space: ill-conditioned beyond double
+        # precision; say so rather than return meaningless numbers
+        raise MechanismError(item, "the stiffness matrix is numerically singular (a pivot "
+                             f"below {SINGULAR_PIVOT:g} of the largest) although no exact "
+                             "mechanism was found: the structure is too flexible for a "
+                             "reliable linear solution; add supports or members",
+                             mechanisms=0, moving_nodes=[])
+    moving = _moving_nodes(V, free, fe)
+    shown = ", ".join(moving[:20]) + (" ..." if len(moving) > 20 else "")
+    more = "at least " if Kff.shape[0] > DENSE_LIMIT and r >= 12 else ""
+    raise MechanismError(
+        item, f"the structure is a mechanism: {more}{r} independent mechanism"
+        f"{'s' if r != 1 else ''} (rigid-body motions included); moving nodes: "
+        f"{shown or 'none (only member-internal DOFs)'}; add supports or members, or run "
+        "'trussfe mechanism' for the rank analysis", mechanisms=r, moving_nodes=moving)
+
+
+def _moving_nodes(V: np.ndarray, free: np.ndarray, fe) -> list[str]:
+    if fe is None:
+        return []
+    full = np.zeros((fe.n_dof, V.shape[1]))
+    full[free] = V
+    amp = np.abs(full).max(axis=1)                   # (n_dof,)
+    dofs = fe.node_dofs
+    node_amp = np.where(dofs >= 0, amp[np.maximum(dofs, 0)], 0.0).max(axis=1)
+    ids = fe.structure.node_ids
+    moving = [ids[i] for i in np.flatnonzero(node_amp > 1e-6)]
+    if not moving:
+        pts = fe.interior_dofs
+        pt_amp = np.where(pts >= 0, amp[np.maximum(pts, 0)], 0.0).max(axis=1) if pts.size \
+            else np.zeros(0)
+        mem = np.unique(fe.interior_member[pt_amp > 1e-6])
+        moving = [f"member {fe.structure.member_ids[i]}" for i in mem]
+    return moving

@@ -1,0 +1,233 @@
+# SPDX-License-Identifier: MIT
+"""Linear static analysis: ``K u = f`` on the free DOFs, then reactions, member forces and
+stresses (Lacy eqs. 2.23–2.25, 4.75/4.76; see :mod:`trussfe.fem.stress`).
+
+Sign conventions
+----------------
+* Displacements and reactions are in global axes; reactions are the forces (and moments) the
+  supports exert on the structure, ``r = K u − f`` at the fixed DOFs.
+* Section forces ``[N, Vy, Vz, T, My, Mz]`` at a station are in member axes and are the
+  resultant exerted on the part of the member *before* the station by the part *after* it
+  (force on the positive face): N is positive in tension.  ``end_forces`` are the section
+  forces at the start (x = 0) and end (x = L) stations, so ``N`` is the same tension at both
+  ends of an unloaded bar.
+"""
+from __future__ import annotations
+
+import logging
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..model.structure import DOF_NAMES, Structure
+from .discretisation import FEModel, discretise
+from .solver import factorise
+from .stress import von_mises
+
+log = logging.getLogger(__name__)
+
+SECTION_FORCE_NAMES = ("N", "Vy", "Vz", "T", "My", "Mz")
+
+
+@dataclass
+class StaticResult:
+    """Result of :func:`solve_static`.
+
+    Attributes
+    ----------
+    fe : FEModel
+    u : ndarray, shape (n_dof,)
+        Global displacement vector.
+    f : ndarray, shape (n_dof,)
+        Global load vector.
+    displacements : ndarray, shape (n_nodes, ndof_node)
+        Translations and rotations per node, global axes (0 for absent rotations).
+    reactions : ndarray, shape (n_nodes, ndof_node)
+        Support reactions (0 on free or absent DOFs).
+    axial_force : ndarray, shape (m,)
+        Axial force at the member midpoint, N, positive in tension.
+    axial_stress, strain : ndarray, shape (m,)
+        N/A and N/(EA) at the midpoint.
+    end_forces : ndarray, shape (m, 2, 6)
+        Section forces ``[N, Vy, Vz, T, My, Mz]`` at the start and end stations.
+    station_x : ndarray, shape (m, kmax + 1)
+        Station positions along each member (NaN-padded past its own k + 1 stations).
+    section_forces : ndarray, shape (m, kmax + 1, 6)
+        Section forces at the stations (NaN-padded).
+    von_mises_s1, von_mises_s2 : ndarray, shape (m, kmax + 1)
+        Von Mises stress at points S1 and S2 of each station (NaN-padded).
+    max_von_mises : ndarray, shape (m,)
+        Largest of S1 and S2 over the member's stations.
+    residual : float
+        ‖K u − f‖ / ‖f‖ over the free DOFs.
+    """
+
+    fe: FEModel
+    u: np.ndarray
+    f: np.ndarray
+    displacements: np.ndarray
+    reactions: np.ndarray
+    axial_force: np.ndarray
+    axial_stress: np.ndarray
+    strain: np.ndarray
+    end_forces: np.ndarray
+    station_x: np.ndarray
+    section_forces: np.ndarray
+    von_mises_s1: np.ndarray
+    von_mises_s2: np.ndarray
+    max_von_mises: np.ndarray
+    residual: float
+
+    @property
+    def structure(self) -> Structure:
+        """The analysed structure."""
+        return self.fe.structure
+
+
+def section_forces(fe: FEModel, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Section forces at every station of every member.
+
+    Returns
+    -------
+    station_x : ndarray, shape (m, kmax + 1)
+    forces : ndarray, shape (m, kmax + 1, 6)
+        NaN past a member's own ``k + 1`` stations.
+    """
+    fel = fe.element_forces(u)                                  # (el, 2, 6) on the element
+    m = fe.structure.n_members
+    k = fe.member_subdivisions
+    kmax = int(k.max()) if m else 1
+    x = np.full((m, kmax + 1), np.nan)
+    F = np.full((m, kmax + 1, 6), np.nan)
+    emem = fe.element_member
+    j = np.arange(fe.n_elements) - fe.member_elements[emem]
+    # station j (left end of element j): minus the force on the element's start
+    x[emem, j] = fe.element_x[:, 0]
+    F[emem, j] = -fel[:, 0]
+    last = fe.member_elements[1:] - 1
+    x[np.arange(m), k] = fe.element_x[last, 1]
+    F[np.arange(m), k] = fel[last, 1]
+    return x, F
+
+
+def solve_static(structure: Structure, bar_model: str = "truss",
+                 subdivisions: int | None = None, loads: np.ndarray | None = None,
+                 self_weight: bool = True, fe: FEModel | None = None,
+                 backend: str = "auto") -> StaticResult:
+    """Linear static analysis of a structure.
+
+    Parameters
+    ----------
+    structure : Structure
+    bar_model : {"truss", "pinned-beam"}
+    subdivisions : int, optional
+        Sub-elements per frame member.
+    loads : ndarray, shape (n_nodes, ndof_node), optional
+        Nodal loads replacing ``structure.loads``.
+    self_weight : bool
+        Include gravity on members and nodal masses (``structure.gravity``).
+    fe : FEModel, optional
+        A discretisation to reuse.
+    backend : {"auto", "superlu", "pardiso"}
+        Linear-solver backend (:mod:`trussfe.fem.linsolve`).
+
+    Returns
+    -------
+    StaticResult
+
+    Raises
+    ------
+    MechanismError
+        The structure cannot carry load (singular stiffness); the message gives the number
+        of independent mechanisms and the moving nodes.
+
+    Examples
+    --------
+    A bar of EA = 2e7 N pulled by 1 kN stretches by PL/EA = 5e-5 m:
+
+    >>> from trussfe.model.structure import build_structure
+    >>> from trussfe.model.sections import Section, Material
+    >>> s = build_structure([[0.0, 0.0], [1.0, 0.0]], [(0, 1)],
+    ...                     section=Section("a", area=1e-4), material=Material("s", 2e11, 8e10),
+    ...                     supports={0: "xy", 1: "y"}, loads={1: [1000.0, 0.0]})
+    >>> r = solve_static(s)
+    >>> float(r.displacements[1, 0]), float(r.axial_force[0])
+    (5e-05, 1000.0)
+    """
+    if fe is None:
+        fe = discretise(structure, bar_model=bar_model, subdivisions=subdivisions)
+    K = fe.stiffness()
+    f = fe.load_vector(self_weight=self_weight, loads=loads)
+    fac = factorise(K, fe.free, fe=fe, item=structure.source or structure.name,
+                    backend=backend)
+    u = fac.solve(f)
+    r_all = K @ u - f
+    nf = np.linalg.norm(f[fe.free])
+    residual = float(np.linalg.norm(r_all[fe.free]) / nf) if nf > 0 else \
+        float(np.linalg.norm(r_all[fe.free]))
+    reac = np.where(fe.fixed, r_all, 0.0)
+    x, F = section_forces(fe, u)
+    s = structure
+    m = s.n_members
+    k = fe.member_subdivisions
+    ends = np.stack([F[:, 0], F[np.arange(m), k]], axis=1)
+    # midpoint axial force: N is linear along a member under uniform distributed load
+    N_mid = 0.5 * (ends[:, 0, 0] + ends[:, 1, 0])
+    s1, s2 = von_mises(F, s.area, s.Iy, s.Iz, s.c)
+    vm = np.fmax(s1, s2)
+    result = StaticResult(
+        fe=fe, u=u, f=f, displacements=fe.node_values(u), reactions=fe.node_values(reac),
+        axial_force=N_mid, axial_stress=N_mid / s.area, strain=N_mid / (s.E * s.area),
+        end_forces=ends, station_x=x, section_forces=F, von_mises_s1=s1, von_mises_s2=s2,
+        max_von_mises=np.nanmax(vm, axis=1) if m else np.zeros(0), residual=residual)
+    log.info("static solve: %d DOFs, residual %.2e", fe.n_dof, residual)
+    return result
+
+
+def static_json(result: StaticResult, command: str = "static") -> dict:
+    """The CONTRACT.md §3 ``static`` document.
+
+    ``nodes[id]``: ``displacement`` (translations), ``rotation`` (where the node has
+    rotational DOFs), ``reaction`` (supported nodes: forces) and ``reaction_moment`` (where a
+    rotation is supported).  ``members[id]``: ``axial_force``, ``axial_stress``, ``strain``,
+    ``max_von_mises``, ``end_forces`` = ``{"start": {N, Vy, Vz, T, My, Mz}, "end": {...}}``
+    (section forces, member axes, N tension positive).
+    """
+    fe = result.fe
+    s = fe.structure
+    dim = s.dim
+    names = DOF_NAMES[dim]
+    nodes = {}
+    sup = s.supports
+    for i, nid in enumerate(s.node_ids):
+        d = {"displacement": result.displacements[i, :dim].tolist()}
+        if fe.has_rotation[i]:
+            d["rotation"] = result.displacements[i, dim:].tolist()
+        if sup[i, :dim].any():
+            d["reaction"] = result.reactions[i, :dim].tolist()
+        if fe.has_rotation[i] and sup[i, dim:].any():
+            d["reaction_moment"] = result.reactions[i, dim:].tolist()
+        nodes[nid] = d
+    members = {}
+    for i, mid in enumerate(s.member_ids):
+        members[mid] = {
+            "axial_force": float(result.axial_force[i]),
+            "axial_stress": float(result.axial_stress[i]),
+            "strain": float(result.strain[i]),
+            "max_von_mises": float(result.max_von_mises[i]),
+            "end_forces": {
+                end: dict(zip(SECTION_FORCE_NAMES, result.end_forces[i, e].tolist()))
+                for e, end in enumerate(("start", "end"))},
+        }
+    return {
+        "units": "SI",
+        "command": command,
+        "model": s.name,
+        "bar_model": fe.bar_model,
+        "subdivisions": fe.subdivisions,
+        "dof_names": list(names),
+        "n_dof": fe.n_dof,
+        "residual": result.residual,
+        "nodes": nodes,
+        "members": members,
+    }
