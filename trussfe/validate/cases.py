@@ -2,6 +2,7 @@
 """Reading validation case files (TOML) into :class:`Case` objects, with input checks."""
 from __future__ import annotations
 
+import functools
 import math
 import tomllib
 from dataclasses import dataclass, field
@@ -115,7 +116,8 @@ def _quantity(raw: Any, item: str) -> Quantity:
     return q
 
 
-def analysis_names() -> list[str]:
+@functools.lru_cache(maxsize=1)
+def analysis_names() -> tuple[str, ...]:
     """Commands with an ``analyse(model_path, **options)`` entry point usable by a case."""
     import importlib
     import pkgutil
@@ -127,7 +129,7 @@ def analysis_names() -> list[str]:
             module = importlib.import_module(f"{cli.__name__}.{info.name}")
             if callable(getattr(module, "analyse", None)):
                 out.append(info.name[4:])
-    return sorted(out)
+    return tuple(sorted(out))
 
 
 def load_case(path: str | Path) -> Case:

@@ -106,13 +106,8 @@ class CaseResult:
 def compare(q: Quantity, value: Any) -> QuantityResult:
     """Compare one value with its reference: pass when ``|v − r| ≤ atol + rtol·|r|``."""
     out = QuantityResult(quantity=q)
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        try:
-            import numpy as np
-            if isinstance(value, np.generic) and np.ndim(value) == 0:
-                value = value.item()
-        except ImportError:  # pragma: no cover
-            pass
+    if hasattr(value, "item") and getattr(value, "ndim", None) == 0:
+        value = value.item()            # a numpy scalar
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         out.message = f"value at '{q.path}' is not a number: {value!r}"
         return out
