@@ -251,3 +251,23 @@ def test_fuzz_case_reader(data):
         assert "\n" not in str(err)
     else:
         assert case.quantities and case.id
+
+
+def test_compare_semantics():
+    """|v − r| ≤ atol + rtol·|r|; documented deviations are never failures."""
+    from trussfe.validate.cases import Quantity
+    from trussfe.validate.engine import compare
+
+    q = Quantity(name="q", path="x", reference=100.0, rtol=1e-3)
+    assert compare(q, np.float64(100.1)).status == "pass"        # exactly at the bound
+    assert compare(q, 100.2).status == "fail"
+    assert compare(q, 100.2).rel_error == pytest.approx(2e-3)
+    assert compare(q, float("nan")).status == "error"
+    assert compare(q, "100").status == "error"
+    assert compare(q, True).status == "error"
+    z = Quantity(name="z", path="x", reference=0.0, atol=1e-9)
+    r = compare(z, 5e-10)
+    assert r.status == "pass" and r.rel_error is None
+    d = Quantity(name="d", path="x", reference=100.0, rtol=1e-3, expect="differ")
+    assert compare(d, 103.4).status == "differs" and not compare(d, 103.4).failed
+    assert compare(d, 100.0).status == "agrees" and not compare(d, 100.0).failed
