@@ -45,7 +45,7 @@ def test_triangular_truss_law_of_cosines(x):
     s = M.triangular_truss(x=x)
     a = 2.5 + x
     cos_o2 = (a**2 + 2.0**2 - 2.0**2) / (2 * a * 2.0)
-    # Newton stops at a length misfit of 1e-12 × the longest bar
+    # Newton stops at a length misfit of 1e-14 × the longest bar
     assert_allclose(s.coords[1], [a * cos_o2, a * np.sqrt(1 - cos_o2**2)], rtol=1e-10)
 
 

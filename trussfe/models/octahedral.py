@@ -121,7 +121,8 @@ def _equilibrium_coords(base_side: float, longeron: float, length: float) -> np.
     h = base_side / (2.0 * np.sqrt(3.0))
     guess[:3] = [[-base_side / 2, -h, 0.0], [base_side / 2, -h, 0.0], [0.0, 2 * h, 0.0]]
     return solve_positions(guess, _CONN, _bay_lengths(np.full(3, length), base_side, longeron),
-                           fixed, member_ids=_MEMBER_IDS, item="double_octahedron").coords
+                           fixed, member_ids=_MEMBER_IDS, item="double_octahedron",
+                             tolerance=1e-14).coords
 
 
 def double_octahedron(active_lengths: Sequence[float] = (EQUILIBRIUM_LENGTH,) * 3,
@@ -182,7 +183,8 @@ def double_octahedron(active_lengths: Sequence[float] = (EQUILIBRIUM_LENGTH,) * 
     fixed = np.zeros((9, 3), dtype=bool)
     fixed[:3] = True
     coords = solve_positions(x0, _CONN, _bay_lengths(active, base_side, longeron), fixed,
-                             member_ids=_MEMBER_IDS, item="double_octahedron").coords
+                             member_ids=_MEMBER_IDS, item="double_octahedron",
+                             tolerance=1e-14).coords
     section = octahedral_tube() if inner_diameter is None else octahedral_tube(inner_diameter)
     m = len(_MEMBER_IDS)
     supports = np.zeros((9, 6), dtype=bool)
