@@ -6,6 +6,8 @@ fault in the catalogue cannot hide behind a fault in the solver.
 """
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from numpy.testing import assert_allclose
 
 import trussfe.models as M
@@ -264,3 +266,41 @@ def test_three_bar_hand_solution():
     c = 1 / np.sqrt(2)
     n_bd = 1000.0 / (1 + 2 * c**3)
     assert_allclose(res.axial_force, [n_bd * c**2, n_bd, n_bd * c**2], rtol=1e-9)
+
+
+# ------------------------------------------------------------------ shipped models
+SHIPPED = sorted(p.name for p in (__import__("pathlib").Path(__file__).resolve().parents[1]
+                                  / "meshes").glob("*.toml"))
+
+
+@pytest.mark.parametrize("name", SHIPPED)
+def test_shipped_models_static_equilibrium(name):
+    """Every shipped model solves with ``trussfe static`` (truss bar model) and its reactions
+    balance the applied loads (global statics), e.g. 3 × 46.0 N on the double octahedron."""
+    from trussfe._resources import mesh_path
+    from trussfe.cli.cmd_static import analyse
+    from trussfe.io.model_file import read_model
+
+    s = read_model(mesh_path(name))
+    doc = analyse(mesh_path(name), bar_model="truss")
+    reactions = np.array([v["reaction"] for v in doc["nodes"].values() if "reaction" in v])
+    weight = (s.masses.sum() + s.member_mass.sum()) * s.gravity
+    applied = s.loads[:, : s.dim].sum(axis=0) + weight
+    assert_allclose(reactions.sum(axis=0), -applied, atol=1e-8 * max(1.0, np.abs(applied).max()))
+    assert len(doc["members"]) == s.n_members
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.lists(st.floats(1.11, 1.22), min_size=3, max_size=3))
+def test_double_octahedron_any_lengths(lengths):
+    """Any active lengths in the prototype's stroke assemble, close every bar, keep the base
+    and mirror the base in the midplane (property-based)."""
+    s = M.double_octahedron(lengths)
+    L = s.lengths()
+    assert_allclose(L[[s.member_index(a) for a in M.ACTIVE_MEMBERS]], lengths, rtol=1e-12)
+    p = s.coords[3:6]
+    nrm = np.cross(p[1] - p[0], p[2] - p[0])
+    nrm /= np.linalg.norm(nrm)
+    base = s.coords[:3]
+    assert_allclose(base - 2 * ((base - p[0]) @ nrm)[:, None] * nrm, s.coords[[6, 8, 7]],
+                    atol=1e-12)
