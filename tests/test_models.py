@@ -12,7 +12,7 @@ from numpy.testing import assert_allclose
 
 import trussfe.models as M
 from trussfe.errors import AnalysisError, InputError
-from trussfe.kinematics import compatibility_matrix, equilibrium_matrix
+from trussfe.kinematics import compatibility_matrix, equilibrium_matrix, solve_positions
 
 
 def determinate_solve(s):
@@ -230,6 +230,21 @@ def test_chain_with_active_lengths():
     assert_allclose(c.coords[:9], one.coords, atol=1e-10)
     L = c.lengths().reshape(2, 18)
     assert_allclose(L[1, [6, 7, 8]], act[1], rtol=1e-12)
+    # a chain of 20 bays with random lengths in the stroke: every bar closes, and the general
+    # forward-position solver of the whole chain, started nearby, finds the same geometry
+    rng = np.random.default_rng(1)
+    act = rng.uniform(M.SLEW_SHORT, M.SLEW_LONG, (20, 3))
+    c = M.double_octahedral_chain(20, active_lengths=act)
+    ref = np.tile(M.double_octahedron().lengths(), (20, 1))
+    ref[:, [6, 7, 8]] = act
+    assert_allclose(c.lengths().reshape(20, 18), ref, rtol=1e-12)
+    fixed = np.zeros((c.n_nodes, 3), dtype=bool)
+    fixed[:3] = True
+    start = c.coords + np.where(fixed, 0.0, rng.normal(scale=1e-3, size=c.coords.shape))
+    r = solve_positions(start, c.connectivity, c.lengths(), fixed)
+    assert_allclose(r.coords, c.coords, atol=1e-10)
+    with pytest.raises(AnalysisError, match="bay 2"):
+        M.double_octahedral_chain(2, active_lengths=[[1.1684] * 3, [3.0] * 3])
     with pytest.raises(InputError, match="n_bays"):
         M.double_octahedral_chain(0)
     with pytest.raises(InputError, match="shape"):
