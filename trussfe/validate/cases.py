@@ -132,6 +132,16 @@ def analysis_names() -> tuple[str, ...]:
     return tuple(sorted(out))
 
 
+def resolve_model_path(model: str, case_file: Path) -> Path:
+    """A case's model file: relative to the case file, else to the folder holding
+    ``validation/`` (so ``meshes/x.toml`` works from a checkout and an installed package)."""
+    candidates = [case_file.parent / model, case_file.parent.parent.parent / model]
+    for c in candidates:
+        if c.is_file():
+            return c.resolve()
+    return candidates[0].resolve()      # reported as missing when the case runs
+
+
 def load_case(path: str | Path) -> Case:
     """Read one case file.
 
@@ -169,13 +179,20 @@ def _parse(data: dict, path: Path) -> Case:
         raise InputError("case", "missing 'id'")
     case = Case(id=_str(raw["id"], "case.id"), title=_str(raw.get("title", raw["id"]), "case.title"),
                 file=path, quantities=[], notes=_str(raw.get("notes", ""), "case.notes"))
-    if ("analysis" in raw) == ("python" in raw):
-        raise InputError("case", "give exactly one of 'analysis' (a trussfe command) or "
-                                 "'python' (\"module:function\")")
+    if "analysis" not in raw and "python" not in raw:
+        raise InputError("case", "give 'analysis' (a trussfe command) or 'python' "
+                                 "(\"module:function\")")
     if "python" in raw:
+        # The function computes the result; an 'analysis' beside it only labels the case.
         case.python = _str(raw["python"], "case.python")
         if ":" not in case.python:
             raise InputError("case.python", "expected \"module:function\"")
+        if "analysis" in raw:
+            case.analysis = _str(raw["analysis"], "case.analysis")
+        for key in ("model", "catalogue", "parameters", "plot"):
+            if key in raw:
+                raise InputError(f"case.{key}", f"'{key}' applies to an 'analysis' case; a "
+                                                "python case builds its own model")
     else:
         case.analysis = _str(raw["analysis"], "case.analysis")
         names = analysis_names()
@@ -186,7 +203,7 @@ def _parse(data: dict, path: Path) -> Case:
             raise InputError("case", "an analysis case needs exactly one of 'model' (a file) "
                                      "or 'catalogue' (a trussfe.models function)")
     if "model" in raw:
-        case.model = (path.parent / _str(raw["model"], "case.model")).resolve()
+        case.model = resolve_model_path(_str(raw["model"], "case.model"), path)
     if "catalogue" in raw:
         case.catalogue = _str(raw["catalogue"], "case.catalogue")
         from .. import models
@@ -202,9 +219,6 @@ def _parse(data: dict, path: Path) -> Case:
     if "parameters" in raw and case.catalogue is None:
         raise InputError("case.parameters", "parameters apply to a 'catalogue' model only")
     if "plot" in raw:
-        if case.analysis is None:
-            raise InputError("case.plot", "plot draws the model of an 'analysis' case; a "
-                                          "python case returns its own figures")
         case.plot = _str(raw["plot"], "case.plot")
     tags = raw.get("tags", [])
     if not isinstance(tags, list) or not all(isinstance(t, str) for t in tags):
