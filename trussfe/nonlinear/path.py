@@ -139,8 +139,15 @@ class _Stepper:
         K = res["tangent"][self.free][:, self.free] if tangent else None
         return res, res["internal"][self.free], K
 
-    def step(self, uf0, lam0, fac0, ds, direction, du_prev, mode=None):
-        """One step of size ``ds``; returns (uf, lam, res, iterations) or None."""
+    def step(self, uf0, lam0, fac0, ds, direction, du_prev, mode=None, fac_iter=None,
+             refactor_ratio=0.5):
+        """One step of size ``ds`` from a converged state.
+
+        ``fac0`` is the tangent factor at the start (predictor); ``fac_iter``, if given, a
+        factor nearer the expected solution for the modified-Newton corrections, which
+        refactorise when the residual falls by less than ``refactor_ratio``.  Returns
+        ``(uf, lam, res, iterations, fresh factor or None)`` or None.
+        """
         mode = mode or self.control
         f = self.f
         try:
@@ -177,7 +184,9 @@ class _Stepper:
         # refactorised only when the residual stops falling fast (ratio > 0.5)
         modified = len(uf0) > self.full_newton_size
         fac, dt_fac, rprev, fresh = fac0, ut, np.inf, None
-        for it in range(1, self.max_iter + 1):
+        if fac_iter is not None and modified:
+            fac, dt_fac = fac_iter, fac_iter.solve(f)
+        for it in range(1, (self.max_iter if refactor_ratio <= 0.5 else 2 * self.max_iter) + 1):
             uf = uf0 + du
             lam = lam0 + dlam
             res, fint, K = self.eval(uf, tangent=not modified)
@@ -191,7 +200,7 @@ class _Stepper:
                     return None
                 return uf, lam, res, it, fresh
             try:
-                if not modified or rn > 0.5 * rprev:
+                if not modified or rn > refactor_ratio * rprev:
                     if K is None:
                         K = self.eval(uf)[2]
                     fac = factorize(K)
@@ -509,20 +518,29 @@ def _locate_failure(st, m, uf, lam, fac, dss, direction, du_prev, mode, mg0, uf1
     best = (uf1, lam1, res1, fac1)
     side = 0
     hist = [(a, ga), (b, gb)]
+    near = fac1                      # latest factor near the event, for the corrections
     for _ in range(60):
         (c0, g0), (c1, g1) = hist[-2], hist[-1]
         c = c1 - g1 * (c1 - c0) / (g1 - g0) if g1 != g0 else 0.5 * (a + b)
-        if not a < c < b or len(hist) == 2:
+        if len(hist) == 2:
+            # first guess: the earliest of the members' own linear crossing estimates (the
+            # maximum margin at θ = 1 is inflated by members that cross later in the step)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                th = -mg0[cand] / (mg1[cand] - mg0[cand])
+            c = float(np.nanmin(th)) if th.size else 0.5
+        if not a < c < b:
             c = b - gb * (b - a) / (gb - ga) if gb != ga else 0.5 * (a + b)
         if not a < c < b:
             c = 0.5 * (a + b)
-        new = st.step(uf, lam, fac, dss * c, direction, du_prev, mode)
+        new = st.step(uf, lam, fac, dss * c, direction, du_prev, mode, fac_iter=near,
+                      refactor_ratio=0.9)
         if new is None:
             c = 0.5 * (a + b)
             new = st.step(uf, lam, fac, dss * c, direction, du_prev, mode)
             if new is None:
                 break
         u2, l2, r2, _, f2 = new
+        near = f2 if f2 is not None else near
         gc = g(m.margins(r2))
         hist.append((c, gc))
         log.debug("locate: theta %.12g margin %.3e", c, gc)
