@@ -18,6 +18,7 @@ options override them)::
 """
 from __future__ import annotations
 
+import logging
 import math
 from pathlib import Path
 from typing import Any
@@ -36,6 +37,7 @@ SETTINGS = {"control": str, "steps": int, "step": float, "max_load_factor": floa
             "monitor": str, "bar_model": str, "subdivisions": int, "imperfection": float,
             "branch": bool, "max_displacement": float}
 AXES = "xyz"
+log = logging.getLogger(__name__)
 
 
 def parse_settings(raw: Any, structure: Structure | None = None, base_dir=None) -> dict:
@@ -106,6 +108,9 @@ def run_postcritical(structure: Structure, **options) -> PathResult:
         opts.pop("step", None)
     opts.update(given)
     laws = structure.extensions.get("failure") or FailureLaws.none(structure.n_members)
+    if np.any(structure.gravity != 0):
+        log.warning("%s: gravity is not part of the post-critical load pattern; only [loads] "
+                    "is scaled by the load factor", structure.source or structure.name)
     model = NonlinearModel(structure, bar_model=opts.pop("bar_model", "truss"),
                            subdivisions=opts.pop("subdivisions", 8), laws=laws)
     imperfection = opts.pop("imperfection", 0.0)
