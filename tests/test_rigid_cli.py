@@ -1,0 +1,152 @@
+# SPDX-License-Identifier: MIT
+"""``trussfe simulate`` end to end, and the one-line errors for bad input (issue item 11)."""
+import json
+
+import numpy as np
+import pytest
+from numpy.testing import assert_allclose
+
+from trussfe._resources import mesh_path
+from trussfe.cli import main
+from trussfe.cli.cmd_simulate import analyse
+from trussfe.errors import AnalysisError, InputError
+from trussfe.io.model_file import read_model
+from trussfe.rigid.motion import Motion, load_motion
+from trussfe.rigid.reproductions import triangular_truss
+from trussfe.rigid.simulate import simulate
+
+MODEL = "triangular_truss_motion_active.toml"
+
+
+def _mesh(name):
+    return str(mesh_path(name))
+
+
+def test_simulate_cli_writes_every_output(tmp_path):
+    out = tmp_path / "r.json"
+    rc = main(["simulate", _mesh(MODEL), "--motion", _mesh("triangular_truss_motion_3s.toml"),
+               "--json", str(out), "--npz", str(tmp_path / "r.npz"), "--vtk",
+               str(tmp_path / "vtk"), "--plots", str(tmp_path / "png")])
+    assert rc == 0
+    d = json.loads(out.read_text())
+    assert d["command"] == "simulate" and d["units"] == "SI"
+    assert len(d["time"]) == 50
+    assert len(d["members"]["follower"]["axial_force"]) == 50
+    assert set(d["nodes"]["O1"]) == {"position", "reaction"}
+    assert "reaction" not in d["nodes"]["B"]
+    assert len(d["actuators"]["active"]["force"]) == 50
+    assert (tmp_path / "vtk" / "triangular_truss_motion_active.pvd").is_file()
+    assert len(list((tmp_path / "vtk").glob("*.vtu"))) == 50
+    assert (tmp_path / "png" / "von_mises.png").is_file()
+    z = np.load(tmp_path / "r.npz")
+    assert z["von_mises"].shape == (50, 2, 7)
+
+
+def test_model_file_matches_built_model():
+    """The shipped TOML model gives the O1 reaction after Table 3.2 (−20.1303, 92.9545 N)."""
+    d = analyse(_mesh(MODEL))
+    assert_allclose(d["nodes"]["O1"]["reaction"][0], [-20.1303, 92.9545], rtol=5e-6)
+    assert d["time"] == [0.0]
+
+
+def test_motion_file_reproduces_velocity():
+    """Lacy section 3.7: 1.2477 m/s from the shipped 3 s motion file."""
+    s = read_model(_mesh(MODEL))
+    m = load_motion(_mesh("triangular_truss_motion_3s.toml"), s)
+    assert_allclose(m.velocity.max(), 1.2477, rtol=5e-5)
+
+
+def test_no_assembly_names_step_and_members():
+    """Active member longer than follower + base (4 m): no triangle exists."""
+    s = triangular_truss()
+    L = np.array([[2.5], [3.5], [4.5]])
+    m = Motion([0, 1, 2], [1], L, np.zeros_like(L), np.zeros_like(L))
+    with pytest.raises(AnalysisError, match=r"step 2 .*no assembly.*'active' = 4\.5"):
+        simulate(s, m)
+
+
+def test_singular_position_is_reported_not_garbage():
+    """At 4.0 m the triangle is flat: the forces are not determined there."""
+    s = triangular_truss()
+    L = np.array([[3.9], [3.99], [4.0]])
+    m = Motion([0, 1, 2], [1], L, np.ones_like(L), np.zeros_like(L))
+    with pytest.raises(AnalysisError, match="singular"):
+        simulate(s, m)
+
+
+def test_non_monotonic_time_and_nan():
+    with pytest.raises(InputError, match="increase strictly"):
+        Motion([0.0, 0.2, 0.1], [1], np.full((3, 1), 2.5), np.zeros((3, 1)), np.zeros((3, 1)))
+    L = np.array([[2.5], [np.nan]])
+    with pytest.raises(InputError, match="NaN at sample 1"):
+        Motion([0.0, 0.1], [1], L, np.zeros((2, 1)), np.zeros((2, 1)))
+
+
+def test_unknown_active_member_in_motion(tmp_path):
+    f = tmp_path / "m.toml"
+    f.write_text('[motion]\nduration = 1.0\nstart = { actuator = 2.5 }\nend = { active = 3 }\n')
+    with pytest.raises(InputError, match="'actuator' is not an active member"):
+        load_motion(f, read_model(_mesh(MODEL)))
+
+
+def test_unknown_member_in_active_members_table(tmp_path):
+    text = open(_mesh(MODEL)).read().replace("[active_members.active]",
+                                             "[active_members.activ]")
+    f = tmp_path / "bad.toml"
+    f.write_text(text)
+    with pytest.raises(InputError, match="'activ' is not a member"):
+        read_model(f)
+
+
+def test_cli_bad_input_one_line_exit_2(tmp_path, capsys):
+    f = tmp_path / "m.toml"
+    f.write_text('[motion]\nduration = -1.0\nstart = { active = 2.5 }\nend = { active = 3 }\n')
+    rc = main(["simulate", _mesh(MODEL), "--motion", str(f), "--json", str(tmp_path / "o.json")])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert rc == 2 and len(err) == 1 and err[0].startswith("trussfe: error:")
+    assert not (tmp_path / "o.json").exists()
+
+
+def test_statically_indeterminate_truss_needs_fe():
+    """A third bar from O1 to B over-constrains B: rigid-body forces are not determined."""
+    from trussfe import build_structure
+    from trussfe.rigid.reproductions import ALUMINIUM, TUBE
+    s = build_structure([[0, 0], [2, 0], [1, 1], [1, 0]], [[0, 2], [1, 2], [3, 2]],
+                        section=TUBE, material=ALUMINIUM, supports={0: "xy", 1: "xy", 3: "xy"})
+    with pytest.raises(AnalysisError, match="statically indeterminate.*finite-element"):
+        simulate(s)
+
+
+@pytest.mark.parametrize("edit, match", [
+    ("tube_length = 2.0", "tube_length = 5.0", ),
+    ("base_mass = 2.4", "base_mass = -1.0"),
+    ("base_cg = 1.05", "base_cg = 1.05\nstroke = 3"),
+])
+def test_active_member_table_errors(tmp_path, edit, match):
+    """Tube longer than the member, negative mass, unknown key: one InputError each."""
+    text = open(_mesh(MODEL)).read().replace(edit, match)
+    f = tmp_path / "bad.toml"
+    f.write_text(text)
+    with pytest.raises(InputError, match=r"active_members\.active"):
+        read_model(f)
+
+
+def test_simulate_without_active_members_is_a_static_analysis(tmp_path):
+    """A model without [active_members] is analysed at rest; a --motion for it is refused."""
+    text = open(_mesh(MODEL)).read().split("[active_members.active]")[0]
+    f = tmp_path / "plain.toml"
+    f.write_text(text)
+    d = analyse(str(f))
+    from trussfe.fem.static import solve_static
+    fe = solve_static(read_model(f), "pinned-beam")      # independent solver, uniform tubes
+    assert_allclose(d["nodes"]["O1"]["reaction"][0], fe.reactions[1, :2], rtol=1e-9)
+    with pytest.raises(InputError, match="no \\[active_members\\]"):
+        analyse(str(f), motion=_mesh("triangular_truss_motion_3s.toml"))
+
+
+def test_cli_thesis_scheme_reproduces_base_simulation():
+    """``--scheme thesis`` on the shipped files gives Lacy's 4.3393e6 Pa and 2.6256e7 Pa."""
+    d = analyse(_mesh(MODEL), motion=_mesh("triangular_truss_motion_3s.toml"), scheme="thesis")
+    summ = d["summary"]["members"]
+    assert_allclose(summ["follower"]["max_von_mises"], 4.3393e6, rtol=5e-5)
+    assert_allclose(summ["active"]["max_von_mises"], 2.6256e7, rtol=5e-5)

@@ -1,0 +1,272 @@
+# SPDX-License-Identifier: MIT
+"""Newton–Euler force model of a pin-jointed truss along a motion (Lacy chapters 2 and 4).
+
+Every member is a rigid body pinned at its two end nodes.  A passive member is a uniform tube;
+an active member is its active base (pinned at the start node) plus its leadscrew tube
+(pinned at the end node) turning together (:mod:`trussfe.rigid.active`).  Each member is a set
+of mass elements ``k`` with mass m_k, centre of gravity at distance s_k(t) from the start node
+along the unit vector e and moment of inertia I_k about its own centre of gravity.
+
+**Member equations** (Lacy eqs. 2.9–2.11, 4.20).  With F_a, F_b the forces the nodes exert on
+the member's ends, d = x_b − x_a = L e, and a_k = a_a + s̈_k e + 2 ṡ_k ė + s_k ë the
+acceleration of element k,
+
+.. math::
+
+   F_a + F_b &= R = \\sum_k m_k (a_k - g), \\\\
+   d \\times F_b &= M_a = \\sum_k \\left[ s_k e \\times m_k (a_k - g) + I_k \\alpha \\right].
+
+The moment equation fixes the transverse part of F_b, ``F_b⊥ = (M_a × e)/L``, and the force
+equation the transverse part of F_a; along the axis one unknown is left per member, the
+tension ``t = F_b·e`` at its end node (then ``−F_a·e = t − R·e``).
+
+**Nodal equations** (Lacy's nodal constraint equations with lumped masses M_n and loads P_n):
+``Σ_ends F = P + M g − M a + r`` with r the support reactions.  On the free coordinates the
+tensions enter through the equilibrium matrix, ``Bᵀ t = P + M g − M a − Σ F_known``, a sparse
+square system for a statically determinate truss; the reactions then follow on the supported
+coordinates.  This is Lacy's 11 × 11 (triangle) and 117 × 117 (double octahedron) system
+with each member's transverse forces eliminated by its own equations (DESIGN.md); it is
+solved for all time steps at once.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import AnalysisError
+from ..model.structure import Structure
+from .active import active_members
+from .kinematics import Kinematics, _count_message, _Pattern, pad3
+from .linalg import SingularStep, batched_solve
+
+
+@dataclass
+class MemberBodies:
+    """Mass elements of every member: a distributed tube and a lumped base.
+
+    Attributes
+    ----------
+    tube_mass, tube_length : ndarray, shape (m,)
+        Mass ρ A L_t and length L_t of the uniform tube part (the whole member if passive).
+    tube_radius2 : ndarray, shape (m,)
+        Mean I/A of the tube section, m² (the cross-section part of its transverse inertia).
+    base_mass, base_cg, base_inertia_cg : ndarray, shape (m,)
+        Active base mass, its centre of gravity from the start node, its inertia about its
+        own centre of gravity (zero for passive members).
+    active : ndarray of bool, shape (m,)
+    """
+
+    tube_mass: np.ndarray
+    tube_length: np.ndarray
+    tube_radius2: np.ndarray
+    base_mass: np.ndarray
+    base_cg: np.ndarray
+    base_inertia_cg: np.ndarray
+    active: np.ndarray
+
+    def tube_inertia(self, seg_length: np.ndarray | float, seg_mass: np.ndarray,
+                     full_length: bool = False) -> np.ndarray:
+        """Transverse inertia of a tube piece about its centre, m (I/A + ℓ²/12).
+
+        ``full_length=True`` uses the whole tube length for every piece, as Lacy's Appendix A
+        does for the section equations (``iz``, ``is``).
+        """
+        ell = self.tube_length if full_length else seg_length
+        return seg_mass * (self.tube_radius2 + np.square(ell) / 12.0)
+
+
+def member_bodies(structure: Structure) -> MemberBodies:
+    """Mass elements of the structure's members (Lacy Appendix A/C masses).
+
+    Passive members: ρ A L, centre of gravity at L/2 and I = m (I_sec/A + L²/12)
+    (Lacy's ``m (3 OD² + 3 ID² + 4 L²)/48`` for a tube).  Active members: base mass, centre of
+    gravity and inertia from ``[active_members]``; tube ρ A L_tube with the member's section.
+    """
+    L = structure.lengths()
+    A = structure.area
+    Isec = 0.5 * (np.nan_to_num(structure.Iy) + np.nan_to_num(structure.Iz))
+    m = structure.n_members
+    tl = L.copy()
+    mb = np.zeros(m)
+    cg = np.zeros(m)
+    ib = np.zeros(m)
+    act = np.zeros(m, dtype=bool)
+    for a in active_members(structure):
+        k = a.member
+        tl[k] = a.tube_length
+        mb[k], cg[k], ib[k] = a.base_mass, a.base_cg, a.base_inertia_cg
+        act[k] = True
+    return MemberBodies(tube_mass=structure.density * A * tl, tube_length=tl,
+                        tube_radius2=Isec / A, base_mass=mb, base_cg=cg, base_inertia_cg=ib,
+                        active=act)
+
+
+@dataclass
+class NodalForces:
+    """Forces at every pin, every time step.
+
+    Attributes
+    ----------
+    end_force : ndarray, shape (nt, m, 2, 3)
+        Force exerted by the start / end node on the member, N.
+    tension_end : ndarray, shape (nt, m)
+        Axial force at the end node, t = F_b·e (positive in tension).
+    tension_start : ndarray, shape (nt, m)
+        Axial force at the start node, −F_a·e.
+    reactions : ndarray, shape (nt, n, dim)
+        Support reactions (zero on free coordinates), N.
+    """
+
+    end_force: np.ndarray
+    tension_end: np.ndarray
+    tension_start: np.ndarray
+    reactions: np.ndarray
+
+
+def _to_nodes(conn: np.ndarray, n: int, at_start: np.ndarray, at_end: np.ndarray) -> np.ndarray:
+    """Sum member-end vectors (t, m, 3) into their nodes (t, n, 3) with a sparse incidence."""
+    import scipy.sparse as sp
+    m = conn.shape[0]
+    inc = sp.csr_matrix((np.ones(2 * m), (conn.T.ravel(), np.arange(2 * m))), shape=(n, 2 * m))
+    stacked = np.concatenate([at_start, at_end], axis=1)            # (t, 2m, 3)
+    nt = stacked.shape[0]
+    out = inc @ stacked.transpose(1, 0, 2).reshape(2 * m, -1)
+    return np.asarray(out).reshape(n, nt, 3).transpose(1, 0, 2)
+
+
+def element_accelerations(kin: Kinematics, bodies: MemberBodies, conn: np.ndarray):
+    """Accelerations of the tube and base centres of gravity, each (nt, m, 3)."""
+    e, ed, edd = kin.unit, kin.unit_rate, kin.unit_acc
+    aa = kin.acceleration[:, conn[:, 0]]
+    L, Ld, Ldd = kin.length[..., None], kin.length_rate[..., None], kin.length_acc[..., None]
+    s_t = L - bodies.tube_length[None, :, None] / 2.0
+    a_tube = aa + Ldd * e + 2.0 * Ld * ed + s_t * edd
+    a_base = aa + bodies.base_cg[None, :, None] * edd
+    return a_tube, s_t, a_base
+
+
+def nodal_forces(structure: Structure, kin: Kinematics, bodies: MemberBodies | None = None,
+                 *, check: bool | None = None) -> NodalForces:
+    """Solve the Newton–Euler equations at every time step (Lacy eqs. 2.13–2.14, 4.20).
+
+    Parameters
+    ----------
+    structure : Structure
+        Statically determinate pin-jointed truss.
+    kin : Kinematics
+        Its kinematics along the motion (use ``kin.at_rest()`` for the static forces).
+    bodies : MemberBodies, optional
+        Mass elements (default :func:`member_bodies`).
+    check : bool, optional
+        Test every step's equilibrium matrix for singularity; by default only when the
+        kinematics carry no factorisation (:func:`compute_kinematics` has tested the same
+        matrices already).
+
+    Returns
+    -------
+    NodalForces
+
+    Raises
+    ------
+    AnalysisError
+        A statically indeterminate truss (its forces need the FE model), a mechanism, or a
+        singular configuration (naming the time step).
+    """
+    if np.any(structure.is_beam):
+        raise AnalysisError(structure.source or structure.name, "the rigid-body model handles "
+                            "pin-jointed bars only; member "
+                            f"'{structure.member_ids[int(np.flatnonzero(structure.is_beam)[0])]}'"
+                            " is a beam")
+    bodies = member_bodies(structure) if bodies is None else bodies
+    if check is None:
+        check = kin.compat is None
+    conn = structure.connectivity
+    dim = structure.dim
+    nt, m = kin.length.shape
+    g = pad3(np.asarray(structure.gravity, dtype=float))
+    e = kin.unit
+    L = kin.length[..., None]
+    a_tube, s_t, a_base = element_accelerations(kin, bodies, conn)
+    mt = bodies.tube_mass[None, :, None]
+    mb = bodies.base_mass[None, :, None]
+    f_tube = mt * (a_tube - g)                                   # (time, member, 3)
+    f_base = mb * (a_base - g)
+    R = f_tube + f_base
+    inertia = (bodies.tube_inertia(bodies.tube_length, bodies.tube_mass)
+               + bodies.base_inertia_cg)[None, :, None]
+    Ma = (np.cross(s_t * e, f_tube) + np.cross(bodies.base_cg[None, :, None] * e, f_base)
+          + inertia * kin.alpha)
+    Fb_perp = np.cross(Ma, e) / L
+    Re = np.einsum("tmi,tmi->tm", R, e)
+    Fa_perp = R - Re[..., None] * e - Fb_perp
+
+    pattern = _Pattern(structure)
+    if pattern.m != pattern.nfree:
+        raise AnalysisError(structure.source or structure.name, _count_message(pattern))
+    t = 0.5 * Re                       # members between two fixed nodes: symmetric split
+    # Known (tension-free) parts of the end forces, summed at the nodes.
+    n = structure.n_nodes
+    S = _to_nodes(conn, n, Re[..., None] * e + Fa_perp, Fb_perp)
+    P = pad3(structure.loads[:, :dim])[None]
+    Mn = structure.masses[None, :, None]
+    rhs = (P + Mn * (g - kin.acceleration) - S)[..., :dim].reshape(nt, n * dim)
+    try:
+        if kin.compat is not None:
+            # Bᵀ t = rhs with the factorisation kept from the kinematics.
+            tl = kin.compat.solve(rhs[:, pattern.free_flat], transpose=True)
+        else:
+            tl = batched_solve(pattern.cols, pattern.rows, pattern.values(e[..., :dim]),
+                               (pattern.nfree, pattern.m), rhs[:, pattern.free_flat],
+                               check=check)
+    except SingularStep as s:
+        raise AnalysisError(f"step {s.step} (t = {kin.time[s.step]:.6g} s)",
+                            "the truss is at a singular position (its equilibrium matrix is "
+                            "rank deficient): the member forces are not determined there"
+                            ) from None
+    t[:, pattern.loaded_idx] = tl
+    Fb = t[..., None] * e + Fb_perp
+    Fa = (Re - t)[..., None] * e + Fa_perp
+    tot = _to_nodes(conn, n, Fa, Fb)
+    react = (tot - P - Mn * (g - kin.acceleration))[..., :dim]
+    react = np.where(structure.translation_supports[None], react, 0.0)
+    if not np.all(np.isfinite(react)):
+        k = int(np.flatnonzero(~np.isfinite(react).all(axis=(1, 2)))[0])
+        raise AnalysisError(f"step {k}", "non-finite forces (degenerate geometry)")
+    return NodalForces(end_force=np.stack([Fa, Fb], axis=2), tension_end=t,
+                       tension_start=t - Re, reactions=react)
+
+
+def composite_cg_inertia(bodies: MemberBodies, length: np.ndarray
+                         ) -> tuple[np.ndarray, np.ndarray]:
+    """Moving centre of gravity and varying inertia of every member (Lacy eqs. 4.58–4.61).
+
+    Parameters
+    ----------
+    bodies : MemberBodies
+    length : ndarray, shape (nt, m)
+        Member lengths along the motion.
+
+    Returns
+    -------
+    cg : ndarray, shape (nt, m)
+        Distance of the member's centre of gravity from its start node, m.
+    inertia : ndarray, shape (nt, m)
+        Transverse moment of inertia about that centre of gravity, kg·m².
+
+    Notes
+    -----
+    For an active member (Appendix C, ``cg7``, ``i7b1``)
+
+    .. math:: cg = \\frac{m_t (L - l_t/2) + m_b\\, cg_b}{m_t + m_b}, \\quad
+              I = I_t + I_b + m_t (L - l_t/2 - cg)^2 + m_b (cg - cg_b)^2 .
+
+    The force model itself keeps the tube and base as separate bodies, which is equivalent.
+    """
+    L = np.asarray(length, dtype=float)
+    mt, mb = bodies.tube_mass, bodies.base_mass
+    st = L - bodies.tube_length / 2.0
+    cg = (mt * st + mb * bodies.base_cg) / (mt + mb)
+    inertia = (bodies.tube_inertia(bodies.tube_length, mt) + bodies.base_inertia_cg
+               + mt * (st - cg) ** 2 + mb * (cg - bodies.base_cg) ** 2)
+    return cg, inertia

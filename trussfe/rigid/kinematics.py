@@ -1,0 +1,420 @@
+# SPDX-License-Identifier: MIT
+"""Kinematics of a truss along a prescribed motion of its active members.
+
+At every time step (Lacy sections 2.3 and 4.4, done here for any topology):
+
+1. **positions** from the member lengths by the general forward-position solver, warm-started
+   from the previous step (:func:`trussfe.kinematics.solve_positions`);
+2. **velocities** from the compatibility equations ``B v = dL/dt`` (active members prescribed,
+   passive members zero);
+3. **accelerations** from their time derivative, per member
+
+   .. math:: e\\cdot(a_b - a_a) = \\ddot L - \\frac{\\lVert v_b - v_a\\rVert^2 - \\dot L^2}{L},
+
+   i.e. ``B a = d2L/dt2 - (|v_rel|^2 - (dL/dt)^2)/L`` — exact, no finite differences (DESIGN.md);
+4. each member's unit vector e, its rates ė = (v_rel − L̇ e)/L and
+   ë = (a_rel − L̈ e − 2 L̇ ė)/L, angular velocity ω = e × ė and acceleration α = e × ë
+   (a slender member has no spin about its own axis).
+
+``scheme="thesis"`` reproduces Lacy's Appendix A instead: member angles at each step, angular
+rates by backward differences (ω = α = 0 at the first step), node accelerations from the
+rigid-member formulas (eqs. 2.3–2.8) walking from the supports along the members, and the
+active members' own rates from the motion model.  Its results depend on the step size.
+
+All vectors are stored in 3-D (the z component is zero for planar trusses), array axes
+``(time, member or node, component)``.
+"""
+from __future__ import annotations
+
+import logging
+from collections import deque
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import AnalysisError
+from ..kinematics.assembly import solve_positions
+from ..model.structure import Structure
+from .linalg import CompatSolver, SingularStep
+from .motion import Motion
+
+log = logging.getLogger(__name__)
+
+
+@dataclass
+class Kinematics:
+    """Positions, velocities and accelerations along a motion.
+
+    Attributes
+    ----------
+    time : ndarray, shape (nt,)
+    coords : ndarray, shape (nt, n, dim)
+        Node positions.
+    velocity, acceleration : ndarray, shape (nt, n, 3)
+        Node velocities and accelerations (z = 0 in 2-D).
+    length, length_rate, length_acc : ndarray, shape (nt, m)
+        Member length L, L̇, L̈.
+    unit, unit_rate, unit_acc : ndarray, shape (nt, m, 3)
+        Member unit vector e (start → end node), ė, ë.
+    omega, alpha : ndarray, shape (nt, m, 3)
+        Member angular velocity and acceleration.
+    scheme : str
+        ``"exact"`` or ``"thesis"``.
+    """
+
+    time: np.ndarray
+    coords: np.ndarray
+    velocity: np.ndarray
+    acceleration: np.ndarray
+    length: np.ndarray
+    length_rate: np.ndarray
+    length_acc: np.ndarray
+    unit: np.ndarray
+    unit_rate: np.ndarray
+    unit_acc: np.ndarray
+    omega: np.ndarray
+    alpha: np.ndarray
+    scheme: str = "exact"
+    #: Factorised compatibility matrices (free coordinates × loaded members) of every step,
+    #: reused for velocities, accelerations and (transposed) member forces.
+    compat: CompatSolver | None = None
+
+    @property
+    def n_steps(self) -> int:
+        """Number of time steps."""
+        return self.time.size
+
+    def at_rest(self) -> "Kinematics":
+        """The same positions with every rate and acceleration zero (the static case)."""
+        z3 = np.zeros_like(self.velocity)
+        zm = np.zeros_like(self.length)
+        zu = np.zeros_like(self.unit)
+        return Kinematics(self.time, self.coords, z3, z3.copy(), self.length, zm, zm.copy(),
+                          self.unit, zu, zu.copy(), zu.copy(), zu.copy(), self.scheme,
+                          self.compat)
+
+
+def pad3(x: np.ndarray) -> np.ndarray:
+    """Pad the last axis of a 2-D vector array to 3 components."""
+    if x.shape[-1] == 3:
+        return x
+    return np.concatenate([x, np.zeros(x.shape[:-1] + (3 - x.shape[-1],))], axis=-1)
+
+
+def _step_item(motion: Motion, k: int) -> str:
+    return f"motion: step {k} (t = {motion.time[k]:.6g} s)"
+
+
+def _member_lengths(structure: Structure, motion: Motion) -> np.ndarray:
+    """Member lengths at every step: passive members keep their model length, (nt, m)."""
+    L = np.broadcast_to(structure.lengths(), (motion.n_steps, structure.n_members)).copy()
+    L[:, motion.members] = motion.length
+    return L
+
+
+def solve_motion_positions(structure: Structure, motion: Motion,
+                           coords0: np.ndarray | None = None, progress: bool = False
+                           ) -> np.ndarray:
+    """Node positions at every step of the motion, warm-started step to step.
+
+    Parameters
+    ----------
+    structure : Structure
+    motion : Motion
+    coords0 : ndarray, optional
+        Starting guess for the first step (default: the model's coordinates).
+    progress : bool
+        Show a progress bar (tqdm, on stderr).
+
+    Returns
+    -------
+    ndarray, shape (nt, n, dim)
+
+    Raises
+    ------
+    AnalysisError
+        Naming the time step and the members when no assembly exists for the lengths, or when
+        the assembly passes a singular position.
+    """
+    L = _member_lengths(structure, motion)
+    x0 = np.array(structure.coords if coords0 is None else coords0, dtype=float)
+    nt = motion.n_steps
+    pattern = _Pattern(structure)
+    if nt > BATCH_MIN_STEPS and pattern.m == pattern.nfree:
+        # Follow the branch on a coarse subset of steps, then polish every step at once.
+        idx = np.unique(np.linspace(0, nt - 1, COARSE_STEPS).round().astype(int))
+        coarse = _sequential_positions(structure, motion, L, x0, idx, progress)
+        guess = np.empty((nt,) + x0.shape)
+        flat = coarse.reshape(idx.size, -1)
+        for c in range(flat.shape[1]):          # interpolate each coordinate in time
+            guess.reshape(nt, -1)[:, c] = np.interp(motion.time, motion.time[idx], flat[:, c])
+        X, ok = _batched_newton(structure, pattern, L, guess)
+        if ok.all():
+            return X
+        redo = np.flatnonzero(~ok)
+        log.info("positions: %d of %d steps re-solved one by one", redo.size, nt)
+        start = X[redo[0] - 1] if redo[0] > 0 else x0
+        X[redo[0]:] = _sequential_positions(structure, motion, L, start,
+                                            np.arange(redo[0], nt), progress)
+        return X
+    return _sequential_positions(structure, motion, L, x0, np.arange(nt), progress)
+
+
+#: Motions longer than this are solved by coarse continuation + batched Newton.
+BATCH_MIN_STEPS = 120
+#: Steps of the coarse continuation.
+COARSE_STEPS = 20
+
+
+def _sequential_positions(structure, motion, L, x0, steps, progress) -> np.ndarray:
+    """Warm-started forward position, one step after the other, at the given step indices."""
+    fixed = structure.translation_supports
+    # Members between two fixed nodes neither move nor constrain: leaving them out keeps the
+    # Newton system square (sparse LU instead of least squares).
+    keep = _Pattern(structure).loaded_idx
+    conn = structure.connectivity[keep]
+    ids = [structure.member_ids[i] for i in keep]
+    x = x0
+    out = np.empty((len(steps),) + x0.shape)
+    it = steps
+    if progress and len(steps) > 500:
+        from tqdm import tqdm
+        it = tqdm(steps, desc="positions", unit="step", leave=False)
+    for j, k in enumerate(it):
+        try:
+            r = solve_positions(x, conn, L[k, keep], fixed, member_ids=ids,
+                                item=_step_item(motion, k))
+        except AnalysisError as err:
+            acts = ", ".join(f"'{structure.member_ids[i]}' = {motion.length[k, c]:.6g} m"
+                             for c, i in enumerate(motion.members[:6]))
+            if motion.members.size > 6:
+                acts += f", … ({motion.members.size} active members)"
+            raise AnalysisError(err.item, f"{err.message} (active lengths {acts})") from None
+        x = r.coords
+        out[j] = x
+    return out
+
+
+def _batched_newton(structure, pattern, L, X, tolerance=1e-12, iterations=30):
+    """Chord (modified) Newton on the bar-length equations of every step at once.
+
+    The Jacobian (the compatibility matrix) is factorised once at the interpolated guess and
+    reused: the guess is close, so the iteration contracts fast, and one factorisation per
+    step costs far less than one per iteration.  Returns the positions and a per-step flag:
+    converged and within a tenth of the truss size of its guess (so that no step has jumped
+    to another assembly branch).
+    """
+    conn = structure.connectivity
+    X = X.copy()
+    X0 = X.copy()
+    nt = X.shape[0]
+    scale = float(L.max())
+    Lk = L[:, pattern.loaded_idx]
+    flat = X.reshape(nt, -1)
+    d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
+    try:
+        solver = CompatSolver(pattern.rows, pattern.cols,
+                              pattern.values(d / np.linalg.norm(d, axis=2)[..., None]),
+                              pattern.m)
+    except SingularStep:
+        return X, np.zeros(nt, dtype=bool)
+    for _ in range(iterations):
+        d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
+        r = np.linalg.norm(d, axis=2)[:, pattern.loaded_idx] - Lk
+        if np.abs(r).max() <= tolerance * scale:
+            break
+        dx = solver.solve(-r)
+        if not np.all(np.isfinite(dx)):
+            return X, np.zeros(nt, dtype=bool)
+        flat[:, pattern.free_flat] += dx
+    d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
+    res = np.abs(np.linalg.norm(d, axis=2) - L).max(axis=1)
+    moved = np.abs(X - X0).reshape(nt, -1).max(axis=1)
+    return X, (res <= tolerance * scale) & (moved < 0.1 * scale)
+
+
+class _Pattern:
+    """Sparsity pattern of B restricted to the free coordinates (same at every step)."""
+
+    def __init__(self, structure: Structure):
+        dim = structure.dim
+        conn = structure.connectivity
+        free = ~structure.translation_supports
+        self.free_flat = np.flatnonzero(free.ravel())
+        full_to_free = -np.ones(structure.n_nodes * dim, dtype=np.int64)
+        full_to_free[self.free_flat] = np.arange(self.free_flat.size)
+        m = conn.shape[0]
+        # (member, end, component) → column among the free coordinates, −1 when fixed.
+        cols = full_to_free[(conn[:, :, None] * dim + np.arange(dim)).reshape(m, -1)]
+        # Members with a free coordinate carry an unknown axial force; a member between two
+        # fixed nodes takes no part in the kinematics or in the global equilibrium.
+        self.loaded = np.any(cols >= 0, axis=1)
+        self.loaded_idx = np.flatnonzero(self.loaded)
+        cols = cols[self.loaded]
+        self.m, self.dim, self.nfree = self.loaded_idx.size, dim, self.free_flat.size
+        keep = cols.ravel() >= 0
+        self.keep = keep
+        self.rows = np.repeat(np.arange(self.m), 2 * dim)[keep]
+        self.cols = cols.ravel()[keep]
+
+    def values(self, unit: np.ndarray) -> np.ndarray:
+        """Entries of B for unit vectors ``unit`` (nt, m, dim) → (nt, nnz)."""
+        nt = unit.shape[0]
+        u = unit[:, self.loaded_idx]
+        vals = np.concatenate([-u, u], axis=2).reshape(nt, -1)
+        return vals[:, self.keep]
+
+
+def _solve_compat(structure: Structure, pattern: _Pattern, solver: CompatSolver,
+                  rhs: np.ndarray) -> np.ndarray:
+    """Solve B x = rhs (nt, m) for the free node coordinates; returns (nt, n, dim)."""
+    nt = rhs.shape[0]
+    out = np.zeros((nt, structure.n_nodes * structure.dim))
+    out[:, pattern.free_flat] = solver.solve(rhs[:, pattern.loaded_idx])
+    return out.reshape(nt, structure.n_nodes, structure.dim)
+
+
+def _factorise(structure: Structure, pattern: _Pattern, X: np.ndarray, motion: Motion
+               ) -> CompatSolver:
+    """Factorise the compatibility matrix of every step, or raise at the first singular step
+    (once: velocities, accelerations and member forces all use this matrix or its
+    transpose)."""
+    conn = structure.connectivity
+    d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
+    e = d / np.linalg.norm(d, axis=2)[..., None]
+    try:
+        return CompatSolver(pattern.rows, pattern.cols, pattern.values(e), pattern.m)
+    except SingularStep as s:
+        raise AnalysisError(_step_item(motion, s.step), "the assembly is at a singular "
+                            "position (its compatibility matrix is rank deficient): its "
+                            "velocities, accelerations and member forces are not determined "
+                            "there; choose a motion that avoids it") from None
+
+
+def _count_message(pattern: _Pattern) -> str:
+    if pattern.m > pattern.nfree:
+        return (f"the truss has {pattern.m} members but {pattern.nfree} free node coordinates: "
+                "it is statically indeterminate, so its member forces cannot be found from "
+                "rigid-body equilibrium; analyse it with the finite-element model "
+                "(trussfe static)")
+    return (f"the truss has {pattern.m} members but {pattern.nfree} free node coordinates: it is "
+            "a mechanism (add members or supports)")
+
+
+def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "exact",
+                       coords: np.ndarray | None = None, progress: bool = False) -> Kinematics:
+    """Kinematics of the structure along the motion.
+
+    Parameters
+    ----------
+    structure : Structure
+        Pin-jointed, statically determinate truss (members = free node coordinates).
+    motion : Motion
+        Active member histories.
+    scheme : {"exact", "thesis"}
+        Exact compatibility equations, or Lacy's backward-difference scheme (Appendix A).
+    coords : ndarray, optional
+        Node positions (nt, n, dim) if already known.
+    progress : bool
+        Progress bar while solving the positions.
+
+    Returns
+    -------
+    Kinematics
+    """
+    if scheme not in ("exact", "thesis"):
+        raise AnalysisError("scheme", f"unknown kinematics scheme {scheme!r}; use 'exact' or "
+                            "'thesis'")
+    pattern = _Pattern(structure)
+    if pattern.m != pattern.nfree:
+        raise AnalysisError(structure.source or structure.name, _count_message(pattern))
+    X = (solve_motion_positions(structure, motion, progress=progress) if coords is None
+         else coords)
+    solver = _factorise(structure, pattern, X, motion)
+    nt = X.shape[0]
+    conn = structure.connectivity
+    d = X[:, conn[:, 1]] - X[:, conn[:, 0]]                      # (time, member, dim)
+    L = np.linalg.norm(d, axis=2)
+    e = d / L[..., None]
+    Ld = np.zeros_like(L)
+    Ldd = np.zeros_like(L)
+    Ld[:, motion.members] = motion.velocity
+    Ldd[:, motion.members] = motion.acceleration
+    e3 = pad3(e)
+    if scheme == "exact":
+        V = _solve_compat(structure, pattern, solver, Ld)
+        vrel = V[:, conn[:, 1]] - V[:, conn[:, 0]]
+        quad = (np.einsum("tmi,tmi->tm", vrel, vrel) - Ld ** 2) / L
+        A = _solve_compat(structure, pattern, solver, Ldd - quad)
+        arel = A[:, conn[:, 1]] - A[:, conn[:, 0]]
+        ed = pad3((vrel - Ld[..., None] * e) / L[..., None])
+        edd = pad3((arel - Ldd[..., None] * e) / L[..., None]) - 2 * Ld[..., None] * ed / \
+            L[..., None]
+        omega = np.cross(e3, ed)
+        alpha = np.cross(e3, edd)
+        return Kinematics(motion.time, X, pad3(V), pad3(A), L, Ld, Ldd, e3, ed, edd, omega,
+                          alpha, "exact", solver)
+    # Lacy Appendix A: angle rates by backward differences.
+    omega = np.zeros((nt, structure.n_members, 3))
+    if nt > 1:
+        dt = np.diff(motion.time)[:, None, None]
+        cr = np.cross(e3[:-1], e3[1:])
+        sn = np.linalg.norm(cr, axis=2)
+        cs = np.einsum("tmi,tmi->tm", e3[:-1], e3[1:])
+        ang = np.arctan2(sn, cs)
+        axis = np.divide(cr, sn[..., None], out=np.zeros_like(cr), where=sn[..., None] > 0)
+        omega[1:] = axis * ang[..., None] / dt
+    alpha = np.zeros_like(omega)
+    if nt > 1:
+        alpha[1:] = np.diff(omega, axis=0) / np.diff(motion.time)[:, None, None]
+    ed = np.cross(omega, e3)
+    edd = np.cross(alpha, e3) + np.cross(omega, ed)
+    V, A = _walk_nodes(structure, motion, e3, ed, edd, L, Ld, Ldd)
+    return Kinematics(motion.time, X, V, A, L, Ld, Ldd, e3, ed, edd, omega, alpha, "thesis",
+                      solver)
+
+
+def _walk_nodes(structure, motion, e, ed, edd, L, Ld, Ldd):
+    """Node velocities and accelerations by rigid-member formulas walked from the supports.
+
+    Each free node takes its motion from one member whose other node is already known
+    (passive members first, as Lacy takes point B from the follower, eqs. 2.3–2.5):
+    ``a_b = a_a + L̈ e + 2 L̇ ė + L ë``.
+    """
+    nt = e.shape[0]
+    n = structure.n_nodes
+    V = np.zeros((nt, n, 3))
+    A = np.zeros((nt, n, 3))
+    known = np.all(structure.translation_supports, axis=1)
+    active = np.zeros(structure.n_members, dtype=bool)
+    active[motion.members] = True
+    conn = structure.connectivity
+    queue = deque(np.flatnonzero(known))
+    adj: dict[int, list[tuple[int, int, int]]] = {i: [] for i in range(n)}
+    for k, (a, b) in enumerate(conn):
+        adj[a].append((int(active[k]), k, +1))
+        adj[b].append((int(active[k]), k, -1))
+    while True:
+        progressed = False
+        for node in range(n):
+            if known[node]:
+                continue
+            for _, k, sign in sorted(adj[node]):
+                a, b = conn[k]
+                other = a if sign == -1 else b
+                if not known[other]:
+                    continue
+                # Motion of the far end relative to the near end of member k.
+                rel_v = Ld[:, k, None] * e[:, k] + L[:, k, None] * ed[:, k]
+                rel_a = (Ldd[:, k, None] * e[:, k] + 2 * Ld[:, k, None] * ed[:, k]
+                         + L[:, k, None] * edd[:, k])
+                s = 1.0 if sign == -1 else -1.0   # node is the end (b) or the start (a)
+                V[:, node] = V[:, other] + s * rel_v
+                A[:, node] = A[:, other] + s * rel_a
+                known[node] = True
+                progressed = True
+                break
+        if known.all() or not progressed:
+            break
+    del queue
+    return V, A

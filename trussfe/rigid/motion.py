@@ -1,0 +1,300 @@
+# SPDX-License-Identifier: MIT
+"""Prescribed motion of the active members: lengths, velocities, accelerations over time.
+
+The thesis' actuator model (Lacy section 2.2, Appendix A) is a third-order system driven by a
+step of size ``end - start``: a complex pole pair of damping ratio ζ = 0.8 and natural
+frequency ωn chosen so that the response settles at 0.9 T, and a fast real pole at 2 ωn,
+
+.. math:: \\frac{Y(s)}{U(s)} = \\frac{2\\omega_n^3}
+          {(s^2 + 2\\zeta\\omega_n s + \\omega_n^2)(s + 2\\omega_n)} .
+
+The text gives ts = 4/(ζ ωn); Appendix A codes ``wn = 6/(zeta*ts)``, and only the coded value
+reproduces the published maximum velocity (1.2477 m/s for the Base Simulation; 4 gives
+0.83 m/s), so ``settling_constant = 6`` is the default.  The response, its velocity and its
+acceleration are evaluated exactly from the partial-fraction form of the step response (the
+thesis' ``lsim`` of a constant input is exact too), not by differencing.
+
+Motion files are TOML (``[motion] type = "third-order"``), or CSV histories read by
+:mod:`trussfe.rigid.motion_csv`, or top-plane rotations converted by :mod:`trussfe.rigid.slew`.
+"""
+from __future__ import annotations
+
+import math
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ..errors import InputError
+from ..model.structure import Structure
+from .active import active_members
+
+
+@dataclass
+class Motion:
+    """Histories of the active members' lengths.
+
+    Attributes
+    ----------
+    time : ndarray, shape (nt,)
+        Strictly increasing sample times, s.
+    members : ndarray of int, shape (na,)
+        Member indices of the active members, in the column order of the histories.
+    length, velocity, acceleration : ndarray, shape (nt, na)
+        Member length (m), its rate (m/s) and second rate (m/s²).
+    source : str
+        Where the motion came from (file name or description), for messages.
+    """
+
+    time: np.ndarray
+    members: np.ndarray
+    length: np.ndarray
+    velocity: np.ndarray
+    acceleration: np.ndarray
+    source: str = ""
+
+    def __post_init__(self) -> None:
+        self.time = np.asarray(self.time, dtype=float).reshape(-1)
+        self.members = np.asarray(self.members, dtype=np.int64).reshape(-1)
+        shape = (self.time.size, self.members.size)
+        for name in ("length", "velocity", "acceleration"):
+            arr = np.asarray(getattr(self, name), dtype=float).reshape(shape)
+            setattr(self, name, arr)
+        check_motion(self)
+
+    @property
+    def n_steps(self) -> int:
+        """Number of time samples."""
+        return self.time.size
+
+
+def check_motion(motion: Motion, item: str | None = None) -> None:
+    """Raise :class:`InputError` for a non-monotonic time, NaN or non-positive lengths.
+
+    Examples
+    --------
+    >>> Motion([0.0, 0.0], [0], [[1.0], [1.0]], [[0.0], [0.0]], [[0.0], [0.0]])
+    Traceback (most recent call last):
+    ...
+    trussfe.errors.InputError: motion: time: must increase strictly; sample 1 (t = 0 s) does not
+    """
+    item = item or (f"{motion.source}: motion" if motion.source else "motion")
+    t = motion.time
+    if t.size == 0:
+        raise InputError(item, "has no time samples")
+    if not np.all(np.isfinite(t)):
+        raise InputError(f"{item}: time", f"is NaN or infinite at sample "
+                         f"{int(np.flatnonzero(~np.isfinite(t))[0])}")
+    bad = np.flatnonzero(np.diff(t) <= 0)
+    if bad.size:
+        k = int(bad[0]) + 1
+        raise InputError(f"{item}: time", f"must increase strictly; sample {k} "
+                         f"(t = {t[k]:g} s) does not")
+    for name in ("length", "velocity", "acceleration"):
+        arr = getattr(motion, name)
+        if not np.all(np.isfinite(arr)):
+            i, j = np.argwhere(~np.isfinite(arr))[0]
+            raise InputError(f"{item}: {name}", f"is missing or NaN at sample {int(i)} "
+                             f"(t = {t[i]:g} s) for active member column {int(j)}")
+    if np.any(motion.length <= 0):
+        i, j = np.argwhere(motion.length <= 0)[0]
+        raise InputError(f"{item}: length", f"must be positive; sample {int(i)} has "
+                         f"{motion.length[i, j]:g} m")
+
+
+def third_order_response(t: np.ndarray, duration: float, *, damping_ratio: float = 0.8,
+                         settling_fraction: float = 0.9, settling_constant: float = 6.0,
+                         real_root_factor: float = 2.0) -> tuple[np.ndarray, ...]:
+    """Unit-step response of the thesis' third-order actuator model and its two derivatives.
+
+    Parameters
+    ----------
+    t : ndarray
+        Times, s (from the start of the move).
+    duration : float
+        Total motion time T, s; the settling time is ``settling_fraction * T``.
+    damping_ratio, settling_fraction, settling_constant, real_root_factor : float
+        ζ, ts/T, the constant c of ωn = c/(ζ ts) and the real pole as a multiple of ωn
+        (Lacy section 2.2 and Appendix A: 0.8, 0.9, 6, 2).
+
+    Returns
+    -------
+    y, dy, ddy : ndarray
+        Response, velocity and acceleration for a unit step.
+
+    Examples
+    --------
+    The Base Simulation: a 1.2 m stroke in 3 s, 50 samples 0.06 s apart; the largest sampled
+    velocity is Lacy's 1.2477 m/s (section 3.7).
+
+    >>> y, dy, ddy = third_order_response(np.arange(50) * 0.06, 3.0)
+    >>> round(float(1.2 * dy.max()), 4)
+    1.2477
+    """
+    t = np.asarray(t, dtype=float)
+    z = damping_ratio
+    if not (0.0 < z < 1.0):
+        raise InputError("motion.damping_ratio", f"must lie in (0, 1), got {z}")
+    wn = settling_constant / (z * settling_fraction * duration)
+    wd = wn * math.sqrt(1.0 - z * z)
+    poles = np.array([-z * wn + 1j * wd, -z * wn - 1j * wd, -real_root_factor * wn])
+    gain = real_root_factor * wn ** 3            # num = den(4): unit static gain
+    # Residues of Y(s) = gain / (s * den(s)) at the poles of den.
+    res = np.array([gain / (p * np.prod([p - q for q in poles if q != p])) for p in poles])
+    ex = np.exp(np.outer(t, poles))              # (time, pole)
+    y = 1.0 + np.real(ex @ res)
+    dy = np.real(ex @ (res * poles))
+    ddy = np.real(ex @ (res * poles ** 2))
+    return y, dy, ddy
+
+
+def third_order_motion(structure: Structure, start: dict | np.ndarray, end: dict | np.ndarray,
+                       duration: float, steps: int, *, first_sample: int = 0,
+                       include_end: bool = False, **model: float) -> Motion:
+    """Motion of every active member from its start to its end length (Lacy section 2.2).
+
+    Parameters
+    ----------
+    structure : Structure
+        Model with ``[active_members]``.
+    start, end : dict or array
+        Member id → length (m), or arrays in the order of the active members.
+    duration : float
+        Motion time T, s.
+    steps : int
+        Number of time steps; the step is ``dt = T / steps``.
+    first_sample : int
+        Index of the first sample: samples are at ``t_i = i dt`` for
+        ``i = first_sample … first_sample + steps - 1`` (Appendix A: ``T = (0:dt:tt-dt)``, so 0),
+        or up to ``steps`` inclusive when ``include_end``.
+    **model
+        Parameters of :func:`third_order_response`.
+    """
+    acts = active_members(structure)
+    if not acts:
+        raise InputError("motion", "the model has no [active_members]; nothing can move")
+    if not (isinstance(steps, (int, np.integer)) and steps >= 1):
+        raise InputError("motion.steps", f"must be a positive integer, got {steps!r}")
+    if not (duration > 0 and math.isfinite(duration)):
+        raise InputError("motion.duration", f"must be positive, got {duration!r}")
+    members = np.array([a.member for a in acts])
+    L0 = structure.lengths()[members]
+
+    def vec(v, name):
+        if isinstance(v, dict):
+            out = L0.copy()
+            for k, x in v.items():
+                try:
+                    j = list(members).index(structure.member_index(str(k)))
+                except (KeyError, ValueError):
+                    raise InputError(f"motion.{name}.{k}", f"'{k}' is not an active member of "
+                                     "the model") from None
+                out[j] = float(x)
+            return out
+        return np.broadcast_to(np.asarray(v, dtype=float), L0.shape).copy()
+
+    a, b = vec(start, "start"), vec(end, "end")
+    dt = duration / steps
+    last = first_sample + steps + (1 if include_end else 0)
+    t = np.arange(first_sample, last) * dt
+    y, dy, ddy = third_order_response(t, duration, **model)
+    d = b - a
+    return Motion(time=t, members=members, length=a + np.outer(y, d),
+                  velocity=np.outer(dy, d), acceleration=np.outer(ddy, d),
+                  source="third-order motion")
+
+
+def rest_motion(structure: Structure) -> Motion:
+    """One time step at rest in the model's geometry (``simulate`` without ``--motion``)."""
+    members = np.array([a.member for a in active_members(structure)], dtype=np.int64)
+    L = structure.lengths()[members][None, :]
+    z = np.zeros_like(L)
+    return Motion(time=np.zeros(1), members=members, length=L, velocity=z, acceleration=z,
+                  source="at rest")
+
+
+_TOML_KEYS = ("type", "duration", "steps", "start", "end", "damping_ratio", "settling_fraction",
+              "settling_constant", "real_root_factor", "first_sample", "include_end", "file")
+
+
+def motion_from_spec(spec: dict, structure: Structure, base_dir: Path, source: str = "",
+                     steps: int | None = None) -> Motion:
+    """Build a :class:`Motion` from a parsed ``[motion]`` table."""
+    item = f"{source}: motion" if source else "motion"
+    if not isinstance(spec, dict):
+        raise InputError(item, "expected a [motion] table")
+    kind = spec.get("type", "third-order")
+    if kind == "csv":
+        from .motion_csv import read_motion_csv  # written alongside the actuator model
+        if "file" not in spec:
+            raise InputError(f"{item}.file", "a csv motion needs file = \"history.csv\"")
+        return read_motion_csv(base_dir / str(spec["file"]), structure)
+    if kind == "rotation":
+        from .slew import rotation_motion
+        return rotation_motion(spec, structure)
+    if kind != "third-order":
+        raise InputError(f"{item}.type", f"unknown motion type {kind!r}; valid: "
+                         "'third-order', 'csv', 'rotation'")
+    for key in spec:
+        if key not in _TOML_KEYS:
+            raise InputError(f"{item}.{key}", f"unknown key; valid: {', '.join(_TOML_KEYS)}")
+    for key in ("duration", "start", "end"):
+        if key not in spec:
+            raise InputError(f"{item}.{key}", "is required")
+    n = steps if steps is not None else spec.get("steps", 50)
+    opts: dict[str, Any] = {}
+    for key in ("damping_ratio", "settling_fraction", "settling_constant", "real_root_factor"):
+        if key in spec:
+            v = spec[key]
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not v > 0:
+                raise InputError(f"{item}.{key}", f"must be a positive number, got {v!r}")
+            opts[key] = float(v)
+    for key in ("start", "end"):
+        v = spec[key]
+        if not isinstance(v, dict):
+            raise InputError(f"{item}.{key}", "expected a table member id = length (m)")
+        for k, x in v.items():
+            if isinstance(x, bool) or not isinstance(x, (int, float)) or not x > 0:
+                raise InputError(f"{item}.{key}.{k}", f"must be a positive length, got {x!r}")
+    dur = spec["duration"]
+    if isinstance(dur, bool) or not isinstance(dur, (int, float)):
+        raise InputError(f"{item}.duration", f"expected a number of seconds, got {dur!r}")
+    m = third_order_motion(structure, spec["start"], spec["end"], float(dur), n,
+                           first_sample=int(spec.get("first_sample", 0)),
+                           include_end=bool(spec.get("include_end", False)), **opts)
+    m.source = source or m.source
+    return m
+
+
+def load_motion(path: str | Path, structure: Structure, steps: int | None = None) -> Motion:
+    """Read a motion file: TOML ``[motion]`` spec, or a CSV history (``.csv``).
+
+    Parameters
+    ----------
+    path : path
+        Motion file.
+    structure : Structure
+        The model the motion drives (active members must exist in it).
+    steps : int, optional
+        Overrides the number of steps of a generated (third-order) motion.
+
+    Raises
+    ------
+    InputError
+        Unreadable file, unknown keys or members, non-monotonic time, NaN values.
+    """
+    path = Path(path)
+    if not path.is_file():
+        raise InputError(str(path), "motion file not found")
+    if path.suffix.lower() == ".csv":
+        from .motion_csv import read_motion_csv
+        return read_motion_csv(path, structure)
+    try:
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
+        raise InputError(path.name, f"not a valid TOML motion file ({exc})") from None
+    if "motion" not in data:
+        raise InputError(path.name, "no [motion] table")
+    return motion_from_spec(data["motion"], structure, path.parent, path.name, steps)

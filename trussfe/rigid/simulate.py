@@ -1,0 +1,275 @@
+# SPDX-License-Identifier: MIT
+"""One call for the whole rigid-body dynamic force analysis along a motion.
+
+:func:`simulate` runs kinematics → nodal forces → section forces → stresses → buckling →
+actuator force (and, when ``[actuators]`` data exist, the actuator and motor model), for the
+motion and for the same positions at rest (the "static" forces of Lacy's figures), and returns
+a :class:`SimulationResult`.
+"""
+from __future__ import annotations
+
+import inspect
+import logging
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import AnalysisError, InputError
+from ..model.structure import Structure
+from .active import active_members
+from .buckling import BucklingCheck, buckling_check
+from .forces import MemberBodies, NodalForces, member_bodies, nodal_forces
+from .kinematics import Kinematics, compute_kinematics, solve_motion_positions
+from .motion import Motion, rest_motion
+from .sections import SectionForces, SectionStresses, section_forces, section_stresses
+
+log = logging.getLogger(__name__)
+
+
+@dataclass
+class SimulationResult:
+    """Everything :func:`simulate` computes; arrays indexed (time, member[, section]).
+
+    Attributes
+    ----------
+    structure, motion, kinematics
+        Inputs and kinematics.
+    forces, static_forces : NodalForces
+        Pin forces along the motion, and at rest in the same positions.
+    sections, static_sections : SectionForces
+        Internal forces at the sections.
+    stresses, static_stresses : SectionStresses
+    midpoint_axial_force : ndarray, shape (nt, m)
+        Axial force at the middle of each member's tube.
+    actuator_force, static_actuator_force : ndarray, shape (nt, na)
+        Axial force of the active base on the leadscrew tube (positive pushing it out).
+    cantilever_moment : ndarray, shape (nt, na)
+        Bending moment magnitude at the cantilever connection, N·m.
+    buckling : BucklingCheck
+    actuators : dict
+        Actuator and motor histories per active member id (empty without ``[actuators]``).
+    options : dict
+        Options used.
+    """
+
+    structure: Structure
+    motion: Motion
+    kinematics: Kinematics
+    bodies: MemberBodies
+    forces: NodalForces
+    static_forces: NodalForces
+    sections: SectionForces
+    static_sections: SectionForces
+    stresses: SectionStresses
+    static_stresses: SectionStresses
+    midpoint_axial_force: np.ndarray
+    actuator_force: np.ndarray
+    static_actuator_force: np.ndarray
+    cantilever_moment: np.ndarray
+    buckling: BucklingCheck
+    actuators: dict = field(default_factory=dict)
+    options: dict = field(default_factory=dict)
+
+    @property
+    def time(self) -> np.ndarray:
+        """Sample times, s."""
+        return self.motion.time
+
+    def member_summary(self, member: int, section: int | None = None) -> dict:
+        """Maxima of one member's von Mises stress over the motion.
+
+        Parameters
+        ----------
+        member : int
+        section : int, optional
+            Restrict the motion-induced maximum to one section (Lacy reports the follower's at
+            its midpoint); default all sections.
+
+        Returns
+        -------
+        dict
+            ``max_von_mises`` with its ``time``, ``step`` and ``section`` (distance from the
+            end node); ``static_at_max`` (static stress at that instant and section);
+            ``static_max``; ``motion_induced_max`` (largest dynamic − static) with its time,
+            step and section.
+        """
+        vm = self.stresses.von_mises[:, member]
+        vs = self.static_stresses.von_mises[:, member]
+        i, j = np.unravel_index(int(np.argmax(vm)), vm.shape)
+        d = vm - vs
+        if section is not None:
+            d = d[:, [section]]
+        i2, j2 = np.unravel_index(int(np.argmax(d)), d.shape)
+        j2 = section if section is not None else j2
+        pos = self.sections.position[member]
+        return {
+            "max_von_mises": float(vm[i, j]), "time": float(self.time[i]), "step": int(i),
+            "section": float(pos[j]),
+            "static_at_max": float(vs[i, j]), "static_max": float(vs.max()),
+            "motion_induced_max": float(d.max()), "motion_induced_time": float(self.time[i2]),
+            "motion_induced_step": int(i2), "motion_induced_section": float(pos[j2]),
+        }
+
+
+def simulate(structure: Structure, motion: Motion | None = None, *, scheme: str = "exact",
+             n_sections: int = 7, full_length_inertia: bool | None = None,
+             shear_factor: float = 3.0,
+             buckling_constants: np.ndarray | float = 1.0, actuators: bool = True,
+             progress: bool = False) -> SimulationResult:
+    """Rigid-body dynamic force analysis of a truss along a motion (Lacy chapters 2–4).
+
+    Parameters
+    ----------
+    structure : Structure
+        Statically determinate pin-jointed truss, with ``[active_members]`` if it moves.
+    motion : Motion, optional
+        Active-member histories; ``None`` analyses the model at rest (one step).
+    scheme : {"exact", "thesis"}
+        Kinematics: exact compatibility equations, or Lacy's backward differences.
+    n_sections : int
+        Sections per member (Lacy: 7 in the triangular truss).
+    full_length_inertia : bool, optional
+        Lacy's Appendix A section inertia (whole tube length in every piece); default: True
+        with the thesis scheme, False (physical) with the exact one.
+    shear_factor : float
+        3 for von Mises at S1 (eq. 2.24); Lacy's code uses 1.
+    buckling_constants : float or array (m,)
+        End-condition constants C of eq. 2.26.
+    actuators : bool
+        Run the actuator and motor model when ``[actuators]`` data exist.
+    progress : bool
+        Progress bar on long runs.
+
+    Returns
+    -------
+    SimulationResult
+    """
+    if n_sections < 1 or int(n_sections) != n_sections:
+        raise InputError("sections", f"need a positive integer number of sections (1 = the "
+                         f"midpoint only), got {n_sections}")
+    if full_length_inertia is None:
+        full_length_inertia = scheme == "thesis"
+    if motion is None:
+        motion = rest_motion(structure)
+    acts = active_members(structure)
+    act_idx = np.array([a.member for a in acts], dtype=np.int64)
+    if set(motion.members.tolist()) - set(act_idx.tolist()):
+        bad = sorted(set(motion.members.tolist()) - set(act_idx.tolist()))[0]
+        raise InputError("motion", f"member '{structure.member_ids[bad]}' is not an active "
+                         "member of the model (add it to [active_members])")
+    bodies = member_bodies(structure)
+    opts = dict(n_sections=n_sections, full_length_inertia=full_length_inertia,
+                shear_factor=shear_factor)
+    nt, m = motion.n_steps, structure.n_members
+    step = max(1, CHUNK_ENTRIES // max(m, 1))
+    if scheme == "exact" and nt > step:
+        # Positions for the whole motion (warm starts link the steps), then everything else
+        # one block of steps at a time: the exact kinematics are independent per step, and
+        # blocks that fit in the processor cache are several times faster than whole-motion
+        # arrays (the work is memory-bound).
+        X = solve_motion_positions(structure, motion, progress=progress)
+        parts = [_steps(structure, _slice_motion(motion, k0, min(nt, k0 + step)),
+                        X[k0:k0 + step], scheme, bodies, act_idx, **opts)
+                 for k0 in range(0, nt, step)]
+        kin, f, fs, sf, ss, st, sts, mid, act_force, act_static, cmoment = (
+            _concat([p[i] for p in parts]) for i in range(len(parts[0])))
+    else:
+        X = solve_motion_positions(structure, motion, progress=progress) if nt > 1 else None
+        (kin, f, fs, sf, ss, st, sts, mid, act_force, act_static,
+         cmoment) = _steps(structure, motion, X, scheme, bodies, act_idx, **opts)
+    buck = buckling_check(structure, sf.tension, bodies.tube_length, buckling_constants)
+    res = SimulationResult(structure=structure, motion=motion, kinematics=kin, bodies=bodies,
+                           forces=f, static_forces=fs, sections=sf, static_sections=ss,
+                           stresses=st, static_stresses=sts, midpoint_axial_force=mid,
+                           actuator_force=act_force, static_actuator_force=act_static,
+                           cantilever_moment=cmoment, buckling=buck,
+                           options={"scheme": scheme, "n_sections": int(n_sections),
+                                    "full_length_inertia": full_length_inertia,
+                                    "shear_factor": shear_factor})
+    if actuators and "actuators" in structure.extensions and act_idx.size:
+        res.actuators = _actuator_histories(structure, motion, res)
+    return res
+
+
+#: Members × steps per block of the blocked evaluation (about 4 MB per 3-vector array).
+CHUNK_ENTRIES = 1 << 17
+
+
+def _steps(structure, motion, X, scheme, bodies, act_idx, *, n_sections, full_length_inertia,
+           shear_factor):
+    """Kinematics, forces, sections, stresses and actuator force for a block of steps."""
+    kin = compute_kinematics(structure, motion, scheme=scheme, coords=X)
+    still = kin.at_rest()
+    f = nodal_forces(structure, kin, bodies)
+    fs = nodal_forces(structure, still, bodies)
+    sf = section_forces(structure, kin, f, bodies, n_sections,
+                        full_length_inertia=full_length_inertia)
+    ss = section_forces(structure, still, fs, bodies, n_sections,
+                        full_length_inertia=full_length_inertia)
+    if n_sections == 1 or n_sections % 2:
+        mid = sf.tension[:, :, (sf.tension.shape[2] - 1) // 2]
+    else:
+        mid = section_forces(structure, kin, f, bodies, 1,
+                             full_length_inertia=full_length_inertia).tension[:, :, 0]
+    st = section_stresses(structure, sf, shear_factor=shear_factor)
+    sts = section_stresses(structure, ss, shear_factor=shear_factor)
+    # The cantilever connection: the cut at u = L_tube of an active member, where the
+    # piece is the whole leadscrew tube; its axial force is the actuator force.
+    act_force, act_static, cmoment = _cantilever(structure, kin, still, f, fs, bodies, act_idx)
+    kin.compat = None                  # factorisations of one block are not kept
+    return kin, f, fs, sf, ss, st, sts, mid, act_force, act_static, cmoment
+
+
+def _slice_motion(motion: Motion, k0: int, k1: int) -> Motion:
+    return Motion(time=motion.time[k0:k1], members=motion.members,
+                  length=motion.length[k0:k1], velocity=motion.velocity[k0:k1],
+                  acceleration=motion.acceleration[k0:k1], source=motion.source)
+
+
+def _concat(items: list):
+    """Join per-block results along the time axis (dataclasses field by field)."""
+    first = items[0]
+    if isinstance(first, np.ndarray):
+        return np.concatenate(items, axis=0)
+    values = {}
+    for name in first.__dataclass_fields__:
+        v = getattr(first, name)
+        if isinstance(v, np.ndarray) and name not in ("position",):
+            values[name] = np.concatenate([getattr(it, name) for it in items], axis=0)
+        else:
+            values[name] = None if name == "compat" else v
+    return type(first)(**values)
+
+
+def _cantilever(structure, kin, still, f, fs, bodies, act_idx):
+    """Actuator force (dynamic and static) and cantilever moment of the active members."""
+    nt = kin.n_steps
+    if act_idx.size == 0:
+        z = np.zeros((nt, 0))
+        return z, z.copy(), z.copy()
+    pos = bodies.tube_length[act_idx, None].copy()
+    cf = section_forces(structure, kin, f, bodies, positions=pos, members=act_idx)
+    cs = section_forces(structure, still, fs, bodies, positions=pos, members=act_idx)
+    # N·e = −T: positive when the base pushes the tube outward (Lacy ``actfor``).
+    return -cf.tension[:, :, 0], -cs.tension[:, :, 0], cf.moment_magnitude[:, :, 0]
+
+
+def _actuator_histories(structure: Structure, motion: Motion, res: SimulationResult) -> dict:
+    """Actuator and motor histories from :mod:`trussfe.rigid.actuator` (if installed)."""
+    try:
+        from .actuator import actuator_histories
+    except ImportError:
+        log.warning("actuator data present but the actuator model is not available; skipped")
+        return {}
+    # Columns in motion order: the motion may list the active members in another order.
+    acts = [a.member for a in active_members(structure)]
+    order = [acts.index(k) for k in motion.members]
+    force = res.actuator_force[:, order]
+    kwargs = {}
+    params = inspect.signature(actuator_histories).parameters
+    if "static_force" in params:
+        kwargs["static_force"] = res.static_actuator_force[:, order]
+    out = actuator_histories(structure, motion, force, **kwargs)
+    if not isinstance(out, dict):
+        raise AnalysisError("actuators", "the actuator model returned no histories")
+    return out
