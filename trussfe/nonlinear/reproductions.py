@@ -245,6 +245,8 @@ def linear_buckling_agreement(subdivisions: int = 16) -> dict:
         doc = cmd_buckling.analyse(str(mesh_path("postcritical_euler_column.toml")),
                                    bar_model="pinned-beam", subdivisions=subdivisions)
         out["fe_core_load_factor"] = float(doc["load_factors"][0])
+        out["fe_core_relative_difference"] = abs(out["load_factor"] / out[
+            "fe_core_load_factor"] - 1.0)
     except Exception:  # not installed yet: the comparison is skipped, not faked
         pass
     return out
