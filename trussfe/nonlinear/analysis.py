@@ -8,6 +8,7 @@ options override them)::
     control = "arc-length"        # "load" | "displacement" | "arc-length"
     steps = 200
     step = 0.002                  # first increment (Δλ, Δu or Δs; see follow_path)
+    max_step = 0.01               # largest increment the step control may grow to
     max_load_factor = 5.0
     monitor = "3:y"               # node:axis of the displacement plotted and controlled
     bar_model = "truss"           # "truss" | "pinned-beam"
@@ -35,7 +36,7 @@ from .path import CONTROLS, PathResult, follow_path
 
 SETTINGS = {"control": str, "steps": int, "step": float, "max_load_factor": float,
             "monitor": str, "bar_model": str, "subdivisions": int, "imperfection": float,
-            "branch": bool, "max_displacement": float}
+            "branch": bool, "max_displacement": float, "max_step": float}
 AXES = "xyz"
 log = logging.getLogger(__name__)
 
@@ -54,7 +55,7 @@ def parse_settings(raw: Any, structure: Structure | None = None, base_dir=None) 
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
                 raise InputError(item, f"expected a finite number, got {v!r}")
             v = float(v)
-            if k in ("step", "max_load_factor", "max_displacement") and v <= 0:
+            if k in ("step", "max_load_factor", "max_displacement", "max_step") and v <= 0:
                 raise InputError(item, f"must be positive, got {v}")
             if k == "imperfection" and v < 0:
                 raise InputError(item, f"must not be negative, got {v}")

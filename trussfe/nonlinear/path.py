@@ -258,7 +258,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                 handover: bool = True, max_cuts: int = 12,
                 branch_step: float = 0.01,
                 max_displacement: float | None = None,
-                max_failures: int | None = None) -> PathResult:
+                max_failures: int | None = None,
+                max_step: float | None = None) -> PathResult:
     """Follow the equilibrium path of a structure under ``λ f``.
 
     Parameters
@@ -297,6 +298,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
         Stop when the monitored displacement exceeds this magnitude, m.
     max_failures : int, optional
         Stop after this many member failure events.
+    max_step : float, optional
+        Largest increment the step control may grow to (default 32 × the first one).
 
     Returns
     -------
@@ -371,6 +374,10 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
     ds = float(step)
     size = float(np.ptp(m.X, axis=0).max())
     ds_max = abs(ds) if control == "load" else 32.0 * abs(ds)
+    if max_step is not None:
+        if not (np.isfinite(max_step) and max_step > 0):
+            raise InputError("max_step", f"must be a positive number, got {max_step}")
+        ds_max = float(max_step)
     du_prev = None
     branch_dir = None
     neg = fac.negative
