@@ -105,8 +105,9 @@ def run_postcritical(structure: Structure, **options) -> PathResult:
     given = {k: v for k, v in options.items() if v is not None}
     if "control" in given and given["control"] != opts.get("control", "arc-length") \
             and "step" not in given:
-        # the file's first increment belongs to its own control (Δλ, Δu and Δs differ)
+        # the file's increments belong to its own control (Δλ, Δu and Δs differ)
         opts.pop("step", None)
+        opts.pop("max_step", None)
     opts.update(given)
     laws = structure.extensions.get("failure") or FailureLaws.none(structure.n_members)
     if np.any(structure.gravity != 0):
