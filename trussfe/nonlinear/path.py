@@ -718,16 +718,24 @@ def _release(st, uf0, lam, event_tolerance=1e-6, min_increment=1.0 / 4096):
         return uf0, m.evaluate(st.full(uf0)), False
     mg_start = m.margins(res)
 
+    modified = len(uf0) > st.full_newton_size
+    held = {"fac": None}            # modified Newton on large models: factor kept across solves
+
     def solve(u, target):
-        for _ in range(st.max_iter):
-            r, fi, K = st.eval(u)
+        rprev = np.inf
+        for _ in range(2 * st.max_iter if modified else st.max_iter):
+            r, fi, K = st.eval(u, tangent=not modified)
             R = fi - lam * st.f - target * r0
-            if np.linalg.norm(R) <= st.tol * scale:
+            rn = np.linalg.norm(R)
+            if rn <= st.tol * scale:
                 return u, r
             try:
-                u = u - factorize(K).solve(R)
+                if not modified or held["fac"] is None or rn > 0.5 * rprev:
+                    held["fac"] = factorize(K if K is not None else st.eval(u)[2])
+                u = u - held["fac"].solve(R)
             except SingularTangent:
                 return None
+            rprev = rn
             if not np.all(np.isfinite(u)):
                 return None
         return None
