@@ -238,11 +238,14 @@ class _Stepper:
 
 
 def _mech_free(model: NonlinearModel) -> np.ndarray:
+    """Free joint coordinates for the rank check, shape (node, dim): joints still reached by a
+    live member, or loaded (a loaded joint left without members is a mechanism)."""
     s = model.structure
     return ~s.supports[:, : s.dim] & _touched(model)
 
 
 def _touched(model):
+    """Joint coordinates that take part in the assembly (member, support or load)."""
     s = model.structure
     t = np.zeros(s.n_nodes, dtype=bool)
     t[s.connectivity[model.alive].ravel()] = True
