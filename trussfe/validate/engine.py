@@ -20,42 +20,14 @@ log = logging.getLogger(__name__)
 _TOKEN = re.compile(r'\s*(?:"([^"]*)"|([^.\[\]"]+)|\[\s*(-?\d+)\s*\])\s*(\.)?')
 
 
-<<<<<<< HEAD
-def lookup(result: Any, path: str) -> Any:
-    """The value at ``path`` in a nested dict/list result.
-
-    Path syntax: dot-separated keys, ``[i]`` list indices, keys with dots in double quotes.
-
-    Examples
-    --------
-    >>> lookup({"nodes": {"b1.N4": {"reaction": [1.0, 2.0]}}}, 'nodes."b1.N4".reaction[1]')
-    2.0
-    >>> lookup({"a": [[1, 2], [3, 4]]}, "a[1][-1]")
-    4
-    >>> lookup({"thesis.T3": {"v": 1.25}}, "thesis.T3.v")
-    1.25
-    """
-    obj = result
-=======
 def _tokens(path: str) -> list:
     """Split a path into keys (str) and list indices (int)."""
     out: list = []
->>>>>>> models
     pos = 0
     text = path.strip()
     if not text:
         raise KeyError("empty path")
     while pos < len(text):
-        if isinstance(obj, dict):
-            # A flat result may use dotted keys ("thesis.M8_force"): the longest key that
-            # matches the rest of the path wins over splitting it at the dots.
-            rest = text[pos:]
-            cuts = [i for i, ch in enumerate(rest) if ch in ".["] + [len(rest)]
-            hit = next((c for c in reversed(cuts) if "." in rest[:c] and rest[:c] in obj), None)
-            if hit is not None:
-                obj = obj[rest[:hit]]
-                pos += hit + (1 if rest[hit:hit + 1] == "." else 0)
-                continue
         m = _TOKEN.match(text, pos)
         if not m or m.end() == pos:
             raise KeyError(f"cannot parse path at '{text[pos:]}'")
