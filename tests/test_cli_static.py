@@ -32,9 +32,22 @@ MODEL = textwrap.dedent("""
     3 = [1.5625, 1.9516]
     4 = [2.0, 0.0]
     [members]
-    base = { nodes = ["1", "2"], section = "tube", material = "al", type = "beam", releases = ["start"] }
-    leadscrew = { nodes = ["2", "3"], section = "tube", material = "al", type = "beam", releases = ["end"] }
-    follower = { nodes = ["3", "4"], section = "follower", material = "al" }
+    [members.base]
+    nodes = ["1", "2"]
+    section = "tube"
+    material = "al"
+    type = "beam"
+    releases = ["start"]
+    [members.leadscrew]
+    nodes = ["2", "3"]
+    section = "tube"
+    material = "al"
+    type = "beam"
+    releases = ["end"]
+    [members.follower]
+    nodes = ["3", "4"]
+    section = "follower"
+    material = "al"
     [supports]
     1 = ["x", "y"]
     4 = ["x", "y"]
