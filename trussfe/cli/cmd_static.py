@@ -13,7 +13,8 @@ from ..errors import InputError
 from ..fem.discretisation import BAR_MODELS
 from ..fem.static import StaticResult, solve_static, static_json
 from ..io.model_file import read_model
-from ..io.output import atomic_path, write_json
+from ..io.output import write_json
+from ..io.vtk import write_vtu as _write_vtu
 
 
 def register(subparsers) -> None:
@@ -47,33 +48,15 @@ def analyse(model_path: str | Path, bar_model: str = "truss", subdivisions: int 
 
 
 def write_vtu(path: str | Path, result: StaticResult) -> None:
-    """Undeformed mesh with point data ``displacement`` (and ``rotation``, ``reaction``) and
-    cell data ``axial_force``, ``axial_stress``, ``strain``, ``von_mises``; written atomically.
-    """
-    try:
-        from ..io.vtk import write_vtu as _shared_write_vtu
-    except ImportError:
-        _shared_write_vtu = None
+    """Undeformed mesh with point data ``displacement`` and ``reaction`` and cell data
+    ``axial_force``, ``axial_stress``, ``strain``, ``von_mises`` (written atomically)."""
     s = result.structure
     dim = s.dim
-    disp = np.zeros((s.n_nodes, 3))
-    disp[:, :dim] = result.displacements[:, :dim]
-    reac = np.zeros((s.n_nodes, 3))
-    reac[:, :dim] = result.reactions[:, :dim]
-    point_data = {"displacement": disp, "reaction": reac}
+    point_data = {"displacement": result.displacements[:, :dim],
+                  "reaction": result.reactions[:, :dim]}
     cell_data = {"axial_force": result.axial_force, "axial_stress": result.axial_stress,
                  "strain": result.strain, "von_mises": result.max_von_mises}
-    if _shared_write_vtu is not None:
-        _shared_write_vtu(path, s, point_data=point_data, cell_data=cell_data)
-        return
-    import meshio
-
-    pts = np.zeros((s.n_nodes, 3))
-    pts[:, :dim] = s.coords
-    mesh = meshio.Mesh(pts, [("line", s.connectivity)], point_data=point_data,
-                       cell_data={k: [np.asarray(v, float)] for k, v in cell_data.items()})
-    with atomic_path(path) as tmp:
-        meshio.write(tmp, mesh, file_format="vtu")
+    _write_vtu(path, s, point_data=point_data, cell_data=cell_data)
 
 
 def _table(result: StaticResult) -> str:
