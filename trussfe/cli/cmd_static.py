@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
-"""``trussfe static MODEL [--bar-model truss|pinned-beam] [--subdivisions K] [--json OUT]
-[--vtk OUT.vtu]``: linear static finite-element analysis (CONTRACT.md §2–4)."""
+"""``trussfe static MODEL [--bar-model truss|pinned-beam] [--subdivisions K]
+[--solver auto|superlu|pardiso] [--json OUT] [--vtk OUT.vtu]``: linear static finite-element analysis (CONTRACT.md §2–4)."""
 from __future__ import annotations
 
 import argparse
@@ -11,6 +11,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..fem.discretisation import BAR_MODELS
+from ..fem.linsolve import pardiso_available
 from ..fem.static import StaticResult, solve_static, static_json
 from ..io.model_file import read_model
 from ..io.output import write_json
@@ -27,24 +28,31 @@ def register(subparsers) -> None:
                    help="bars as axial-only truss elements (default) or as pinned beams")
     p.add_argument("--subdivisions", type=int, default=None, metavar="K",
                    help="elements per frame member (default 4)")
+    p.add_argument("--solver", choices=("auto", "superlu", "pardiso"), default="auto",
+                   help="sparse linear solver (default: PARDISO for large models when "
+                   "installed, else SuperLU)")
     p.add_argument("--json", metavar="OUT", help="write the results as JSON")
     p.add_argument("--vtk", metavar="OUT.vtu", help="write the deformed-shape fields as VTU")
     p.set_defaults(func=_main)
 
 
 def run_static(model_path: str | Path, bar_model: str = "truss",
-               subdivisions: int | None = None) -> StaticResult:
+               subdivisions: int | None = None, solver: str = "auto") -> StaticResult:
     """Read a model file and solve it (errors name the file)."""
     if subdivisions is not None and subdivisions < 1:
         raise InputError("--subdivisions", f"must be a positive integer, got {subdivisions}")
     structure = read_model(model_path)
-    return solve_static(structure, bar_model=bar_model, subdivisions=subdivisions)
+    if solver == "pardiso" and not pardiso_available():
+        raise InputError("--solver", "PARDISO is not available (pip install pypardiso); "
+                         "use --solver superlu")
+    return solve_static(structure, bar_model=bar_model, subdivisions=subdivisions,
+                        backend=solver)
 
 
 def analyse(model_path: str | Path, bar_model: str = "truss", subdivisions: int | None = None,
-            **_ignored) -> dict:
+            solver: str = "auto", **_ignored) -> dict:
     """Static analysis of a model file; returns the CONTRACT.md §3 ``static`` document."""
-    return static_json(run_static(model_path, bar_model, subdivisions))
+    return static_json(run_static(model_path, bar_model, subdivisions, solver))
 
 
 def write_vtu(path: str | Path, result: StaticResult) -> None:
@@ -82,7 +90,7 @@ def _table(result: StaticResult) -> str:
 
 
 def _main(args: argparse.Namespace) -> int:
-    result = run_static(args.model, args.bar_model, args.subdivisions)
+    result = run_static(args.model, args.bar_model, args.subdivisions, args.solver)
     doc = static_json(result)
     # all outputs are produced before any is renamed into place
     if args.vtk:

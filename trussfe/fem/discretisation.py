@@ -135,7 +135,7 @@ class _Group:
     ncomp: int                      # element DOF components per end
     fields: list[_Field]
     n_local: int                    # size of the local (field) vector
-    S: sp.csr_matrix                # field DOFs <- element components
+    S: sp.csc_matrix                # field DOFs <- element components
     G_coo: tuple                    # element components <- global DOFs (COO, built lazily)
     T: sp.csr_matrix                # S @ G
     _G: sp.csr_matrix | None = None
@@ -371,15 +371,19 @@ class FEModel:
                 comp_sign[:, comp] = sign
             off += f.basis.N
         S = sp.csc_matrix((comp_sign.ravel(), comp_row.ravel(), np.arange(ne * nc2 + 1)),
-                          shape=(off, ne * nc2)).tocsr()
+                          shape=(off, ne * nc2))
         # G: element components <- global DOFs, in pieces
         rows, cols, vals = [], [], []
 
         def add(el_local, comp, gdof, val):
+            r = el_local * nc2 + comp
+            v = np.broadcast_to(val, gdof.shape)
             ok = gdof >= 0
-            rows.append((el_local * nc2 + comp)[ok])
-            cols.append(gdof[ok])
-            vals.append(np.broadcast_to(val, gdof.shape)[ok])
+            if not ok.all():
+                r, gdof, v = r[ok], gdof[ok], v[ok]
+            rows.append(r)
+            cols.append(gdof)
+            vals.append(v)
 
         def add_block(el_local, comp0, gdofs, Rsub):
             """local comps comp0 + i  <-  Σ_j Rsub[:, i, j] · U[gdofs[:, j]]."""
