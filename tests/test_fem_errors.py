@@ -159,3 +159,14 @@ def test_random_structures_give_a_result_or_one_error():
             assert null_space(fe.stiffness()[fe.free][:, fe.free]).shape[1] == 0
             outcomes["ok"] += 1
     assert outcomes["ok"] > 5 and outcomes["mechanism"] > 5
+
+
+def test_beam_without_outer_fibre_distance_is_named():
+    """The bending stress M c / I needs c: an explicit beam section without it is an input
+    error naming the section, not a silently missing S2."""
+    sec = Section("noc", area=1e-4, Iy=1e-8, Iz=1e-8, J=2e-8)
+    s = build_structure([[0, 0], [1, 0]], [(0, 1)], section=sec, material=AL,
+                        supports={0: ["x", "y", "rz"]}, loads={1: [0.0, -5.0, 0.0]},
+                        is_beam=True)
+    with pytest.raises(InputError, match=r"sections\.noc: c \(outer-fibre distance\)"):
+        solve_static(s)

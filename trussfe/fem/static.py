@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import AnalysisError
+from ..errors import AnalysisError, InputError
 from ..model.structure import DOF_NAMES, Structure
 from .discretisation import FEModel, discretise
 from .solver import factorise
@@ -187,6 +187,12 @@ def solve_static(structure: Structure, bar_model: str = "truss",
     # midpoint axial force: N is linear along a member under uniform distributed load
     N_mid = 0.5 * (ends[:, 0, 0] + ends[:, 1, 0])
     if np.any(fe.is_frame):
+        bad = fe.is_frame & ~(np.isfinite(s.c) & (s.c > 0))
+        if np.any(bad):
+            i = int(np.flatnonzero(bad)[0])
+            raise InputError(f"sections.{s.sections[i].name}",
+                             f"c (outer-fibre distance) is missing (member {s.member_ids[i]}); "
+                             "the bending stress of a beam needs it: give c")
         s1, s2 = von_mises(F, s.area, s.Iy, s.Iz, s.c)
     else:                               # no moments anywhere: bending properties unused
         ones = np.ones(m)
