@@ -67,25 +67,48 @@ def write_vtu(path: str | Path, result: StaticResult) -> None:
     _write_vtu(path, s, point_data=point_data, cell_data=cell_data)
 
 
+#: Longest node or member list printed in full; larger models print a summary only.
+TABLE_ROWS = 50
+
+
 def _table(result: StaticResult) -> str:
     s = result.structure
     dim = s.dim
     axes = "xyz"[:dim]
     lines = [f"trussfe static: {s.name} ({result.fe.bar_model} model, {result.fe.n_dof} DOFs, "
-             f"residual {result.residual:.1e})", "", "nodes"]
+             f"residual {result.residual:.1e})"]
+    umag = np.linalg.norm(result.displacements[:, :dim], axis=1)
+    if s.n_nodes:
+        i = int(np.argmax(umag))
+        lines.append(f"largest displacement {umag[i]:.4e} m at node {s.node_ids[i]}")
+    if s.n_members:
+        i = int(np.argmax(np.abs(result.axial_force)))
+        j = int(np.argmax(result.max_von_mises))
+        lines.append(f"largest axial force {result.axial_force[i]:.4f} N in member "
+                     f"{s.member_ids[i]}; largest von Mises {result.max_von_mises[j]:.4e} Pa "
+                     f"in member {s.member_ids[j]}")
+    lines += ["", "nodes"]
     hdr = "  ".join(f"{'u' + a:>12}" for a in axes) + "  " + "  ".join(
         f"{'R' + a:>12}" for a in axes)
     lines.append(f"{'id':>8}  {hdr}")
     sup = s.supports[:, :dim].any(axis=1)
-    for i, nid in enumerate(s.node_ids):
+    shown = range(s.n_nodes) if s.n_nodes <= TABLE_ROWS else np.flatnonzero(sup)[:TABLE_ROWS]
+    for i in shown:
         u = "  ".join(f"{x:12.4e}" for x in result.displacements[i, :dim])
         r = "  ".join(f"{x:12.4f}" for x in result.reactions[i, :dim]) if sup[i] else ""
-        lines.append(f"{nid:>8}  {u}  {r}".rstrip())
+        lines.append(f"{s.node_ids[i]:>8}  {u}  {r}".rstrip())
+    if s.n_nodes > TABLE_ROWS:
+        lines.append(f"  ... supported nodes only, of {s.n_nodes}; --json has every node")
     lines += ["", "members", f"{'id':>8}  {'N [N]':>12}  {'sigma [Pa]':>12}  "
               f"{'max vM [Pa]':>12}"]
-    for i, mid in enumerate(s.member_ids):
-        lines.append(f"{mid:>8}  {result.axial_force[i]:12.4f}  {result.axial_stress[i]:12.4e}"
-                     f"  {result.max_von_mises[i]:12.4e}")
+    order = (range(s.n_members) if s.n_members <= TABLE_ROWS
+             else np.argsort(-result.max_von_mises)[:TABLE_ROWS])
+    for i in order:
+        lines.append(f"{s.member_ids[i]:>8}  {result.axial_force[i]:12.4f}  "
+                     f"{result.axial_stress[i]:12.4e}  {result.max_von_mises[i]:12.4e}")
+    if s.n_members > TABLE_ROWS:
+        lines.append(f"  ... the {TABLE_ROWS} most stressed of {s.n_members} members; "
+                     "--json has every member")
     return "\n".join(lines)
 
 
