@@ -32,9 +32,22 @@ MODEL = textwrap.dedent("""
     3 = [1.5625, 1.9516]
     4 = [2.0, 0.0]
     [members]
-    base = { nodes = ["1", "2"], section = "tube", material = "al", type = "beam", releases = ["start"] }
-    leadscrew = { nodes = ["2", "3"], section = "tube", material = "al", type = "beam", releases = ["end"] }
-    follower = { nodes = ["3", "4"], section = "follower", material = "al" }
+    [members.base]
+    nodes = ["1", "2"]
+    section = "tube"
+    material = "al"
+    type = "beam"
+    releases = ["start"]
+    [members.leadscrew]
+    nodes = ["2", "3"]
+    section = "tube"
+    material = "al"
+    type = "beam"
+    releases = ["end"]
+    [members.follower]
+    nodes = ["3", "4"]
+    section = "follower"
+    material = "al"
     [supports]
     1 = ["x", "y"]
     4 = ["x", "y"]
@@ -126,3 +139,37 @@ def test_missing_file_and_bad_subdivisions(model, tmp_path, capsys):
     err = capsys.readouterr().err.splitlines()
     assert len(err) == 2 and all(e.startswith("trussfe: error: ") for e in err)
     assert "--subdivisions" in err[1]
+
+
+def test_large_model_prints_a_summary(tmp_path, capsys):
+    """A 40-panel cantilevered Warren truss (82 nodes, 161 bars): the printed table stays
+    short.  Method of sections at the first panel (panel length = depth = 1 m, tip load P at
+    the bottom tip node): moments about t1 and b0 give the bottom chord −P·39 and the top
+    chord +P·40."""
+    n = 40
+    lines = ["[model]", 'name = "warren"', "dimension = 2", "[materials.s]", "E = 2e11",
+             "[sections.a]", "area = 1e-3", "[nodes]"]
+    lines += [f"b{i} = [{i}.0, 0.0]" for i in range(n + 1)]
+    lines += [f"t{i} = [{i}.0, 1.0]" for i in range(n + 1)]
+    lines.append("[members]")
+    k = 0
+    for i in range(n):
+        for a, b in ((f"b{i}", f"b{i + 1}"), (f"t{i}", f"t{i + 1}"), (f"b{i}", f"t{i + 1}")):
+            lines.append(f'm{k} = {{ nodes = ["{a}", "{b}"], section = "a", material = "s" }}')
+            k += 1
+    for i in range(n + 1):
+        lines.append(f'm{k} = {{ nodes = ["b{i}", "t{i}"], section = "a", material = "s" }}')
+        k += 1
+    lines += ["[supports]", 'b0 = ["x", "y"]', 't0 = ["x", "y"]', "[loads]",
+              f"b{n} = [0.0, -100.0]"]
+    p = tmp_path / "warren.toml"
+    p.write_text("\n".join(lines) + "\n")
+    out = tmp_path / "w.json"
+    assert main(["static", str(p), "--json", str(out)]) == 0
+    printed = capsys.readouterr().out.splitlines()
+    assert len(printed) < 70
+    assert any("most stressed of 161 members" in x for x in printed)
+    doc = json.loads(out.read_text())
+    np.testing.assert_allclose(doc["members"]["m0"]["axial_force"], -100.0 * (n - 1),
+                               rtol=1e-9)
+    np.testing.assert_allclose(doc["members"]["m1"]["axial_force"], 100.0 * n, rtol=1e-9)

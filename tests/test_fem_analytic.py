@@ -215,3 +215,36 @@ def test_station_displacements_of_truss_bar_interpolate_ends():
     u = np.arange(fe.n_dof, dtype=float)
     st = fe.station_displacements(u)
     assert_allclose(st[0], fe.node_values(u)[:, :2])
+
+
+def test_3d_frame_with_releases_bars_and_self_weight_is_in_equilibrium():
+    """A 3-D frame mixing beams (one released at an end), pinned bars, nodal loads, moments,
+    nodal masses and self-weight: reactions balance the applied forces and moments about the
+    origin (global statics), and released ends carry no bending moment."""
+    x = np.array([[0, 0, 0], [2, 0, 0], [2, 1.5, 0], [0, 1.5, 0],
+                  [0, 0, 1.8], [2, 0, 1.8], [2, 1.5, 1.8], [0, 1.5, 1.8]], float)
+    members = [(0, 4), (1, 5), (2, 6), (3, 7), (4, 5), (5, 6), (6, 7), (7, 4), (0, 5), (3, 6)]
+    s = build_structure(x, members, section=TUBE, material=STEEL,
+                        supports={i: ["x", "y", "z", "rx", "ry", "rz"] for i in range(4)},
+                        loads={5: [300.0, -200.0, -500.0, 10.0, 0.0, 0.0],
+                               6: [0.0, 150.0, -800.0, 0.0, 0.0, 0.0]},
+                        masses={7: 20.0}, gravity=[0.0, 0.0, -9.81],
+                        is_beam=[True] * 8 + [False, False])
+    s.releases[4] = [False, True]          # beam 4-5 pinned at node 5
+    for bar_model in ("truss", "pinned-beam"):
+        r = solve_static(s, bar_model=bar_model, subdivisions=3)
+        # resultant of the applied loads, member weights and the nodal mass's weight
+        total_weight = (STEEL.density * TUBE.area * s.lengths().sum() + 20.0) * 9.81
+        applied = np.array([300.0, -50.0, -1300.0 - total_weight])
+        R = r.reactions[:4]
+        assert_allclose(R[:, :3].sum(axis=0), -applied, rtol=1e-9)
+        # moments about the origin: Σ x × F + Σ M over loads and reactions (weights of the
+        # members act at their midpoints, nodal mass at node 7)
+        w = STEEL.density * TUBE.area * s.lengths() * 9.81
+        mid = 0.5 * (x[s.connectivity[:, 0]] + x[s.connectivity[:, 1]])
+        mom = np.cross(x[5], [300.0, -200.0, -500.0]) + [10.0, 0, 0] + \
+            np.cross(x[6], [0.0, 150.0, -800.0]) + np.cross(x[7], [0, 0, -20.0 * 9.81]) + \
+            np.cross(mid, np.c_[np.zeros((len(w), 2)), -w]).sum(axis=0)
+        mom_r = np.cross(x[:4], R[:, :3]).sum(axis=0) + R[:, 3:].sum(axis=0)
+        assert_allclose(mom + mom_r, 0.0, atol=1e-8 * np.abs(mom).max())
+        assert abs(r.end_forces[4, 1, 4]) < 1e-9 and abs(r.end_forces[4, 1, 5]) < 1e-9

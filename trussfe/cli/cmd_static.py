@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
-"""``trussfe static MODEL [--bar-model truss|pinned-beam] [--subdivisions K] [--json OUT]
-[--vtk OUT.vtu]``: linear static finite-element analysis (CONTRACT.md §2–4)."""
+"""``trussfe static MODEL [--bar-model truss|pinned-beam] [--subdivisions K]
+[--solver auto|superlu|pardiso] [--json OUT] [--vtk OUT.vtu]``: linear static finite-element analysis (CONTRACT.md §2–4)."""
 from __future__ import annotations
 
 import argparse
@@ -11,9 +11,11 @@ import numpy as np
 
 from ..errors import InputError
 from ..fem.discretisation import BAR_MODELS
+from ..fem.linsolve import pardiso_available
 from ..fem.static import StaticResult, solve_static, static_json
 from ..io.model_file import read_model
-from ..io.output import atomic_path, write_json
+from ..io.output import write_json
+from ..io.vtk import write_vtu as _write_vtu
 
 
 def register(subparsers) -> None:
@@ -26,54 +28,47 @@ def register(subparsers) -> None:
                    help="bars as axial-only truss elements (default) or as pinned beams")
     p.add_argument("--subdivisions", type=int, default=None, metavar="K",
                    help="elements per frame member (default 4)")
+    p.add_argument("--solver", choices=("auto", "superlu", "pardiso"), default="auto",
+                   help="sparse linear solver (default: PARDISO for large models when "
+                   "installed, else SuperLU)")
     p.add_argument("--json", metavar="OUT", help="write the results as JSON")
     p.add_argument("--vtk", metavar="OUT.vtu", help="write the deformed-shape fields as VTU")
     p.set_defaults(func=_main)
 
 
 def run_static(model_path: str | Path, bar_model: str = "truss",
-               subdivisions: int | None = None) -> StaticResult:
+               subdivisions: int | None = None, solver: str = "auto") -> StaticResult:
     """Read a model file and solve it (errors name the file)."""
     if subdivisions is not None and subdivisions < 1:
         raise InputError("--subdivisions", f"must be a positive integer, got {subdivisions}")
     structure = read_model(model_path)
-    return solve_static(structure, bar_model=bar_model, subdivisions=subdivisions)
+    if solver == "pardiso" and not pardiso_available():
+        raise InputError("--solver", "PARDISO is not available (pip install pypardiso); "
+                         "use --solver superlu")
+    return solve_static(structure, bar_model=bar_model, subdivisions=subdivisions,
+                        backend=solver)
 
 
 def analyse(model_path: str | Path, bar_model: str = "truss", subdivisions: int | None = None,
-            **_ignored) -> dict:
+            solver: str = "auto", **_ignored) -> dict:
     """Static analysis of a model file; returns the CONTRACT.md §3 ``static`` document."""
-    return static_json(run_static(model_path, bar_model, subdivisions))
+    return static_json(run_static(model_path, bar_model, subdivisions, solver))
 
 
 def write_vtu(path: str | Path, result: StaticResult) -> None:
-    """Undeformed mesh with point data ``displacement`` (and ``rotation``, ``reaction``) and
-    cell data ``axial_force``, ``axial_stress``, ``strain``, ``von_mises``; written atomically.
-    """
-    try:
-        from ..io.vtk import write_vtu as _shared_write_vtu
-    except ImportError:
-        _shared_write_vtu = None
+    """Undeformed mesh with point data ``displacement`` and ``reaction`` and cell data
+    ``axial_force``, ``axial_stress``, ``strain``, ``von_mises`` (written atomically)."""
     s = result.structure
     dim = s.dim
-    disp = np.zeros((s.n_nodes, 3))
-    disp[:, :dim] = result.displacements[:, :dim]
-    reac = np.zeros((s.n_nodes, 3))
-    reac[:, :dim] = result.reactions[:, :dim]
-    point_data = {"displacement": disp, "reaction": reac}
+    point_data = {"displacement": result.displacements[:, :dim],
+                  "reaction": result.reactions[:, :dim]}
     cell_data = {"axial_force": result.axial_force, "axial_stress": result.axial_stress,
                  "strain": result.strain, "von_mises": result.max_von_mises}
-    if _shared_write_vtu is not None:
-        _shared_write_vtu(path, s, point_data=point_data, cell_data=cell_data)
-        return
-    import meshio
+    _write_vtu(path, s, point_data=point_data, cell_data=cell_data)
 
-    pts = np.zeros((s.n_nodes, 3))
-    pts[:, :dim] = s.coords
-    mesh = meshio.Mesh(pts, [("line", s.connectivity)], point_data=point_data,
-                       cell_data={k: [np.asarray(v, float)] for k, v in cell_data.items()})
-    with atomic_path(path) as tmp:
-        meshio.write(tmp, mesh, file_format="vtu")
+
+#: Longest node or member list printed in full; larger models print a summary only.
+TABLE_ROWS = 50
 
 
 def _table(result: StaticResult) -> str:
@@ -81,25 +76,44 @@ def _table(result: StaticResult) -> str:
     dim = s.dim
     axes = "xyz"[:dim]
     lines = [f"trussfe static: {s.name} ({result.fe.bar_model} model, {result.fe.n_dof} DOFs, "
-             f"residual {result.residual:.1e})", "", "nodes"]
+             f"residual {result.residual:.1e})"]
+    umag = np.linalg.norm(result.displacements[:, :dim], axis=1)
+    if s.n_nodes:
+        i = int(np.argmax(umag))
+        lines.append(f"largest displacement {umag[i]:.4e} m at node {s.node_ids[i]}")
+    if s.n_members:
+        i = int(np.argmax(np.abs(result.axial_force)))
+        j = int(np.argmax(result.max_von_mises))
+        lines.append(f"largest axial force {result.axial_force[i]:.4f} N in member "
+                     f"{s.member_ids[i]}; largest von Mises {result.max_von_mises[j]:.4e} Pa "
+                     f"in member {s.member_ids[j]}")
+    lines += ["", "nodes"]
     hdr = "  ".join(f"{'u' + a:>12}" for a in axes) + "  " + "  ".join(
         f"{'R' + a:>12}" for a in axes)
     lines.append(f"{'id':>8}  {hdr}")
     sup = s.supports[:, :dim].any(axis=1)
-    for i, nid in enumerate(s.node_ids):
+    shown = range(s.n_nodes) if s.n_nodes <= TABLE_ROWS else np.flatnonzero(sup)[:TABLE_ROWS]
+    for i in shown:
         u = "  ".join(f"{x:12.4e}" for x in result.displacements[i, :dim])
         r = "  ".join(f"{x:12.4f}" for x in result.reactions[i, :dim]) if sup[i] else ""
-        lines.append(f"{nid:>8}  {u}  {r}".rstrip())
+        lines.append(f"{s.node_ids[i]:>8}  {u}  {r}".rstrip())
+    if s.n_nodes > TABLE_ROWS:
+        lines.append(f"  ... supported nodes only, of {s.n_nodes}; --json has every node")
     lines += ["", "members", f"{'id':>8}  {'N [N]':>12}  {'sigma [Pa]':>12}  "
               f"{'max vM [Pa]':>12}"]
-    for i, mid in enumerate(s.member_ids):
-        lines.append(f"{mid:>8}  {result.axial_force[i]:12.4f}  {result.axial_stress[i]:12.4e}"
-                     f"  {result.max_von_mises[i]:12.4e}")
+    order = (range(s.n_members) if s.n_members <= TABLE_ROWS
+             else np.argsort(-result.max_von_mises)[:TABLE_ROWS])
+    for i in order:
+        lines.append(f"{s.member_ids[i]:>8}  {result.axial_force[i]:12.4f}  "
+                     f"{result.axial_stress[i]:12.4e}  {result.max_von_mises[i]:12.4e}")
+    if s.n_members > TABLE_ROWS:
+        lines.append(f"  ... the {TABLE_ROWS} most stressed of {s.n_members} members; "
+                     "--json has every member")
     return "\n".join(lines)
 
 
 def _main(args: argparse.Namespace) -> int:
-    result = run_static(args.model, args.bar_model, args.subdivisions)
+    result = run_static(args.model, args.bar_model, args.subdivisions, args.solver)
     doc = static_json(result)
     # all outputs are produced before any is renamed into place
     if args.vtk:

@@ -42,7 +42,7 @@ the global X axis.  z = x × y.
 from __future__ import annotations
 
 import logging
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse as sp
@@ -135,8 +135,8 @@ class _Group:
     ncomp: int                      # element DOF components per end
     fields: list[_Field]
     n_local: int                    # size of the local (field) vector
-    S: sp.csr_matrix                # field DOFs <- element components
-    G_coo: tuple                    # element components <- global DOFs (COO, built lazily)
+    S: sp.csc_matrix                # field DOFs <- element components
+    G_coo: object                   # COO tuple (or a callable giving it) of G, built lazily
     T: sp.csr_matrix                # S @ G
     _G: sp.csr_matrix | None = None
     _K_local: sp.csr_matrix | None = None
@@ -145,7 +145,8 @@ class _Group:
     def G(self) -> sp.csr_matrix:
         """Element components (member axes) <- global DOFs."""
         if self._G is None:
-            vals, rows, cols, shape = self.G_coo
+            coo = self.G_coo() if callable(self.G_coo) else self.G_coo
+            vals, rows, cols, shape = coo
             self._G = sp.csr_matrix((vals, (rows, cols)), shape=shape)
         return self._G
 
@@ -357,7 +358,6 @@ class FEModel:
                           _Field("theta", P1, (3, c1 + 3), (1.0, 1.0))]
         ne = els.size
         nc2 = 2 * ncomp
-        # S: field DOFs <- element components
         # S: field DOFs <- element components.  Every element component is exactly one
         # field DOF (with sign), so S has one entry per column.
         comp_row = np.empty((ne, nc2), dtype=np.int64)
@@ -371,15 +371,25 @@ class FEModel:
                 comp_sign[:, comp] = sign
             off += f.basis.N
         S = sp.csc_matrix((comp_sign.ravel(), comp_row.ravel(), np.arange(ne * nc2 + 1)),
-                          shape=(off, ne * nc2)).tocsr()
+                          shape=(off, ne * nc2))
+        if not frame:
+            fast = self._bar_transformation(els, ends, emem, fields, ne, off)
+            if fast is not None:
+                T, G_coo = fast
+                return _Group(kind=kind, elements=els, ncomp=ncomp, fields=fields,
+                              n_local=off, S=S, G_coo=G_coo, T=T)
         # G: element components <- global DOFs, in pieces
         rows, cols, vals = [], [], []
 
         def add(el_local, comp, gdof, val):
+            r = el_local * nc2 + comp
+            v = np.broadcast_to(val, gdof.shape)
             ok = gdof >= 0
-            rows.append((el_local * nc2 + comp)[ok])
-            cols.append(gdof[ok])
-            vals.append(np.broadcast_to(val, gdof.shape)[ok])
+            if not ok.all():
+                r, gdof, v = r[ok], gdof[ok], v[ok]
+            rows.append(r)
+            cols.append(gdof)
+            vals.append(v)
 
         def add_block(el_local, comp0, gdofs, Rsub):
             """local comps comp0 + i  <-  Σ_j Rsub[:, i, j] · U[gdofs[:, j]]."""
@@ -434,6 +444,39 @@ class FEModel:
                           shape=(off, self.n_dof))
         return _Group(kind=kind, elements=els, ncomp=ncomp, fields=fields, n_local=off,
                       S=S, G_coo=(vals, rows, cols, (ne * nc2, self.n_dof)), T=T)
+
+    def _bar_transformation(self, els, ends, emem, fields, ne, n_local):
+        """T of two-node bars joining two joints, built directly in CSR form.
+
+        Row ``(field f, element e, end s)`` of T is ``R[e, f, :]`` on the translations of the
+        end node, so every row has exactly ``dim`` entries and no COO sort is needed.
+        Returns None when the P1 numbering is not the exploded one (then the general path
+        is used).
+        """
+        dim = self.ndim
+        edofs = fields[0].basis.element_dofs
+        if not (np.array_equal(edofs[0], 2 * np.arange(ne))
+                and np.array_equal(edofs[1], 2 * np.arange(ne) + 1)):
+            return None
+        R = self.rotation[emem[els]]                                  # (e, f, j)
+        nodes = np.stack([ends[0][1][els], ends[1][1][els]], axis=1)  # (e, s)
+        gd = self.node_dofs[nodes][:, :, :dim]                        # (e, s, j)
+        # data and indices in row order (f, e, s, j)
+        data = np.broadcast_to(R.transpose(1, 0, 2)[:, :, None, :], (dim, ne, 2, dim))
+        idx = np.broadcast_to(gd[None], (dim, ne, 2, dim))
+        indptr = np.arange(0, n_local * dim + 1, dim)
+        T = sp.csr_matrix((data.ravel(), idx.ravel(), indptr), shape=(n_local, self.n_dof))
+        def g_coo():
+            """G (element components (e, s, i) <- global DOFs): same numbers, on demand."""
+            shape4 = (ne, 2, dim, dim)
+            g_rows = np.broadcast_to((np.arange(ne)[:, None, None, None] * 2 * dim
+                                      + np.arange(2)[None, :, None, None] * dim
+                                      + np.arange(dim)[None, None, :, None]), shape4)
+            g_vals = np.broadcast_to(R[:, None, :, :], shape4)
+            g_cols = np.broadcast_to(gd[:, :, None, :], shape4)
+            return g_vals.ravel(), g_rows.ravel(), g_cols.ravel(), (ne * 2 * dim, self.n_dof)
+
+        return T, g_coo
 
     # ------------------------------------------------------------------ local matrices
     def _block_local(self, g: _Group, per_field) -> sp.csr_matrix:

@@ -19,6 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import AnalysisError, InputError
 from ..model.structure import DOF_NAMES, Structure
 from .discretisation import FEModel, discretise
 from .solver import factorise
@@ -58,6 +59,9 @@ class StaticResult:
         Von Mises stress at points S1 and S2 of each station (NaN-padded).
     max_von_mises : ndarray, shape (m,)
         Largest of S1 and S2 over the member's stations.
+    element_axial_force : ndarray, shape (n_elements,)
+        Mean axial force of every element (tension positive): the input of
+        :meth:`FEModel.geometric_stiffness` for a linear buckling analysis.
     residual : float
         ‖K u − f‖ / ‖f‖ over the free DOFs.
     """
@@ -76,6 +80,7 @@ class StaticResult:
     von_mises_s1: np.ndarray
     von_mises_s2: np.ndarray
     max_von_mises: np.ndarray
+    element_axial_force: np.ndarray
     residual: float
 
     @property
@@ -84,8 +89,11 @@ class StaticResult:
         return self.fe.structure
 
 
-def section_forces(fe: FEModel, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def section_forces(fe: FEModel, u: np.ndarray, element_forces: np.ndarray | None = None
+                   ) -> tuple[np.ndarray, np.ndarray]:
     """Section forces at every station of every member.
+
+    ``element_forces`` (from :meth:`FEModel.element_forces`) is computed when not given.
 
     Returns
     -------
@@ -93,7 +101,7 @@ def section_forces(fe: FEModel, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     forces : ndarray, shape (m, kmax + 1, 6)
         NaN past a member's own ``k + 1`` stations.
     """
-    fel = fe.element_forces(u)                                  # (el, 2, 6) on the element
+    fel = fe.element_forces(u) if element_forces is None else element_forces  # (el, 2, 6)
     m = fe.structure.n_members
     k = fe.member_subdivisions
     kmax = int(k.max()) if m else 1
@@ -166,20 +174,36 @@ def solve_static(structure: Structure, bar_model: str = "truss",
     residual = float(np.linalg.norm(r_all[fe.free]) / nf) if nf > 0 else \
         float(np.linalg.norm(r_all[fe.free]))
     reac = np.where(fe.fixed, r_all, 0.0)
-    x, F = section_forces(fe, u)
+    if not np.all(np.isfinite(u)):
+        raise AnalysisError(structure.source or structure.name,
+                            "the linear solve produced non-finite displacements; the "
+                            "stiffness is too ill-conditioned to trust")
+    fel = fe.element_forces(u)
+    x, F = section_forces(fe, u, fel)
     s = structure
     m = s.n_members
     k = fe.member_subdivisions
     ends = np.stack([F[:, 0], F[np.arange(m), k]], axis=1)
     # midpoint axial force: N is linear along a member under uniform distributed load
     N_mid = 0.5 * (ends[:, 0, 0] + ends[:, 1, 0])
-    s1, s2 = von_mises(F, s.area, s.Iy, s.Iz, s.c)
+    if np.any(fe.is_frame):
+        bad = fe.is_frame & ~(np.isfinite(s.c) & (s.c > 0))
+        if np.any(bad):
+            i = int(np.flatnonzero(bad)[0])
+            raise InputError(f"sections.{s.sections[i].name}",
+                             f"c (outer-fibre distance) is missing (member {s.member_ids[i]}); "
+                             "the bending stress of a beam needs it: give c")
+        s1, s2 = von_mises(F, s.area, s.Iy, s.Iz, s.c)
+    else:                               # no moments anywhere: bending properties unused
+        ones = np.ones(m)
+        s1, s2 = von_mises(F, s.area, ones, ones, ones)
     vm = np.fmax(s1, s2)
     result = StaticResult(
         fe=fe, u=u, f=f, displacements=fe.node_values(u), reactions=fe.node_values(reac),
         axial_force=N_mid, axial_stress=N_mid / s.area, strain=N_mid / (s.E * s.area),
         end_forces=ends, station_x=x, section_forces=F, von_mises_s1=s1, von_mises_s2=s2,
-        max_von_mises=np.nanmax(vm, axis=1) if m else np.zeros(0), residual=residual)
+        max_von_mises=np.nanmax(vm, axis=1) if m else np.zeros(0),
+        element_axial_force=0.5 * (fel[:, 1, 0] - fel[:, 0, 0]), residual=residual)
     log.info("static solve: %d DOFs, residual %.2e", fe.n_dof, residual)
     return result
 
