@@ -11,6 +11,8 @@ from trussfe.rigid.actuator import (Actuator, max_leadscrew_gain, motor_historie
                                     parse_actuator, select_gearhead_gain, thread_ratio)
 from trussfe.rigid.motion import third_order_response
 
+NAN = math.nan
+
 
 
 def make(**kw) -> Actuator:
@@ -209,3 +211,23 @@ def test_missing_gearhead_gain_needs_max_speed():
         parse_actuator("A", raw, 0)
     with pytest.raises(AnalysisError, match="gearhead_gain"):
         select_gearhead_gain(0.003, 400.0, 0.0)
+
+
+def test_gain_selection_needs_motion():
+    """Without motion (``simulate`` at rest) eq. 3.1 cannot select the gearhead gain: the
+    actuator reports it in its flags instead of failing the analysis; with motion the gain
+    makes the fastest sample turn the motor at exactly its maximum speed."""
+    from types import SimpleNamespace
+    from trussfe.rigid.actuator import actuator_histories
+    a = make(gearhead_gain=NAN, max_speed=400.0)
+    s = SimpleNamespace(extensions={"actuators": [a]}, member_ids=["M7_8"])
+    rest = SimpleNamespace(members=[0], time=np.zeros(1), velocity=np.zeros((1, 1)),
+                           acceleration=np.zeros((1, 1)))
+    h = actuator_histories(s, rest, np.array([[10.0]]))["M7_8"]
+    assert "motor_voltage" not in h and h["flags"][0].startswith("gearhead gain: not selected")
+    moving = SimpleNamespace(members=[0], time=np.arange(3.0),
+                             velocity=np.array([[0.0], [0.02], [-0.01]]),
+                             acceleration=np.zeros((3, 1)))
+    h = actuator_histories(s, moving, np.array([[10.0], [10.0], [10.0]]))["M7_8"]
+    assert h["gearhead_gain_selected"]
+    assert_allclose(h["max_motor_speed"], 400.0, rtol=1e-12)

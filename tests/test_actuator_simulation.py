@@ -166,3 +166,20 @@ def test_base_simulation_motor():
     assert abs(d["force_zero_time"] - d["min_torque_time"]) < 0.06      # one step
     assert_allclose(d["final_torque"], d["final_holding_torque"], rtol=1e-2)
     assert_allclose(d["max_speed"], 400.0, rtol=1e-12)                  # eq. 3.1 by design
+
+
+def test_actuator_force_of_the_3_5_10_second_maneuvers():
+    """Lacy fig. 3.7 / section 3.6: the shorter the maneuver, the larger the actuator's
+    departure from the static force, which follows the acceleration (compression while the
+    member accelerates outward, tension while it decelerates).  Analytic scaling: at the same
+    50 homologous samples the positions are identical, velocities scale as 1/T and
+    accelerations as 1/T², so the motion-induced force scales exactly as 1/T² (rtol 1e-9)."""
+    from trussfe.rigid.actuator_reproductions import actuator_force_variants
+    v = actuator_force_variants()
+    d3 = v[3.0]["dynamic"]
+    for T in (5.0, 10.0):
+        assert_allclose(v[T]["static_force"], v[3.0]["static_force"], rtol=1e-12)
+        assert_allclose(v[T]["dynamic"], d3 * (3.0 / T) ** 2, rtol=1e-9, atol=1e-9)
+    acc = v[3.0]["acceleration"]
+    assert np.corrcoef(d3, acc)[0, 1] > 0.8
+    assert np.abs(v[3.0]["dynamic"]).max() > np.abs(v[10.0]["dynamic"]).max() * 10

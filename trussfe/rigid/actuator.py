@@ -475,8 +475,17 @@ def actuator_histories(structure: Structure, motion, actuator_force: np.ndarray,
         vel, acc = motion.velocity[:, j], motion.acceleration[:, j]
         selected = False
         if math.isnan(act.gearhead_gain):
+            vmax = float(np.abs(vel).max())
+            if not vmax > 0.0:
+                # At rest (e.g. ``simulate`` without a motion) eq. 3.1 has nothing to go on.
+                msg = ("gearhead gain: not selected, the motion does not move the actuator; "
+                       "give gearhead_gain to get the motor histories")
+                log.warning("actuator %s: %s", act.name, msg)
+                out[act.name] = {"force": force[:, j], "flags": [msg],
+                                 "gearhead_gain_selected": False}
+                continue
             act = replace(act, gearhead_gain=select_gearhead_gain(
-                act.leadscrew_gain, act.max_speed, float(np.abs(vel).max())))
+                act.leadscrew_gain, act.max_speed, vmax))
             selected = True
         h = motor_histories(act, force[:, j], vel, acc, None if fs is None else fs[:, j],
                             time=motion.time)

@@ -162,7 +162,7 @@ def holding_voltage(force: float, act: Actuator | None = None) -> float:
     return abs(force) * a.mean_diameter / 2 * ratio * a.resistance / a.torque_constant
 
 
-__all__ = ["base_simulation_gains", "base_simulation_motor", "slew1", "slew1_motion", "slew1_structure",
+__all__ = ["actuator_force_variants", "base_simulation_gains", "base_simulation_motor", "slew1", "slew1_motion", "slew1_structure",
            "holding_voltage", "validation_actuator_gains", "validation_slew1"]
 
 
@@ -212,3 +212,24 @@ def base_simulation_motor(convention: str = "thesis") -> dict:
             "final_holding_torque": float(abs(hold["motor_torque"][0])),
             "max_voltage": float(h["max_motor_voltage"]),
             "max_speed": float(h["max_motor_speed"])}
+
+
+def actuator_force_variants(durations=(3.0, 5.0, 10.0), mass: float = 10.0) -> dict:
+    """Actuator force on the leadscrew tube in the 3, 5 and 10 s maneuvers (Lacy fig. 3.7).
+
+    Returns, per duration ``T``: ``force`` and ``static_force`` (N, positive compressing the
+    tube), the motion-induced part ``dynamic = force − static_force``, and the active member's
+    ``acceleration`` (m/s²), at the 50 samples of Appendix A (thesis scheme).
+    """
+    from .motion import third_order_motion
+    from .reproductions import L2, L3MIN, triangular_truss
+
+    out = {}
+    for T in durations:
+        s = triangular_truss(mass=mass)
+        m = third_order_motion(s, [L3MIN + L2], [L3MIN + 1.2 + L2], T, 50)
+        r = simulate(s, m, scheme="thesis", full_length_inertia=True)
+        f, fs = r.actuator_force[:, 0], r.static_actuator_force[:, 0]
+        out[T] = {"force": f, "static_force": fs, "dynamic": f - fs,
+                  "acceleration": m.acceleration[:, 0]}
+    return out
