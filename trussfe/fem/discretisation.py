@@ -136,9 +136,18 @@ class _Group:
     fields: list[_Field]
     n_local: int                    # size of the local (field) vector
     S: sp.csr_matrix                # field DOFs <- element components
-    G: sp.csr_matrix                # element components <- global DOFs
+    G_coo: tuple                    # element components <- global DOFs (COO, built lazily)
     T: sp.csr_matrix                # S @ G
-    twist: np.ndarray | None = None  # (n_el_g,) torsion active (frames, 3-D)
+    _G: sp.csr_matrix | None = None
+    _K_local: sp.csr_matrix | None = None
+
+    @property
+    def G(self) -> sp.csr_matrix:
+        """Element components (member axes) <- global DOFs."""
+        if self._G is None:
+            vals, rows, cols, shape = self.G_coo
+            self._G = sp.csr_matrix((vals, (rows, cols)), shape=shape)
+        return self._G
 
     def field(self, name: str) -> _Field | None:
         for f in self.fields:
@@ -152,7 +161,7 @@ def _exploded_mesh(h: np.ndarray) -> MeshLine1:
     n = h.size
     p = np.zeros((1, 2 * n))
     p[0, 1::2] = h
-    t = np.arange(2 * n, dtype=np.int64).reshape(n, 2).T
+    t = np.ascontiguousarray(np.arange(2 * n, dtype=np.int64).reshape(n, 2).T)
     return MeshLine1(p, t)
 
 
@@ -303,14 +312,16 @@ class FEModel:
 
     def _check_properties(self, is_frame: np.ndarray) -> None:
         s = self.structure
-        checks = [("area", s.area, np.ones(s.n_members, bool)),
-                  ("E", s.E, np.ones(s.n_members, bool))]
-        if s.dim == 2:
-            checks.append(("Iz", s.Iz, is_frame))
-        else:
-            checks += [("Iy", s.Iy, is_frame), ("Iz", s.Iz, is_frame),
-                       ("J", s.J, s.is_beam), ("G", s.G, s.is_beam)]
-        for name, values, need in checks:
+        checks = [("area", "area", np.ones(s.n_members, bool)),
+                  ("E", "E", np.ones(s.n_members, bool))]
+        # bending and torsion properties are looked at only where a member needs them
+        if np.any(is_frame):
+            checks += [("Iz", "Iz", is_frame)] if s.dim == 2 else [
+                ("Iy", "Iy", is_frame), ("Iz", "Iz", is_frame)]
+        if s.dim == 3 and np.any(s.is_beam):
+            checks += [("J", "J", s.is_beam), ("G", "G", s.is_beam)]
+        for name, attr, need in checks:
+            values = getattr(s, attr)
             bad = need & ~(np.isfinite(values) & (values > 0))
             if np.any(bad):
                 i = int(np.flatnonzero(bad)[0])
@@ -347,18 +358,20 @@ class FEModel:
         ne = els.size
         nc2 = 2 * ncomp
         # S: field DOFs <- element components
-        rows, cols, vals = [], [], []
+        # S: field DOFs <- element components.  Every element component is exactly one
+        # field DOF (with sign), so S has one entry per column.
+        comp_row = np.empty((ne, nc2), dtype=np.int64)
+        comp_sign = np.empty((ne, nc2))
         off = 0
         for f in fields:
             f.offset = off
             edofs = f.basis.element_dofs                          # (nbfun, ne)
             for b, (comp, sign) in enumerate(zip(f.comps, f.signs)):
-                rows.append(off + edofs[b])
-                cols.append(np.arange(ne) * nc2 + comp)
-                vals.append(np.full(ne, sign))
+                comp_row[:, comp] = off + edofs[b]
+                comp_sign[:, comp] = sign
             off += f.basis.N
-        S = sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
-                          shape=(off, ne * nc2))
+        S = sp.csc_matrix((comp_sign.ravel(), comp_row.ravel(), np.arange(ne * nc2 + 1)),
+                          shape=(off, ne * nc2)).tocsr()
         # G: element components <- global DOFs, in pieces
         rows, cols, vals = [], [], []
 
@@ -367,6 +380,13 @@ class FEModel:
             rows.append((el_local * nc2 + comp)[ok])
             cols.append(gdof[ok])
             vals.append(np.broadcast_to(val, gdof.shape)[ok])
+
+        def add_block(el_local, comp0, gdofs, Rsub):
+            """local comps comp0 + i  <-  Σ_j Rsub[:, i, j] · U[gdofs[:, j]]."""
+            k, di, dj = Rsub.shape
+            el3 = el_local[:, None, None] * nc2 + comp0 + np.arange(di)[None, :, None]
+            add(np.zeros(1, np.int64), np.broadcast_to(el3, (k, di, dj)).ravel(),
+                np.broadcast_to(gdofs[:, None, :], (k, di, dj)).ravel(), Rsub.ravel())
 
         mem = emem[els]
         R = self.rotation[mem]                                    # (el, dim, dim)
@@ -379,10 +399,9 @@ class FEModel:
             jj = np.flatnonzero(at_joint)
             ii = np.flatnonzero(~at_joint)
             # translations at joints: local_i = Σ_j R_ij U_j
+            add_block(eidx[jj], base, self.node_dofs[node[jj], :dim], R[jj])
+            # interior translations are in member axes
             for i in range(dim):
-                for jd in range(dim):
-                    add(eidx[jj], base + i, self.node_dofs[node[jj], jd], R[jj, i, jd])
-                # interior translations are in member axes
                 add(eidx[ii], base + i, self.interior_dofs[pt[ii], i], 1.0)
             if not frame:
                 continue
@@ -395,10 +414,10 @@ class FEModel:
                 add(eidx[ii], base + 2, self.interior_dofs[pt[ii], 2], 1.0)
                 continue
             twist = self.twist_member[mem]
+            Rr = R[jr].copy()
+            Rr[:, 0, :] *= twist[jr, None]
+            add_block(eidx[jr], base + 3, self.node_dofs[node[jr], 3:], Rr)
             for i in range(3):
-                for jd in range(3):
-                    add(eidx[jr], base + 3 + i, self.node_dofs[node[jr], 3 + jd],
-                        R[jr, i, jd] * (twist[jr] if i == 0 else 1.0))
                 add(eidx[ii], base + 3 + i, self.interior_dofs[pt[ii], 3 + i], 1.0)
             # released end: twist from the joint's rotation (zero if the joint has none),
             # bending rotations private
@@ -407,12 +426,14 @@ class FEModel:
                 add(eidx[kt], base + 3, self.node_dofs[node[kt], 3 + jd], R[kt, 0, jd])
             add(eidx[kr], base + 4, self.private_dofs[mem[kr], end, 0], 1.0)
             add(eidx[kr], base + 5, self.private_dofs[mem[kr], end, 1], 1.0)
-        G = sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
-                          shape=(ne * nc2, self.n_dof))
-        G.eliminate_zeros()
-        T = (S @ G).tocsr()
+        rows, cols, vals = (np.concatenate(a) for a in (rows, cols, vals))
+        nz = vals != 0.0
+        rows, cols, vals = rows[nz], cols[nz], vals[nz]
+        # T = S G without a sparse product: map each G entry through S's single entry
+        T = sp.csr_matrix((vals * comp_sign.ravel()[rows], (comp_row.ravel()[rows], cols)),
+                          shape=(off, self.n_dof))
         return _Group(kind=kind, elements=els, ncomp=ncomp, fields=fields, n_local=off,
-                      S=S, G=G, T=T)
+                      S=S, G_coo=(vals, rows, cols, (ne * nc2, self.n_dof)), T=T)
 
     # ------------------------------------------------------------------ local matrices
     def _block_local(self, g: _Group, per_field) -> sp.csr_matrix:
@@ -432,35 +453,36 @@ class FEModel:
 
     def _stiffness_spec(self, g: _Group):
         s = self.structure
-        EA = s.E * s.area
-        if self.ndim == 2:
-            EIv, EIw = s.E * s.Iz, None
-        else:
-            EIv, EIw = s.E * s.Iz, s.E * s.Iy     # v bends about z, w about y
-        GJ = np.where(self.twist_member, s.G * np.nan_to_num(s.J), 0.0)
 
         def spec(f: _Field, mem):
             if f.name == "u":
-                return forms.axial_stiffness, {"EA": EA[mem]}
+                return forms.axial_stiffness, {"EA": (s.E * s.area)[mem]}
             if f.name == "theta":
+                GJ = np.where(self.twist_member, s.G * np.nan_to_num(s.J), 0.0)
                 return forms.axial_stiffness, {"EA": GJ[mem]}
             if g.kind == "bar":
                 return None
-            return forms.bending_stiffness, {"EI": (EIv if f.name == "v" else EIw)[mem]}
+            # v bends about local z, w about local y
+            EI = s.E * (s.Iz if f.name == "v" else s.Iy)
+            return forms.bending_stiffness, {"EI": EI[mem]}
         return spec
 
     def local_stiffness(self, g: _Group) -> sp.csr_matrix:
-        """Block-diagonal local stiffness of one element group (field DOF space)."""
-        return self._block_local(g, self._stiffness_spec(g))
+        """Block-diagonal local stiffness of one element group (field DOF space); assembled
+        once and kept, since static recovery and every later solve reuse it."""
+        if g._K_local is None:
+            g._K_local = self._block_local(g, self._stiffness_spec(g))
+        return g._K_local
 
     def local_mass(self, g: _Group) -> sp.csr_matrix:
         """Block-diagonal consistent local mass of one element group."""
         s = self.structure
-        rhoA = s.density * s.area
-        rhoJ = np.where(self.twist_member, s.density * np.nan_to_num(s.J), 0.0)
 
         def spec(f, mem):
-            return forms.mass, {"rhoA": (rhoJ if f.name == "theta" else rhoA)[mem]}
+            if f.name == "theta":
+                rhoJ = np.where(self.twist_member, s.density * np.nan_to_num(s.J), 0.0)
+                return forms.mass, {"rhoA": rhoJ[mem]}
+            return forms.mass, {"rhoA": (s.density * s.area)[mem]}
         return self._block_local(g, spec)
 
     def local_geometric_stiffness(self, g: _Group, N: np.ndarray) -> sp.csr_matrix:

@@ -114,7 +114,12 @@ def null_space(Kff: sp.spmatrix, max_vectors: int = 12) -> np.ndarray:
         V = V[:, keep]
     else:
         k = min(max_vectors, n - 2)
-        w, V = spla.eigsh(Ks.tocsc(), k=k, sigma=-1e-6, which="LM")
+        v0 = np.random.default_rng(0).standard_normal(n)     # reproducible start vector
+        try:
+            w, V = spla.eigsh(Ks.tocsc(), k=k, sigma=-1e-6, which="LM", v0=v0,
+                              maxiter=50 * n)
+        except spla.ArpackNoConvergence as exc:               # keep what converged
+            w, V = exc.eigenvalues, exc.eigenvectors
         V = V[:, w < NULL_TOLERANCE]
     V = V * s[:, None]
     if V.size:

@@ -57,7 +57,10 @@ def _check_keys(table: dict, allowed, item: str) -> None:
 def _number(value: Any, item: str, *, positive: bool = False, nonneg: bool = False) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise InputError(item, f"expected a number, got {value!r}")
-    x = float(value)
+    try:
+        x = float(value)
+    except OverflowError:           # a TOML integer beyond the float range
+        raise InputError(item, f"number too large: {value!r}") from None
     if not math.isfinite(x):
         raise InputError(item, f"expected a finite number, got {value!r}")
     if positive and x <= 0.0:
@@ -172,6 +175,9 @@ def _parse_member(mid: str, raw: Any, node_index: dict, sections: dict, material
                                              "at both ends already)")
     orient = (_vector(raw["orientation"], f"{item}.orientation", (3,))
               if "orientation" in raw else np.full(3, np.nan))
+    if "orientation" in raw and not np.any(orient != 0.0):
+        raise InputError(f"{item}.orientation", "must be a non-zero vector in the member's "
+                                                "local x-y plane")
     return idx, sections[sec], materials[mat], mtype == "beam", ("start" in rel, "end" in rel), orient
 
 
@@ -216,9 +222,13 @@ def parse_model(data: dict, base_dir: Path | str = ".", source: str = "") -> Str
     model = _table(data, "model", required=True)
     _check_keys(model, ("name", "dimension", "gravity", "mesh"), "model")
     dim = model.get("dimension", 3)
-    if dim not in (2, 3) or isinstance(dim, bool):
+    if not isinstance(dim, int) or isinstance(dim, bool) or dim not in (2, 3):
         raise InputError("model.dimension", f"must be 2 or 3, got {dim!r}")
-    name = str(model.get("name", Path(source).stem if source else "model"))
+    name = model.get("name", Path(source).stem if source else "model")
+    if not isinstance(name, str):
+        raise InputError("model.name", f"expected a string, got {name!r}")
+    if "mesh" in model and not isinstance(model["mesh"], str):
+        raise InputError("model.mesh", f"expected a file name, got {model['mesh']!r}")
     gravity = (_vector(model["gravity"], "model.gravity", (dim,)) if "gravity" in model
                else np.zeros(dim))
 
@@ -294,20 +304,29 @@ def _node_ref(key: str, node_index: dict, table: str) -> int:
 
 def _check_geometry(coords, conn, member_ids, node_ids) -> None:
     """Zero-length and duplicate members (vectorised)."""
-    vec = coords[conn[:, 1]] - coords[conn[:, 0]]
-    length = np.linalg.norm(vec, axis=1)
-    scale = max(float(np.ptp(coords, axis=0).max()) if len(coords) > 1 else 1.0, 1e-300)
+    with np.errstate(over="ignore", invalid="ignore"):
+        vec = coords[conn[:, 1]] - coords[conn[:, 0]]
+        length = np.linalg.norm(vec, axis=1)
+        scale = max(float(np.ptp(coords, axis=0).max()) if len(coords) > 1 else 1.0, 1e-300)
+    if not (np.all(np.isfinite(length)) and math.isfinite(scale)):
+        i = int(np.flatnonzero(~np.isfinite(length))[0]) if not np.all(
+            np.isfinite(length)) else 0
+        raise InputError(f"members.{member_ids[i]}", "coordinates too large: the member "
+                                                     "length overflows (use SI units, m)")
     bad = np.flatnonzero(length <= 1e-12 * scale)
     if bad.size:
         i = bad[0]
         a, b = conn[i]
         raise InputError(f"members.{member_ids[i]}",
                          f"has zero length (nodes '{node_ids[a]}' and '{node_ids[b]}' coincide)")
+    # one integer per unordered node pair: a 1-D unique is much faster than unique(axis=0)
+    n = len(node_ids)
     key = np.sort(conn, axis=1)
-    _, first, counts = np.unique(key, axis=0, return_index=True, return_counts=True)
+    flat = key[:, 0] * n + key[:, 1]
+    _, first, counts = np.unique(flat, return_index=True, return_counts=True)
     if np.any(counts > 1):
-        dup_key = key[first[np.argmax(counts > 1)]]
-        same = np.flatnonzero(np.all(key == dup_key, axis=1))
+        dup = flat[first[np.argmax(counts > 1)]]
+        same = np.flatnonzero(flat == dup)
         raise InputError(f"members.{member_ids[same[1]]}",
                          f"duplicates member '{member_ids[same[0]]}' (same two nodes)")
 
@@ -338,19 +357,29 @@ def _mesh_geometry(mesh_name, base_dir, dim, data, sections, materials):
         raise InputError("model.mesh", "mesh has no line cells to use as members")
     conn = np.vstack([cb.data for _, cb in blocks]).astype(np.int64)
     m = conn.shape[0]
-    # group name of each line cell: cell sets first, then gmsh physical tags
-    group = np.full(m, "default", dtype=object)
+    if not np.all(np.isfinite(coords)):
+        raise InputError("model.mesh", "mesh has non-finite point coordinates")
+    if conn.size and (conn.min() < 0 or conn.max() >= coords.shape[0]):
+        raise InputError("model.mesh", "a line cell refers to a point the mesh does not have")
+    # Group of each line cell as an integer code into `names` (cell sets first, then gmsh
+    # physical tags); integer codes keep this vectorised for meshes of millions of cells.
+    names = ["default"]
+    code = np.zeros(m, dtype=np.int64)
     offsets = np.cumsum([0] + [len(cb.data) for _, cb in blocks])
     for set_name, per_block in (mesh.cell_sets or {}).items():
+        names.append(str(set_name))
         for (bi, _), off in zip(blocks, offsets):
             if bi < len(per_block) and per_block[bi] is not None and len(per_block[bi]):
-                group[off + np.asarray(per_block[bi], dtype=int)] = set_name
+                code[off + np.asarray(per_block[bi], dtype=np.int64)] = len(names) - 1
     phys = mesh.cell_data.get("gmsh:physical")
     if phys is not None:
         for (bi, _), off, nxt in zip(blocks, offsets[:-1], offsets[1:]):
-            tags = np.asarray(phys[bi]).astype(int).astype(str)
-            unset = group[off:nxt] == "default"
-            group[off:nxt][unset] = tags[unset]
+            tags = np.asarray(phys[bi]).astype(np.int64)
+            uniq, inv = np.unique(tags, return_inverse=True)
+            first = len(names)
+            names += [str(t) for t in uniq]
+            unset = code[off:nxt] == 0
+            code[off:nxt][unset] = first + inv.reshape(-1)[unset]
     groups = _table(data, "groups")
     if not groups:
         if len(sections) == 1 and len(materials) == 1:
@@ -359,25 +388,28 @@ def _mesh_geometry(mesh_name, base_dir, dim, data, sections, materials):
         else:
             raise InputError("[groups]", "a mesh model needs [groups.NAME] = { section, "
                                          "material } for its cell sets (or 'default')")
-    resolved = {}
-    for gname in np.unique(group):
+    used = np.unique(code)
+    sec_of, mat_of = {}, {}
+    beam_of = np.zeros(len(names), dtype=bool)
+    rel_of = np.zeros((len(names), 2), dtype=bool)
+    orient_of = np.full((len(names), 3), np.nan)
+    for c in used:
+        gname = names[c]
         g = groups.get(gname, groups.get("default"))
         if g is None:
             raise InputError("[groups]", f"cell set '{gname}' has no entry and there is no "
                                          "'default' group")
-        if gname not in resolved:
-            raw = dict(g)
-            raw["nodes"] = ["0", "1"]
-            _, sec, mat, beam, rel, orient = _parse_member(
-                f"groups.{gname}", raw, {"0": 0, "1": 1}, sections, materials)
-            resolved[gname] = (sec, mat, beam, rel, orient)
-    props = [resolved[g] for g in group]
+        if not isinstance(g, dict):
+            raise InputError(f"groups.{gname}", "expected a table { section, material }")
+        raw = dict(g)
+        raw["nodes"] = ["0", "1"]
+        _, sec_of[c], mat_of[c], beam_of[c], rel_of[c], orient_of[c] = _parse_member(
+            f"groups.{gname}", raw, {"0": 0, "1": 1}, sections, materials)
+    codes = code.tolist()
     node_ids = [str(i) for i in range(coords.shape[0])]
     member_ids = [str(i) for i in range(m)]
-    return (node_ids, coords, member_ids, conn, [p[0] for p in props], [p[1] for p in props],
-            np.array([p[2] for p in props], dtype=bool),
-            np.array([p[3] for p in props], dtype=bool).reshape(-1, 2),
-            np.array([p[4] for p in props]).reshape(-1, 3))
+    return (node_ids, coords, member_ids, conn, [sec_of[c] for c in codes],
+            [mat_of[c] for c in codes], beam_of[code], rel_of[code], orient_of[code])
 
 
 def read_model(path: str | Path) -> Structure:

@@ -38,7 +38,8 @@ import numpy as np
 from ..errors import InputError
 from .output import atomic_dir, atomic_path
 
-__all__ = ["write_vtu", "write_pvd", "write_series", "write_stations", "station_mesh"]
+__all__ = ["write_vtu", "write_pvd", "write_series", "write_stations", "station_mesh",
+           "write_mode_set", "read_pvd"]
 
 log = logging.getLogger(__name__)
 
@@ -249,7 +250,8 @@ def write_series(directory: str | Path, structure, frames: Iterable[Mapping[str,
     frames : iterable of mapping
         One mapping per step with optional keys ``"time"`` (the pvd timestep: a time in s,
         or a mode number; default the frame index), ``"coords"``, ``"point_data"``,
-        ``"cell_data"``, ``"field_data"`` (as in :func:`write_vtu`).
+        ``"cell_data"``, ``"field_data"`` (as in :func:`write_vtu`); or ``"mesh"``, a ready
+        :class:`meshio.Mesh` (e.g. from :func:`station_mesh`), written as it is.
     name : str
         Base name of the collection.
 
@@ -270,8 +272,9 @@ def write_series(directory: str | Path, structure, frames: Iterable[Mapping[str,
     with atomic_dir(directory) as tmp:
         for i, fr in enumerate(frames):
             rel = Path(name) / f"{name}_{i:04d}.vtu"
-            mesh = structure_mesh(structure, fr.get("coords"), fr.get("point_data"),
-                                  fr.get("cell_data"), fr.get("field_data"))
+            mesh = fr.get("mesh") or structure_mesh(structure, fr.get("coords"),
+                                                    fr.get("point_data"), fr.get("cell_data"),
+                                                    fr.get("field_data"))
             (tmp / name).mkdir(exist_ok=True)
             _meshio_write(tmp / rel, mesh)
             entries.append((fr.get("time", i), rel))
@@ -291,7 +294,10 @@ def station_mesh(structure, stations: np.ndarray, coords: np.ndarray | None = No
     ----------
     structure : Structure
     stations : ndarray, shape (s,) or (m, s)
-        Stations as fractions ξ ∈ [0, 1] of each member's length, ascending (s ≥ 2).
+        Stations as fractions ξ ∈ [0, 1] of each member's length, ascending, at least two per
+        member.  Members with fewer stations than others are NaN-padded at the end of their
+        row (e.g. truss bars with 2 stations beside beams with k + 1); padded entries of the
+        data arrays are ignored.
     coords : ndarray, shape (n, dim), optional
         Node positions defining the straight member axes (default the model's).
     point_data : mapping name → array of shape (m, s, ...)
@@ -304,8 +310,9 @@ def station_mesh(structure, stations: np.ndarray, coords: np.ndarray | None = No
     Returns
     -------
     meshio.Mesh
-        ``m·s`` points, ``m·(s − 1)`` line cells; cell data ``member_id`` gives each segment's
-        member and point data ``xi`` the station fraction.
+        One point per station and one line cell per segment between consecutive stations
+        (``m·s`` points and ``m·(s − 1)`` cells without padding); cell data ``member_id`` gives
+        each segment's member and point data ``xi`` the station fraction.
     """
     m = structure.n_members
     xi = np.asarray(stations, dtype=float)
@@ -314,29 +321,41 @@ def station_mesh(structure, stations: np.ndarray, coords: np.ndarray | None = No
     if xi.ndim != 2 or xi.shape[0] != m or xi.shape[1] < 2:
         raise InputError("vtk stations", f"shape {np.shape(stations)}: need (s,) or ({m}, s) "
                          "with s >= 2")
-    if np.any(np.diff(xi, axis=1) <= 0) or xi.min() < 0 or xi.max() > 1:
-        raise InputError("vtk stations", "stations must ascend within [0, 1]")
     s = xi.shape[1]
+    valid = np.isfinite(xi)                                          # (member, station)
+    nvalid = valid.sum(axis=1)
+    prefix = np.arange(s)[None, :] < nvalid[:, None]
+    if np.any(valid != prefix) or np.any(nvalid < 2):
+        raise InputError("vtk stations", "each member needs at least 2 stations; NaN padding "
+                         "may only follow them")
+    xf = np.where(valid, xi, 1.0)
+    dx = np.diff(xf, axis=1)
+    seg = valid[:, 1:]                                               # (member, segment)
+    if np.any(dx[seg] <= 0) or xf.min() < 0 or xf.max() > 1:
+        raise InputError("vtk stations", "stations must ascend within [0, 1]")
     x = structure.coords if coords is None else np.asarray(coords, dtype=float)
     xa, xb = x[structure.connectivity[:, 0]], x[structure.connectivity[:, 1]]  # (m, dim)
-    pts = xa[:, None, :] + xi[:, :, None] * (xb - xa)[:, None, :]  # (member, station, dim)
-    pts = _pad3(pts.reshape(m * s, -1))
-    base = (np.arange(m) * s)[:, None] + np.arange(s - 1)[None, :]  # (member, segment)
-    cells = np.stack([base, base + 1], axis=-1).reshape(-1, 2)
-    pdata = {"xi": xi.reshape(-1)}
+    pts = xa[:, None, :] + xf[:, :, None] * (xb - xa)[:, None, :]  # (member, station, dim)
+    pts = _pad3(pts[valid])
+    # point number of every valid station; segments join consecutive valid stations
+    number = np.cumsum(valid.ravel()).reshape(m, s) - 1
+    cells = np.stack([number[:, :-1][seg], number[:, 1:][seg]], axis=-1)
+    pdata = {"xi": xi[valid]}
     for k, v in (point_data or {}).items():
         v = np.asarray(v)
         if v.shape[:2] != (m, s):
-            raise InputError(f"vtk station data '{k}'", f"has shape {v.shape}; need ({m}, {s}, ...)")
-        pdata[k] = _check_array(k, v.reshape((m * s,) + v.shape[2:]), m * s, "station")
-    cdata = {"member_id": [np.repeat(np.arange(m, dtype=np.int64), s - 1)]}
+            raise InputError(f"vtk station data '{k}'",
+                             f"has shape {v.shape}; need ({m}, {s}, ...)")
+        pdata[k] = _check_array(k, v[valid], int(valid.sum()), "station")
+    nseg = int(seg.sum())
+    member = np.broadcast_to(np.arange(m, dtype=np.int64)[:, None], seg.shape)
+    cdata = {"member_id": [member[seg]]}
     for k, v in (cell_data or {}).items():
         v = np.asarray(v)
         if v.shape[:2] != (m, s - 1):
             raise InputError(f"vtk segment data '{k}'",
                              f"has shape {v.shape}; need ({m}, {s - 1}, ...)")
-        cdata[k] = [_check_array(k, v.reshape((m * (s - 1),) + v.shape[2:]), m * (s - 1),
-                                 "segment")]
+        cdata[k] = [_check_array(k, v[seg], nseg, "segment")]
     fdata = {k: np.atleast_1d(np.asarray(v, dtype=float)) for k, v in (field_data or {}).items()}
     return meshio.Mesh(pts, [("line", cells)], point_data=pdata, cell_data=cdata,
                        field_data=fdata)
@@ -364,3 +383,62 @@ def write_stations(path: str | Path, structure, stations: np.ndarray,
     """
     return _write_mesh(path, station_mesh(structure, stations, coords, point_data, cell_data,
                                           field_data))
+
+
+def write_mode_set(directory: str | Path, structure, node_shapes: np.ndarray, name: str,
+                   values: Mapping[str, np.ndarray] | None = None,
+                   stations: tuple[np.ndarray, np.ndarray] | None = None,
+                   cell_data: Mapping[str, np.ndarray] | None = None) -> list[Path]:
+    """Write mode shapes (vibration or buckling) as one ``.pvd`` with a step per mode.
+
+    Parameters
+    ----------
+    directory : str or Path
+    structure : Structure
+    node_shapes : ndarray, shape (k, n, dim)
+        Translations of each mode at the nodes.  Written as point data ``mode_shape`` as
+        given and as ``displacement`` scaled to a largest nodal translation of 1, so that
+        ParaView's *Warp By Vector* with a scale factor of a length shows every mode alike.
+    name : str
+        Collection name (``modes``, ``buckling``).
+    values : mapping name → ndarray (k,), optional
+        Per-mode scalars written as field data (``frequency_hz``, ``load_factor``); the pvd
+        timestep is the mode number 1..k.
+    stations : (xi, shapes), optional
+        Shapes along subdivided members: ``xi`` (m, s) fractions and ``shapes``
+        (k, m, s, dim); written as a second collection ``<name>_stations.pvd`` (polylines,
+        :func:`station_mesh`) scaled by the same factor as ``displacement``.
+    cell_data : mapping name → ndarray (m,) or (k, m), optional
+        Member data (e.g. ``buckling_utilisation``, ``axial_force``), the same for every mode
+        when 1-D.
+
+    Returns
+    -------
+    list of Path
+        The ``.pvd`` files written.
+    """
+    node_shapes = np.asarray(node_shapes, dtype=float)
+    k = node_shapes.shape[0]
+    amp = np.linalg.norm(node_shapes, axis=2).max(axis=1)                 # (k,)
+    if stations is not None:
+        amp = np.fmax(amp, np.nanmax(np.linalg.norm(stations[1], axis=3), axis=(1, 2)))
+    scale = np.where(amp > 0, 1.0 / np.where(amp > 0, amp, 1.0), 0.0)
+    values = dict(values or {})
+    cells = dict(cell_data or {})
+    frames = []
+    for i in range(k):
+        fd = {key: float(np.asarray(v)[i]) for key, v in values.items()}
+        fd["mode"] = i + 1
+        cd = {key: (np.asarray(v)[i] if np.ndim(v) == 2 else v) for key, v in cells.items()}
+        frames.append({"time": i + 1, "field_data": fd, "cell_data": cd,
+                       "point_data": {"mode_shape": node_shapes[i],
+                                      "displacement": node_shapes[i] * scale[i]}})
+    out = [write_series(directory, structure, frames, name)]
+    if stations is not None:
+        xi, shp = stations
+        sframes = [{"time": i + 1, "mesh": station_mesh(
+            structure, xi, point_data={"mode_shape": shp[i], "displacement": shp[i] * scale[i]},
+            field_data={**{key: float(np.asarray(v)[i]) for key, v in values.items()},
+                        "mode": i + 1})} for i in range(k)]
+        out.append(write_series(directory, structure, sframes, f"{name}_stations"))
+    return out

@@ -1,0 +1,94 @@
+# SPDX-License-Identifier: MIT
+"""``trussfe buckling MODEL [--count N] [--bar-model pinned-beam|truss] [--subdivisions K]
+[--json OUT] [--vtk DIR]``: linear buckling load factors about the static state
+(CONTRACT.md §2–4)."""
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from ..fem.buckling import BucklingResult, buckling_json, solve_buckling
+from ..fem.discretisation import BAR_MODELS
+from ..io.model_file import read_model
+from ..io.output import write_json
+from ._modeshapes import write_modes_vtk
+
+
+def register(subparsers) -> None:
+    """Add the ``buckling`` command."""
+    p = subparsers.add_parser("buckling", help="linear (eigen) buckling load factors",
+                              description="Linear buckling about the static state under the "
+                              "model's loads and gravity: load factors (smallest magnitude "
+                              "first, negative = reversed loads), modes, member Euler loads.")
+    p.add_argument("model", help="model file (TOML)")
+    p.add_argument("--count", type=int, default=4, metavar="N",
+                   help="number of load factors (default 4)")
+    p.add_argument("--bar-model", choices=BAR_MODELS, default="pinned-beam",
+                   help="pinned beams (default: members buckle between joints) or "
+                   "axial-only truss bars (joint instability only)")
+    p.add_argument("--subdivisions", type=int, default=None, metavar="K",
+                   help="elements per frame member (default 4)")
+    p.add_argument("--json", metavar="OUT", help="write the results as JSON")
+    p.add_argument("--vtk", metavar="DIR", help="write DIR/buckling.pvd, a step per mode")
+    p.set_defaults(func=_main)
+
+
+def run_buckling(model_path: str | Path, count: int = 4, bar_model: str = "pinned-beam",
+                 subdivisions: int | None = None) -> BucklingResult:
+    """Read a model file and compute its buckling load factors."""
+    structure = read_model(model_path)
+    return solve_buckling(structure, count=count, bar_model=bar_model,
+                          subdivisions=subdivisions)
+
+
+def analyse(model_path: str | Path, count: int = 4, bar_model: str = "pinned-beam",
+            subdivisions: int | None = None, **_ignored) -> dict:
+    """Buckling analysis of a model file; returns the CONTRACT.md §3 ``buckling`` document."""
+    return buckling_json(run_buckling(model_path, count, bar_model, subdivisions))
+
+
+def write_vtk(directory: str | Path, result: BucklingResult) -> list[Path]:
+    """``DIR/buckling.pvd``: point data ``mode_shape`` and ``displacement`` (largest
+    translation 1), field data ``load_factor`` and ``mode``, cell data ``axial_force``
+    (static), ``euler_load`` and ``buckling_utilisation``."""
+    st = result.static
+    return write_modes_vtk(directory, result.fe, result.shapes, result.node_shapes(),
+                           "buckling", {"load_factor": result.load_factors},
+                           cell_data={"axial_force": st.axial_force,
+                                      "axial_stress": st.axial_stress,
+                                      "von_mises": st.max_von_mises,
+                                      "euler_load": result.euler_load,
+                                      "buckling_utilisation": result.utilisation})
+
+
+def _table(result: BucklingResult) -> str:
+    s = result.structure
+    fe = result.fe
+    lines = [f"trussfe buckling: {s.name} ({fe.bar_model} model, {fe.free.size} free DOFs)",
+             "", f"{'mode':>5}  {'load factor':>14}"]
+    for i, lam in enumerate(result.load_factors):
+        note = "  (reversed loads)" if lam < 0 else ""
+        lines.append(f"{i + 1:>5}  {lam:14.6g}{note}")
+    crit = result.critical_load_factor
+    lines += ["", "critical load factor: " + (f"{crit:.6g}" if np.isfinite(crit) else
+                                              "none among the modes computed"),
+              "", "members (Lacy eq. 2.26, C = 1)",
+              f"{'id':>8}  {'N [N]':>12}  {'P_euler [N]':>12}  {'utilisation':>12}"]
+    for i, mid in enumerate(s.member_ids):
+        lines.append(f"{mid:>8}  {result.static.axial_force[i]:12.4f}  "
+                     f"{result.euler_load[i]:12.4f}  {result.utilisation[i]:12.4g}")
+    return "\n".join(lines)
+
+
+def _main(args: argparse.Namespace) -> int:
+    result = run_buckling(args.model, args.count, args.bar_model, args.subdivisions)
+    doc = buckling_json(result)
+    if args.vtk:
+        write_vtk(args.vtk, result)
+    if args.json:
+        write_json(args.json, doc)
+    sys.stdout.write(_table(result) + "\n")
+    return 0

@@ -1,0 +1,90 @@
+# SPDX-License-Identifier: MIT
+"""``trussfe modes MODEL [--count N] [--mass consistent|lumped] [--bar-model ...]
+[--subdivisions K] [--json OUT] [--vtk DIR]``: natural frequencies and mode shapes
+(CONTRACT.md §2–4)."""
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from ..fem.discretisation import BAR_MODELS
+from ..fem.modal import MASS_KINDS, ModalResult, modes_json, solve_modes
+from ..io.model_file import read_model
+from ..io.output import write_json
+from ._modeshapes import write_modes_vtk
+
+
+def register(subparsers) -> None:
+    """Add the ``modes`` command."""
+    p = subparsers.add_parser("modes", help="natural frequencies and mode shapes",
+                              description="Modal analysis: the lowest natural frequencies, "
+                              "mass-normalised mode shapes, participation factors and "
+                              "effective masses.")
+    p.add_argument("model", help="model file (TOML)")
+    p.add_argument("--count", type=int, default=6, metavar="N",
+                   help="number of modes (default 6)")
+    p.add_argument("--mass", choices=MASS_KINDS, default="consistent",
+                   help="member mass matrix (default consistent)")
+    p.add_argument("--bar-model", choices=BAR_MODELS, default="truss",
+                   help="bars as axial-only truss elements (default) or as pinned beams, "
+                   "which adds the members' own bending modes")
+    p.add_argument("--subdivisions", type=int, default=None, metavar="K",
+                   help="elements per frame member (default 4)")
+    p.add_argument("--json", metavar="OUT", help="write the results as JSON")
+    p.add_argument("--vtk", metavar="DIR", help="write DIR/modes.pvd, a step per mode")
+    p.set_defaults(func=_main)
+
+
+def run_modes(model_path: str | Path, count: int = 6, mass: str = "consistent",
+              bar_model: str = "truss", subdivisions: int | None = None) -> ModalResult:
+    """Read a model file and compute its modes."""
+    structure = read_model(model_path)
+    return solve_modes(structure, count=count, mass=mass, bar_model=bar_model,
+                       subdivisions=subdivisions)
+
+
+def analyse(model_path: str | Path, count: int = 6, mass: str = "consistent",
+            bar_model: str = "truss", subdivisions: int | None = None, **_ignored) -> dict:
+    """Modal analysis of a model file; returns the CONTRACT.md §3 ``modes`` document."""
+    return modes_json(run_modes(model_path, count, mass, bar_model, subdivisions))
+
+
+def write_vtk(directory: str | Path, result: ModalResult) -> list[Path]:
+    """``DIR/modes.pvd``: point data ``mode_shape`` (mass-normalised) and ``displacement``
+    (largest translation 1), field data ``frequency_hz`` and ``mode``; pvd timestep = mode
+    number.  Subdivided members also give ``DIR/modes_stations.pvd``."""
+    return write_modes_vtk(directory, result.fe, result.shapes, result.node_shapes(), "modes",
+                           {"frequency_hz": result.frequencies_hz})
+
+
+def _table(result: ModalResult) -> str:
+    s = result.structure
+    dim = s.dim
+    axes = "xyz"[:dim]
+    fe = result.fe
+    lines = [f"trussfe modes: {s.name} ({fe.bar_model} model, {result.mass_kind} mass, "
+             f"{fe.free.size} free DOFs)"]
+    if result.rigid_modes:
+        lines.append(f"{result.rigid_modes} zero-frequency mode(s): the structure is "
+                     "unsupported or a mechanism (rigid-body / mechanism motion)")
+    lines += ["", f"{'mode':>5}  {'f [Hz]':>14}  " + "  ".join(
+        f"{'m_eff,' + a + ' [kg]':>14}" for a in axes) + "  kind"]
+    for i in range(result.count):
+        f = result.frequencies_hz[i]
+        meff = "  ".join(f"{x:14.6g}" for x in result.effective_mass[i])
+        lines.append(f"{i + 1:>5}  {f:14.6g}  {meff}  {result.kinds[i]}")
+    lines.append(f"{'total':>5}  {'':>14}  " + "  ".join(f"{x:14.6g}"
+                                                         for x in result.total_mass))
+    return "\n".join(lines)
+
+
+def _main(args: argparse.Namespace) -> int:
+    result = run_modes(args.model, args.count, args.mass, args.bar_model, args.subdivisions)
+    doc = modes_json(result)
+    if args.vtk:
+        write_vtk(args.vtk, result)
+    if args.json:
+        write_json(args.json, doc)
+    sys.stdout.write(_table(result) + "\n")
+    return 0

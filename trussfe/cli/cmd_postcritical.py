@@ -1,0 +1,174 @@
+# SPDX-License-Identifier: MIT
+"""``trussfe postcritical MODEL [--control load|displacement|arc-length] [--steps N]
+[--json OUT] [--vtk DIR] [--plot PNG] ...``: geometrically nonlinear path with member failure
+(CONTRACT.md §2–4).
+
+The model's ``[loads]`` are the reference load pattern scaled by the load factor λ; failure
+laws come from its ``[failure]`` table and analysis settings from ``[postcritical]`` (options
+given here override them).
+"""
+from __future__ import annotations
+
+import logging
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import InputError
+from ..io.model_file import read_model
+from ..io.output import atomic_path, write_json
+from ..nonlinear.analysis import result_document, run_postcritical
+from ..nonlinear.model import BAR_MODELS
+from ..nonlinear.path import CONTROLS, PathResult
+
+log = logging.getLogger(__name__)
+
+
+def register(subparsers) -> None:
+    """Add the ``postcritical`` command."""
+    p = subparsers.add_parser(
+        "postcritical", help="geometrically nonlinear path with member failure",
+        description="Follow the equilibrium path of the model under its [loads] scaled by a "
+        "load factor: co-rotational elements, limit and bifurcation points, member buckling, "
+        "yield and fracture, and the hand-over to mechanism motion.")
+    p.add_argument("model", help="model file (TOML)")
+    p.add_argument("--control", choices=CONTROLS, default=None,
+                   help="path control (default arc-length, or the model's [postcritical])")
+    p.add_argument("--steps", type=int, default=None, metavar="N", help="number of steps")
+    p.add_argument("--step", type=float, default=None, metavar="S",
+                   help="first increment: Δλ (load), Δu (displacement) or Δs (arc-length)")
+    p.add_argument("--max-load-factor", type=float, default=None, metavar="L",
+                   help="stop when the load factor exceeds L")
+    p.add_argument("--max-displacement", type=float, default=None, metavar="D",
+                   help="stop when the monitored displacement exceeds D (m)")
+    p.add_argument("--monitor", default=None, metavar="NODE:AXIS",
+                   help="displacement plotted (and prescribed under displacement control)")
+    p.add_argument("--bar-model", choices=BAR_MODELS, default=None,
+                   help="bars as co-rotational truss elements or as pinned beams")
+    p.add_argument("--subdivisions", type=int, default=None, metavar="K",
+                   help="beam elements per beam member (default 8)")
+    p.add_argument("--imperfection", type=float, default=None, metavar="A",
+                   help="amplitude (m) of the first buckling mode added to the geometry")
+    p.add_argument("--branch", action="store_true", default=None,
+                   help="at a bifurcation follow the secondary branch")
+    p.add_argument("--json", metavar="OUT", help="write the path and events as JSON")
+    p.add_argument("--vtk", metavar="DIR", help="write the path as a .pvd time series")
+    p.add_argument("--plot", metavar="PNG", help="plot the load-displacement curve")
+    p.set_defaults(func=_main)
+
+
+def _options(args) -> dict:
+    for name in ("steps", "subdivisions"):
+        v = getattr(args, name)
+        if v is not None and v < 1:
+            raise InputError(f"--{name}", f"must be a positive integer, got {v}")
+    for name in ("step", "max_load_factor", "max_displacement"):
+        v = getattr(args, name)
+        if v is not None and not (np.isfinite(v) and v > 0):
+            raise InputError(f"--{name.replace('_', '-')}", f"must be positive, got {v}")
+    if args.imperfection is not None and not (np.isfinite(args.imperfection)
+                                              and args.imperfection >= 0):
+        raise InputError("--imperfection", f"must not be negative, got {args.imperfection}")
+    return dict(control=args.control, steps=args.steps, step=args.step,
+                max_load_factor=args.max_load_factor, max_displacement=args.max_displacement,
+                monitor=args.monitor, bar_model=args.bar_model,
+                subdivisions=args.subdivisions, imperfection=args.imperfection,
+                branch=args.branch)
+
+
+def run(model_path: str | Path, **options) -> PathResult:
+    """Read a model file and follow its path (options as the command's, ``None`` = default)."""
+    structure = read_model(model_path)
+    return run_postcritical(structure, **options)
+
+
+def analyse(model_path: str | Path, **options) -> dict:
+    """Post-critical analysis of a model file; returns the CONTRACT.md §3 document."""
+    return result_document(run(model_path, **options))
+
+
+def write_vtk(directory: str | Path, result: PathResult) -> Path:
+    """The path as ``DIR/<model>_path.pvd``: one ``.vtu`` per path point, the pvd time being
+    the point index; point data ``displacement``; cell data ``axial_force`` and ``failed``
+    (1 for a member that has failed — removed or past its law's limit), field data
+    ``load_factor``."""
+    from ..io.vtk import write_series
+    m = result.model
+    s = m.structure
+    failed_by_law = np.zeros(s.n_members, dtype=np.int8)
+    frames = []
+    event_at = {}
+    for e in result.events:
+        if e.member is not None:
+            event_at.setdefault(e.point, []).append(e.member)
+    for i, p in enumerate(result.path):
+        for mem in event_at.get(i, []):
+            failed_by_law[mem] = 1
+        d = p.u[: s.n_nodes * s.dim].reshape(s.n_nodes, s.dim)
+        failed = np.maximum(failed_by_law, (~p.alive).astype(np.int8))
+        frames.append({"time": float(i), "coords": s.coords + d,
+                       "point_data": {"displacement": d},
+                       "cell_data": {"axial_force": p.forces, "failed": failed.copy(),
+                                     "axial_stress": p.forces / s.area},
+                       "field_data": {"load_factor": p.load_factor}})
+    name = "".join(ch if ch.isalnum() or ch in "-_" else "_" for ch in Path(
+        s.source or s.name).stem) + "_path"
+    return write_series(directory, s, frames, name)
+
+
+def write_plot(path: str | Path, result: PathResult) -> None:
+    """Load factor against the monitored displacement, events marked; written atomically."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    s = result.model.structure
+    node, axis = divmod(result.monitor, s.dim)
+    lam = result.load_factors
+    u = result.displacement()
+    eq = np.array([p.stage == "equilibrium" for p in result.path])
+    fig, ax = plt.subplots(figsize=(6.4, 4.4))
+    ax.plot(u[eq], lam[eq], ".-", lw=1.2, ms=3, label="equilibrium path")
+    if (~eq).any():
+        j = np.flatnonzero(~eq)
+        j = np.concatenate([[j[0] - 1], j])              # from the hand-over state
+        ax.plot(u[j], lam[j], "--", color="0.5", label="mechanism motion (λ held)")
+    marks = {"limit_point": ("o", "limit point"), "bifurcation": ("s", "bifurcation"),
+             "buckling": ("v", "buckling"), "yield": ("^", "yield"),
+             "fracture": ("x", "fracture"), "mechanism": ("*", "mechanism")}
+    seen = set()
+    for e in result.events:
+        if e.kind in marks and 0 <= e.point < len(result.path):
+            mk, lab = marks[e.kind]
+            ax.plot(u[e.point], result.path[e.point].load_factor, mk, ms=8, mfc="none",
+                    color="C3", label=None if lab in seen else lab)
+            seen.add(lab)
+    ax.set_xlabel(f"displacement of node {s.node_ids[node]}, {'xyz'[axis]} (m)")
+    ax.set_ylabel("load factor λ")
+    ax.set_title(s.name)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    with atomic_path(path) as tmp:
+        fig.savefig(tmp, dpi=120, format="png")
+    plt.close(fig)
+
+
+def _main(args) -> int:
+    result = run(args.model, **_options(args))
+    doc = result_document(result)
+    if args.json:
+        write_json(args.json, doc)
+    if args.vtk:
+        write_vtk(args.vtk, result)
+    if args.plot:
+        write_plot(args.plot, result)
+    out = sys.stdout
+    out.write(f"{doc['model']}: {len(doc['path'])} path points, maximum load factor "
+              f"{doc['max_load_factor']:.6g}\n")
+    for e in doc["events"]:
+        who = f" member {e['member']}" if e["member"] is not None else ""
+        out.write(f"  λ = {e['load_factor']:.6g}: {e['kind']}{who}"
+                  f"{' — ' + e['detail'] if e['detail'] else ''}\n")
+    out.write(f"  {doc['termination']}\n")
+    return 0

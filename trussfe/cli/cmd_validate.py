@@ -1,0 +1,58 @@
+# SPDX-License-Identifier: MIT
+"""``trussfe validate [--out DIR] [--case ID ...] [--cases DIR]``: run the validation suite
+and write ``DIR/report.md`` and ``DIR/report.html``.
+
+Exit status: 0 when every check is within its tolerance (documented deviations are shown, not
+failed), 1 when a check misses its tolerance or a case cannot be run, 2 on bad input (a
+malformed case file, an unknown case id).
+"""
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+from .._resources import data_dir
+from ..validate import load_cases, run_cases, write_report
+
+
+def register(subparsers) -> None:
+    """Add the ``validate`` command."""
+    p = subparsers.add_parser(
+        "validate", help="run the validation suite and write report.md / report.html",
+        description="Run the validation cases (the thesis tables, analytic solutions, "
+                    "cross-checks between solvers) and write a report.")
+    p.add_argument("--out", default="validation-report", metavar="DIR",
+                   help="report folder (default: ./validation-report)")
+    p.add_argument("--case", action="append", metavar="ID", dest="cases_selected",
+                   help="run only this case (repeatable)")
+    p.add_argument("--cases", metavar="DIR", default=None,
+                   help="folder of case files (default: the built-in validation/cases)")
+    p.add_argument("--no-progress", action="store_true", help="no progress bar")
+    p.set_defaults(func=_main)
+
+
+def default_cases_dir() -> Path:
+    """The built-in case folder."""
+    return data_dir("validation") / "cases"
+
+
+def _main(args) -> int:
+    folder = Path(args.cases) if args.cases else default_cases_dir()
+    cases = load_cases(folder, args.cases_selected)
+    results = run_cases(cases, progress=not args.no_progress)
+    md, page = write_report(results, args.out)
+    failed = [r for r in results if not r.passed]
+    for r in results:
+        line = f"{r.status:5s}  {r.case.id}"
+        if r.error:
+            line += f"  ({r.error})"
+        else:
+            bad = [q for q in r.quantities if q.failed]
+            if bad:
+                line += "  (" + "; ".join(f"{q.quantity.name}: {q.message or 'rel. error '}"
+                                          f"{'' if q.message else format(q.rel_error or 0, '.2e')}"
+                                          for q in bad[:3]) + ")"
+        print(line)
+    print(f"{len(results) - len(failed)}/{len(results)} cases pass; report: {page}")
+    sys.stdout.flush()
+    return 1 if failed else 0

@@ -1,0 +1,270 @@
+# SPDX-License-Identifier: MIT
+"""Linear (eigen) buckling about the static state, and the thesis' member Euler check.
+
+With the element axial forces ``N`` of a linear static solution under the model's loads,
+the load factors λ solve
+
+.. math:: (K + \\lambda K_g(N))\\,\\varphi = 0 ,
+
+so ``λ`` times the applied loads is a bifurcation load.  The problem is solved as
+``K_g φ = θ K φ`` with ``θ = −1/λ`` (``K`` positive definite on the free DOFs), keeping the
+eigenvalues of largest ``|θ|``: the smallest ``|λ|``.  The sign is kept: ``λ < 0`` means the
+structure buckles only if the loads are *reversed* (a member that is in tension under the
+given loads and would be compressed by the reversed ones); it is reported as negative and
+never as a buckling factor of the given loads.
+
+``bar_model="truss"`` finds the instability of the joints only (axial bars with the string
+stiffness of their axial force); ``"pinned-beam"`` (default here) subdivides every bar into
+beam elements so that each member's own Euler buckling between its joints appears.
+
+Member Euler load (Lacy eq. 2.26 / 4.77)::
+
+    P_cr = C π² E A / (l / k)²  =  C π² E I / l²,     k = sqrt(I / A)
+
+with ``C = 1`` for pinned ends (Lacy section 2.8 also uses ``C = 1`` for the
+cantilever–pinned leadscrew tube, "conservative").  The thesis prints ``k = sqrt(A/I)``
+(an OCR or typing slip: that is the inverse of a radius of gyration); the code
+(Appendix A: ``Pcr1 = pi^2*E*ina/l1^2``) uses ``k = sqrt(I/A)``, as here.
+"""
+from __future__ import annotations
+
+import logging
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.linalg as sla
+import scipy.sparse.linalg as spla
+
+from ..errors import AnalysisError, InputError
+from ..model.structure import Structure
+from .discretisation import FEModel
+from .solver import factorise
+from .static import StaticResult, solve_static
+
+log = logging.getLogger(__name__)
+
+#: Free-DOF count up to which the eigenproblem is solved densely.
+DENSE_BUCKLING_LIMIT = 600
+
+#: Axial forces below this fraction of the largest applied load count as "unloaded".
+UNLOADED_TOLERANCE = 1e-12
+
+
+def euler_load(structure: Structure, end_coefficient: float | np.ndarray = 1.0,
+               lengths: np.ndarray | None = None) -> np.ndarray:
+    """Euler critical load of every member (Lacy eq. 2.26 / 4.77).
+
+    Parameters
+    ----------
+    structure : Structure
+    end_coefficient : float or ndarray, shape (m,)
+        End-condition constant C (1 for pinned–pinned).
+    lengths : ndarray, shape (m,), optional
+        Buckling lengths (default the member lengths).
+
+    Returns
+    -------
+    ndarray, shape (m,)
+        ``C π² E A / (l/k)²`` with ``k = sqrt(I_min / A)``, N.
+
+    Examples
+    --------
+    The follower of Lacy's triangular truss (OD 1 in, ID 7/8 in, l = 2 m, E = 71 GPa),
+    Table 3.3's allowable load 1481.2 N:
+
+    >>> from trussfe.model.structure import build_structure
+    >>> from trussfe.model.sections import Section, Material
+    >>> s = build_structure([[0, 0], [2, 0]], [(0, 1)],
+    ...                     section=Section.tube("t", 0.0254, 0.022225),
+    ...                     material=Material("al", E=71e9, G=26.2e9, density=2711.5))
+    >>> round(float(euler_load(s)[0]), 1)
+    1481.2
+    """
+    L = structure.lengths() if lengths is None else np.asarray(lengths, dtype=float)
+    area = structure.area
+    inertia = np.fmin(structure.Iy, structure.Iz)
+    k = np.sqrt(inertia / area)                        # radius of gyration
+    return np.asarray(end_coefficient) * np.pi**2 * structure.E * area / (L / k) ** 2
+
+
+@dataclass
+class BucklingResult:
+    """Result of :func:`solve_buckling`.
+
+    Attributes
+    ----------
+    static : StaticResult
+        The pre-buckling state.
+    load_factors : ndarray, shape (k,)
+        λ, ascending by absolute value, sign kept.
+    shapes : ndarray, shape (n_dof, k)
+        Buckling modes (largest component +1).
+    euler_load : ndarray, shape (m,)
+        Member Euler loads (Lacy eq. 2.26), N.
+    utilisation : ndarray, shape (m,)
+        Compression / Euler load (0 for members in tension).
+    """
+
+    static: StaticResult
+    load_factors: np.ndarray
+    shapes: np.ndarray
+    euler_load: np.ndarray
+    utilisation: np.ndarray
+
+    @property
+    def fe(self) -> FEModel:
+        """The discretisation."""
+        return self.static.fe
+
+    @property
+    def structure(self) -> Structure:
+        """The analysed structure."""
+        return self.static.fe.structure
+
+    @property
+    def critical_load_factor(self) -> float:
+        """Smallest positive load factor (``nan`` if none was found)."""
+        pos = self.load_factors[self.load_factors > 0]
+        return float(pos.min()) if pos.size else float("nan")
+
+    def node_shapes(self) -> np.ndarray:
+        """Buckling modes at the nodes, shape (k, n_nodes, ndof_node)."""
+        return np.stack([self.fe.node_values(self.shapes[:, i])
+                         for i in range(self.shapes.shape[1])])
+
+
+def element_axial_force(fe: FEModel, u: np.ndarray) -> np.ndarray:
+    """Mean axial force of every element (tension positive), shape (n_elements,).
+
+    The force on an element's start is ``−N`` and on its end ``+N`` (member axes); the mean
+    of the two is exact for a constant N and second order for N varying along the member
+    (self-weight).
+    """
+    fel = fe.element_forces(u)
+    return 0.5 * (fel[:, 1, 0] - fel[:, 0, 0])
+
+
+def solve_buckling(structure: Structure, count: int = 4, bar_model: str = "pinned-beam",
+                   subdivisions: int | None = None, self_weight: bool = True,
+                   static: StaticResult | None = None) -> BucklingResult:
+    """Linear buckling load factors and modes about the static state under the model's loads.
+
+    Parameters
+    ----------
+    structure : Structure
+    count : int
+        Number of load factors (smallest |λ| first).
+    bar_model : {"pinned-beam", "truss"}
+    subdivisions : int, optional
+        Sub-elements per frame member (≥ 4 recommended for member buckling).
+    self_weight : bool
+        Include gravity in the pre-buckling state (it is then scaled by λ as well).
+    static : StaticResult, optional
+        A pre-computed static state to reuse.
+
+    Returns
+    -------
+    BucklingResult
+
+    Raises
+    ------
+    AnalysisError
+        Unloaded structure (no axial force anywhere); more load factors asked for than the
+        geometric stiffness has non-zero eigenvalues.
+    MechanismError
+        The structure cannot carry the loads.
+
+    Examples
+    --------
+    A pinned–pinned column under 1 N: λ is its Euler load π²EI/L² (error 5e-4 with 4
+    elements, 3e-5 with 8: Hermite elements converge as h⁴).
+
+    >>> from trussfe.model.structure import build_structure
+    >>> from trussfe.model.sections import Section, Material
+    >>> s = build_structure([[0, 0], [0, 2]], [(0, 1)],
+    ...                     section=Section.tube("t", 0.0254, 0.022225),
+    ...                     material=Material("al", E=71e9, G=26.2e9, density=2711.5),
+    ...                     supports={0: "xy", 1: "x"}, loads={1: [0.0, -1.0]})
+    >>> r = solve_buckling(s, count=1, subdivisions=8)
+    >>> round(float(r.load_factors[0]), 1)
+    1481.2
+    """
+    item = structure.source or structure.name
+    if isinstance(count, bool) or int(count) != count or count < 1:
+        raise InputError("--count", f"must be a positive integer, got {count!r}")
+    count = int(count)
+    if static is None:
+        static = solve_static(structure, bar_model=bar_model, subdivisions=subdivisions,
+                              self_weight=self_weight)
+    fe = static.fe
+    N = element_axial_force(fe, static.u)
+    fscale = np.abs(static.f).max() if static.f.size else 0.0
+    if fscale == 0.0 or np.abs(N).max() <= UNLOADED_TOLERANCE * max(fscale, 1e-300):
+        raise AnalysisError(item, "the structure is unloaded (no member carries an axial "
+                            "force): linear buckling needs [loads] or gravity to scale")
+    K = fe.stiffness()
+    Kg = fe.geometric_stiffness(N)
+    free = fe.free
+    n = free.size
+    Kff = K[free][:, free].tocsr()
+    Kgff = Kg[free][:, free].tocsr()
+    if n <= DENSE_BUCKLING_LIMIT or count >= n - 1:
+        theta, V = sla.eigh(Kgff.toarray(), Kff.toarray())
+        order = np.argsort(-np.abs(theta))[:count]
+        theta, V = theta[order], V[:, order]
+    else:
+        fac = factorise(K, free, fe=fe, item=item)
+        op = spla.LinearOperator((n, n), matvec=fac.lu.solve, dtype=float)
+        theta, V = spla.eigsh(Kgff, k=count, M=Kff, Minv=op, which="LM")
+    tiny = np.abs(theta) <= 1e-12 * np.abs(theta).max()
+    if np.any(tiny) or theta.size < count:
+        found = int(np.sum(~tiny))
+        raise AnalysisError(item, f"asked for {count} load factors but only {found} finite "
+                            f"ones exist (the geometric stiffness has rank {found} on the free "
+                            "DOFs); use a smaller --count")
+    lam = -1.0 / theta
+    order = np.argsort(np.abs(lam), kind="stable")
+    lam, V = lam[order], V[:, order]
+    V = V / V[np.argmax(np.abs(V), axis=0), np.arange(V.shape[1])]
+    shapes = np.zeros((fe.n_dof, V.shape[1]))
+    shapes[free] = V
+    pe = euler_load(structure)
+    util = np.maximum(-static.axial_force, 0.0) / pe
+    log.info("buckling: λ1 = %.6g (%d free DOFs)", lam[0], n)
+    return BucklingResult(static=static, load_factors=lam, shapes=shapes, euler_load=pe,
+                          utilisation=util)
+
+
+def buckling_json(result: BucklingResult, command: str = "buckling") -> dict:
+    """The CONTRACT.md §3 ``buckling`` document.
+
+    ``load_factors`` ascending by absolute value (sign kept), ``critical_load_factor`` (the
+    smallest positive one, ``null`` if none), ``modes[i]`` with ``load_factor`` and ``shape``
+    (node id → translations, largest component 1), and per member the static
+    ``axial_force``, ``euler_load`` (Lacy eq. 2.26, C = 1) and ``buckling_utilisation``
+    (compression / Euler load).
+    """
+    s = result.structure
+    fe = result.fe
+    dim = s.dim
+    shapes = result.node_shapes()
+    modes = [{"load_factor": float(lam),
+              "shape": {nid: shapes[i, j, :dim].tolist() for j, nid in enumerate(s.node_ids)}}
+             for i, lam in enumerate(result.load_factors)]
+    members = {mid: {"axial_force": float(result.static.axial_force[i]),
+                     "euler_load": float(result.euler_load[i]),
+                     "buckling_utilisation": float(result.utilisation[i])}
+               for i, mid in enumerate(s.member_ids)}
+    crit = result.critical_load_factor
+    return {
+        "units": "SI",
+        "command": command,
+        "model": s.name,
+        "bar_model": fe.bar_model,
+        "subdivisions": fe.subdivisions,
+        "n_dof": fe.n_dof,
+        "load_factors": result.load_factors.tolist(),
+        "critical_load_factor": crit if np.isfinite(crit) else None,
+        "modes": modes,
+        "members": members,
+    }

@@ -1,0 +1,503 @@
+# SPDX-License-Identifier: MIT
+"""Modal analysis: natural frequencies, mass-normalised mode shapes, participation factors.
+
+The generalized eigenproblem on the free DOFs
+
+.. math:: K \\varphi = \\omega^2 M \\varphi, \\qquad \\varphi^T M \\varphi = 1
+
+is solved by shift-invert Lanczos (``scipy.sparse.linalg.eigsh``) with the factorisation of
+``K − σM`` from :mod:`trussfe.fem.linsolve`, or densely for small models.
+
+Mass
+----
+* member mass: consistent (``ρA`` with the element shape functions; a truss bar gives
+  ``ρAL/6 [[2, 1], [1, 2]]`` on every translation, CONTRACT.md §2) or lumped (``ρAL/2`` at the
+  ends of every element);
+* lumped nodal masses ``[masses]``;
+* active members (Lacy section 2.1, 4.7; ``[active_members]``): the active base (mass
+  ``m_b``, first moment ``m_b c_b`` and second moment ``I_b`` about the start node) and the
+  leadscrew tube (the member's section over ``tube_length`` at the end node) are rigid
+  bodies on the member's line.  Transversely they follow the rigid rotation of the member,
+  ``u(s) = (1 − s/L) u_a + (s/L) u_b``, which gives the exact rigid-body mass matrix
+
+  .. math:: M_\\perp = \\begin{bmatrix} m - 2S/L + I/L^2 & S/L - I/L^2 \\\\
+            S/L - I/L^2 & I/L^2 \\end{bmatrix} \\otimes (\\mathbf 1 - e e^T)
+
+  with ``m, S, I`` the total mass and first and second moments about the start node; axially
+  the base moves with the start node and the tube with the end node (the member telescopes).
+  The member's own distributed FE mass is then left out so the tube is not counted twice.
+
+Rigid-body and mechanism modes
+------------------------------
+When the free stiffness is singular (an unsupported structure or a mechanism) its null space
+is computed first (:func:`trussfe.fem.solver.null_space`, scaled tolerance 1e-10); its
+dimension ``r`` is the number of zero-frequency modes.  They are reported as exactly 0 Hz with
+``kind = "rigid"`` — never as tiny, meaningless frequencies — and the shift becomes
+``σ = −10⁻⁶ λ_ref`` (``λ_ref`` the median of ``K_ii / M_ii``) so ``K − σM`` can be factorised.
+"""
+from __future__ import annotations
+
+import dataclasses
+import logging
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.linalg as sla
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+from scipy.sparse.csgraph import reverse_cuthill_mckee
+
+from ..errors import AnalysisError, InputError
+from ..model.structure import Structure
+from .discretisation import FEModel, discretise
+from .linsolve import SingularMatrixError, factorize
+from .solver import null_space
+
+log = logging.getLogger(__name__)
+
+#: Free-DOF count up to which the eigenproblem is solved densely.
+DENSE_MODAL_LIMIT = 600
+
+MASS_KINDS = ("consistent", "lumped")
+
+#: Largest half-bandwidth (after reverse Cuthill–McKee ordering) for which ``K − σM`` is
+#: factorised by banded Cholesky (LAPACK ``pbtrf``): chains and other long, narrow structures.
+BANDED_MAX_BANDWIDTH = 400
+
+
+class BandedCholesky:
+    """Banded Cholesky factorisation of a sparse symmetric positive definite matrix after
+    reverse Cuthill–McKee reordering — the cheapest factorisation for long, narrow structures
+    (cost n·b² to factorise, n·b per solve, b the half-bandwidth).
+
+    Use :meth:`build`, which returns ``None`` when the bandwidth exceeds ``max_bandwidth`` or
+    the matrix is not positive definite (the caller then falls back to sparse LU).
+
+    Examples
+    --------
+    >>> import scipy.sparse as sp
+    >>> A = sp.diags([[-1.0] * 4, [2.0] * 5, [-1.0] * 4], [-1, 0, 1], format="csr")
+    >>> f = BandedCholesky.build(A)
+    >>> np.allclose(A @ f.solve(np.ones(5)), 1.0), f.bandwidth
+    (True, 1)
+    """
+
+    def __init__(self, factor: np.ndarray, perm: np.ndarray, bandwidth: int):
+        self.factor = factor
+        self.perm = perm
+        self.inverse = np.empty_like(perm)
+        self.inverse[perm] = np.arange(perm.size)
+        self.bandwidth = bandwidth
+
+    @classmethod
+    def build(cls, A: sp.spmatrix, max_bandwidth: int = BANDED_MAX_BANDWIDTH
+              ) -> "BandedCholesky | None":
+        A = sp.csr_matrix(A)
+        n = A.shape[0]
+        perm = reverse_cuthill_mckee(A, symmetric_mode=True).astype(np.int64)
+        P = A[perm][:, perm].tocoo()
+        bw = int(np.max(np.abs(P.row - P.col))) if P.nnz else 0
+        if bw > max_bandwidth:
+            return None
+        upper = P.row <= P.col
+        ab = np.zeros((bw + 1, n))
+        np.add.at(ab, (bw + P.row[upper] - P.col[upper], P.col[upper]), P.data[upper])
+        try:
+            c = sla.cholesky_banded(ab, lower=False, check_finite=False)
+        except np.linalg.LinAlgError:          # not positive definite (singular K)
+            return None
+        d = np.abs(c[bw])
+        if d.min() <= 1e-8 * d.max():          # pivot² ratio 1e-16: numerically singular
+            return None
+        return cls(c, perm, bw)
+
+    def solve(self, b: np.ndarray) -> np.ndarray:
+        """Solve A x = b."""
+        x = sla.cho_solve_banded((self.factor, False), np.asarray(b)[self.perm],
+                                 check_finite=False)
+        return x[self.inverse]
+
+
+# ---------------------------------------------------------------------- mass
+def _active_members(structure: Structure) -> list:
+    return list(structure.extensions.get("active_members", []) or [])
+
+
+def active_member_mass(fe: FEModel) -> sp.csr_matrix:
+    """Mass matrix of the active members' rigid bodies (base and leadscrew tube).
+
+    See the module docstring for the model.  Returns an ``(n_dof, n_dof)`` matrix acting on
+    the translations of the active members' end nodes (zero without active members).
+    """
+    s = fe.structure
+    acts = _active_members(s)
+    dim = s.dim
+    if not acts:
+        return sp.csr_matrix((fe.n_dof, fe.n_dof))
+    idx = np.array([a.member for a in acts], dtype=np.int64)
+    L = s.lengths()[idx]
+    e = s.unit_vectors()[idx]                                    # (act, dim)
+    mb = np.array([a.base_mass for a in acts])
+    Sb = mb * np.array([a.base_cg for a in acts])
+    Ib = np.array([a.base_inertia for a in acts])
+    lt = np.array([a.tube_length for a in acts])
+    mt = (s.density * s.area)[idx] * lt
+    a0 = L - lt                                                  # tube from a0 to L
+    St = mt * (L + a0) / 2.0
+    It = (s.density * s.area)[idx] * (L**3 - a0**3) / 3.0
+    m, S, inertia = mb + mt, Sb + St, Ib + It
+    tr = np.array([[m - 2 * S / L + inertia / L**2, S / L - inertia / L**2],
+                   [S / L - inertia / L**2, inertia / L**2]])    # (2, 2, act)
+    ax = np.array([[mb, 0 * mb], [0 * mb, mt]])                  # (2, 2, act)
+    P = np.einsum("ai,aj->aij", e, e)                            # (act, dim, dim)
+    Q = np.eye(dim)[None] - P
+    # (act, end, dim, end, dim) element blocks
+    blk = (np.einsum("rsa,aij->arisj", tr, Q) + np.einsum("rsa,aij->arisj", ax, P))
+    nodes = s.connectivity[idx]                                  # (act, 2)
+    dofs = fe.node_dofs[nodes][:, :, :dim]                       # (act, end, dim)
+    rows = np.broadcast_to(dofs[:, :, :, None, None], blk.shape)
+    cols = np.broadcast_to(dofs[:, None, None, :, :], blk.shape)
+    return sp.csr_matrix((blk.ravel(), (rows.ravel(), cols.ravel())),
+                         shape=(fe.n_dof, fe.n_dof))
+
+
+def mass_matrix(fe: FEModel, kind: str = "consistent", include_nodal_masses: bool = True,
+                include_active_members: bool = True) -> sp.csr_matrix:
+    """Global mass matrix: members, nodal masses and active members.
+
+    Parameters
+    ----------
+    fe : FEModel
+    kind : {"consistent", "lumped"}
+        Member mass (see :meth:`FEModel.mass`).
+    include_nodal_masses : bool
+    include_active_members : bool
+        Replace the distributed mass of active members by their base-and-tube rigid bodies
+        (:func:`active_member_mass`).
+
+    Returns
+    -------
+    scipy.sparse.csr_matrix, shape (n_dof, n_dof)
+    """
+    if kind not in MASS_KINDS:
+        raise InputError("--mass", f"unknown mass kind {kind!r}; use consistent or lumped")
+    acts = _active_members(fe.structure) if include_active_members else []
+    if not acts:
+        return fe.mass(kind=kind, include_nodal_masses=include_nodal_masses)
+    # The same topology with massless active members: DOF numbering is identical.
+    s = fe.structure.copy()
+    for a in acts:
+        s.materials[a.member] = dataclasses.replace(s.materials[a.member], density=0.0)
+    s.__dict__.pop("_prop_cache", None)
+    fe0 = discretise(s, bar_model=fe.bar_model, subdivisions=fe.subdivisions)
+    return (fe0.mass(kind=kind, include_nodal_masses=include_nodal_masses)
+            + active_member_mass(fe)).tocsr()
+
+
+def rigid_translations(fe: FEModel) -> np.ndarray:
+    """Influence vectors of a unit rigid translation along each global axis.
+
+    Returns
+    -------
+    ndarray, shape (n_dof, dim)
+        Column ``d``: 1 on the node translations along axis ``d``, the components
+        ``R[member, :, d]`` on interior-point translations (they are in member axes), 0 on
+        rotations.  ``K @ r = 0`` for every column (a rigid translation strains nothing).
+    """
+    dim = fe.ndim
+    r = np.zeros((fe.n_dof, dim))
+    for d in range(dim):
+        r[fe.node_dofs[:, d], d] = 1.0
+    if fe.interior_dofs.size:
+        R = fe.rotation[fe.interior_member]                       # (pt, dim_local, dim)
+        for i in range(dim):
+            dofs = fe.interior_dofs[:, i]
+            ok = dofs >= 0
+            r[dofs[ok], :] = R[ok, i, :]
+    return r
+
+
+# ---------------------------------------------------------------------- result
+@dataclass
+class ModalResult:
+    """Result of :func:`solve_modes`.
+
+    Attributes
+    ----------
+    fe : FEModel
+    mass_kind : str
+    eigenvalues : ndarray, shape (k,)
+        ω² in rad²/s² (exactly 0 for rigid-body / mechanism modes).
+    frequencies_hz : ndarray, shape (k,)
+        ω / 2π, ascending.
+    shapes : ndarray, shape (n_dof, k)
+        Mass-normalised mode shapes (φᵀ M φ = 1), global DOF vector, 0 on fixed DOFs.
+    rigid_modes : int
+        Number of zero-frequency (rigid-body or mechanism) modes of the free structure; the
+        first ``min(rigid_modes, k)`` modes are of that kind.
+    participation : ndarray, shape (k, dim)
+        Γ_id = φ_iᵀ M r_d (kg^½).
+    effective_mass : ndarray, shape (k, dim)
+        Γ_id², kg.
+    total_mass : ndarray, shape (dim,)
+        r_dᵀ M r_d over the free DOFs: the sum of the effective masses over all modes.
+    """
+
+    fe: FEModel
+    mass_kind: str
+    eigenvalues: np.ndarray
+    frequencies_hz: np.ndarray
+    shapes: np.ndarray
+    rigid_modes: int
+    participation: np.ndarray
+    effective_mass: np.ndarray
+    total_mass: np.ndarray
+
+    @property
+    def structure(self) -> Structure:
+        """The analysed structure."""
+        return self.fe.structure
+
+    @property
+    def count(self) -> int:
+        """Number of modes computed."""
+        return self.frequencies_hz.size
+
+    @property
+    def kinds(self) -> list[str]:
+        """``"rigid"`` (zero frequency) or ``"elastic"`` for each mode."""
+        return ["rigid" if i < self.rigid_modes else "elastic" for i in range(self.count)]
+
+    def node_shapes(self) -> np.ndarray:
+        """Mode shapes at the nodes, shape (k, n_nodes, ndof_node) (translations then
+        rotations, 0 where a node has no rotation DOF)."""
+        return np.stack([self.fe.node_values(self.shapes[:, i]) for i in range(self.count)]) \
+            if self.count else np.zeros((0,) + self.fe.node_dofs.shape)
+
+
+# ---------------------------------------------------------------------- eigen-solver
+def generalized_eigen(Kff: sp.spmatrix, Mff: sp.spmatrix, count: int, sigma: float = 0.0,
+                      factor=None, item: str = "structure") -> tuple[np.ndarray, np.ndarray]:
+    """The ``count`` eigenpairs of ``K φ = λ M φ`` nearest ``sigma`` (from above).
+
+    Parameters
+    ----------
+    Kff, Mff : sparse matrices, shape (n, n)
+        Symmetric; ``K − σM`` must be non-singular; ``M`` positive semi-definite.
+    count : int
+    sigma : float
+        Shift (≤ the lowest eigenvalue wanted).
+    factor : object with ``solve``, optional
+        A factorisation of ``K − σM`` to reuse.
+
+    Returns
+    -------
+    eigenvalues : ndarray, shape (count,)
+        Ascending.
+    vectors : ndarray, shape (n, count)
+        M-orthonormal.
+
+    Notes
+    -----
+    Dense path (n ≤ :data:`DENSE_MODAL_LIMIT`): ``M φ = μ (K − σM) φ`` with ``K − σM``
+    positive definite, so massless DOFs (μ = 0, infinite λ) are harmless; λ = σ + 1/μ.
+
+    Examples
+    --------
+    Two unit masses on springs 2, −1 (fixed–free–free chain of stiffness 1):
+
+    >>> import scipy.sparse as sp
+    >>> K = sp.csr_matrix([[2.0, -1.0], [-1.0, 1.0]])
+    >>> lam, V = generalized_eigen(K, sp.identity(2, format="csr"), 2)
+    >>> np.round(lam, 6).tolist()          # (3 ∓ √5)/2
+    [0.381966, 2.618034]
+    """
+    n = Kff.shape[0]
+    A = (Kff - sigma * Mff).tocsr() if sigma else Kff.tocsr()
+    if n <= DENSE_MODAL_LIMIT or count >= n - 1:
+        Ad, Md = A.toarray(), Mff.toarray()
+        try:
+            mu, V = sla.eigh(Md, Ad, subset_by_index=[n - count, n - 1])
+        except np.linalg.LinAlgError:
+            raise AnalysisError(item, "K − σM is not positive definite; the model has "
+                                "massless mechanisms (a DOF with neither stiffness nor mass)") \
+                from None
+        mu, V = mu[::-1], V[:, ::-1]
+        if np.any(mu <= 1e-14 * max(mu.max(), 1e-300)):
+            raise AnalysisError(item, f"only {int(np.sum(mu > 1e-14 * mu.max()))} DOFs carry "
+                                f"mass; cannot compute {count} modes: ask for fewer")
+        lam = sigma + 1.0 / mu
+    else:
+        if factor is None:
+            factor = BandedCholesky.build(A) or factorize(A)
+        # The Lanczos iteration needs no refined solves: use the factor's plain solve.
+        solve = getattr(factor, "_solve", factor.solve)
+        op = spla.LinearOperator((n, n), matvec=solve, dtype=float)
+        ncv = min(n - 1, max(2 * count + 1, count + 20))
+        # ARPACK's shift-invert mode needs only M products and the solves
+        lam, V = spla.eigsh(Kff, k=count, M=Mff, sigma=sigma, which="LM", OPinv=op, ncv=ncv)
+        order = np.argsort(lam)
+        lam, V = lam[order], V[:, order]
+    # M-normalise (eigsh returns M-orthonormal vectors already; dense returns A-normalised)
+    mnorm = np.sqrt(np.einsum("ik,ik->k", V, Mff @ V))
+    V = V / mnorm
+    # a reproducible sign: the largest component positive
+    big = np.argmax(np.abs(V), axis=0)
+    V = V * np.sign(V[big, np.arange(V.shape[1])])
+    return lam, V
+
+
+def solve_modes(structure: Structure, count: int = 6, mass: str = "consistent",
+                bar_model: str = "truss", subdivisions: int | None = None,
+                fe: FEModel | None = None, include_nodal_masses: bool = True) -> ModalResult:
+    """Natural frequencies and mass-normalised mode shapes of a structure.
+
+    Parameters
+    ----------
+    structure : Structure
+    count : int
+        Number of modes (lowest first).
+    mass : {"consistent", "lumped"}
+        Member mass model.
+    bar_model : {"truss", "pinned-beam"}
+        ``pinned-beam`` subdivides every bar so its own bending modes appear.
+    subdivisions : int, optional
+        Sub-elements per frame member.
+    fe : FEModel, optional
+        A discretisation to reuse.
+    include_nodal_masses : bool
+
+    Returns
+    -------
+    ModalResult
+
+    Raises
+    ------
+    InputError
+        ``count`` not a positive integer, unknown mass kind.
+    AnalysisError
+        More modes asked for than the model has mass-carrying free DOFs; no free DOF.
+
+    Examples
+    --------
+    A fixed–fixed steel bar in 1-D tension–compression, one element per half (two bars):
+    the truss model with lumped mass gives ω² = 2EA/(m_node L) exactly.
+
+    >>> from trussfe.model.structure import build_structure
+    >>> from trussfe.model.sections import Section, Material
+    >>> s = build_structure([[0, 0], [1, 0], [2, 0]], [(0, 1), (1, 2)],
+    ...                     section=Section("a", 1e-4),
+    ...                     material=Material("s", E=2e11, G=8e10, density=7850.0),
+    ...                     supports={0: "xy", 1: "y", 2: "xy"})
+    >>> r = solve_modes(s, count=1, mass="lumped")
+    >>> bool(np.isclose(r.eigenvalues[0], 2 * 2e11 * 1e-4 / (7850.0 * 1e-4 * 1.0)))
+    True
+    """
+    item = structure.source or structure.name
+    if isinstance(count, bool) or int(count) != count or count < 1:
+        raise InputError("--count", f"must be a positive integer, got {count!r}")
+    count = int(count)
+    if fe is None:
+        fe = discretise(structure, bar_model=bar_model, subdivisions=subdivisions)
+    K = fe.stiffness()
+    M = mass_matrix(fe, mass, include_nodal_masses=include_nodal_masses)
+    free = fe.free
+    n = free.size
+    if n == 0:
+        raise AnalysisError(item, "every DOF is supported: there is nothing to vibrate")
+    Kff = K[free][:, free].tocsr()
+    Mff = M[free][:, free].tocsr()
+    n_mass = int(np.count_nonzero(Mff.diagonal() > 0))
+    if n_mass == 0:
+        raise AnalysisError(item, "the structure has no mass: give members a density or "
+                            "nodes a [masses] entry")
+    if count > n_mass:
+        raise AnalysisError(item, f"asked for {count} modes but the model has only {n_mass} "
+                            f"free DOFs that carry mass ({n} free DOFs in all, {mass} mass, "
+                            f"{fe.bar_model} bar model); use --count {n_mass} or fewer")
+    # singular stiffness: count the zero-frequency modes first
+    rigid = 0
+    sigma = 0.0
+    factor = None
+    kd = Kff.diagonal()
+    dense = n <= DENSE_MODAL_LIMIT or count >= n - 1
+    if dense or np.any(kd <= 0):
+        rigid = null_space(Kff).shape[1]
+    else:
+        factor = BandedCholesky.build(Kff)
+        if factor is None:
+            try:
+                factor = factorize(Kff)
+            except SingularMatrixError:
+                rigid = null_space(Kff).shape[1]
+    if rigid:
+        md = Mff.diagonal()
+        ok = (kd > 0) & (md > 0)
+        lam_ref = float(np.median(kd[ok] / md[ok])) if np.any(ok) else 1.0
+        sigma = -1e-6 * lam_ref
+        factor = None
+        log.warning("%s: %d zero-frequency (rigid-body or mechanism) mode%s", item, rigid,
+                    "s" if rigid != 1 else "")
+    lam, V = generalized_eigen(Kff, Mff, count, sigma=sigma, factor=factor, item=item)
+    nz = min(rigid, count)
+    lam[:nz] = 0.0
+    lam = np.maximum(lam, 0.0) if nz else lam
+    if np.any(lam < 0):
+        # K is positive semi-definite, so a negative eigenvalue is round-off: the lowest
+        # eigenvalues are below what double precision resolves for this stiffness.
+        kd_max = float(kd.max())
+        raise AnalysisError(item, f"the lowest eigenvalue came out negative (ω² = "
+                            f"{lam.min():.3g} rad²/s², against a largest K_ii/M_ii of "
+                            f"{kd_max / max(float(Mff.diagonal().max()), 1e-300):.3g}): the "
+                            "stiffness is too ill-conditioned for double precision (an "
+                            "extremely slender structure or a near-mechanism), so its lowest "
+                            "frequencies cannot be resolved; shorten the model or add supports")
+    shapes = np.zeros((fe.n_dof, count))
+    shapes[free] = V
+    r = rigid_translations(fe)[free]                                # (n_free, dim)
+    Mr = Mff @ r
+    gamma = V.T @ Mr                                                # (k, dim)
+    total = np.einsum("id,id->d", r, Mr)
+    freq = np.sqrt(lam) / (2.0 * np.pi)
+    log.info("modes: %d of %d free DOFs, f1 = %.6g Hz", count, n, freq[0])
+    return ModalResult(fe=fe, mass_kind=mass, eigenvalues=lam, frequencies_hz=freq,
+                       shapes=shapes, rigid_modes=rigid, participation=gamma,
+                       effective_mass=gamma**2, total_mass=total)
+
+
+def modes_json(result: ModalResult, command: str = "modes") -> dict:
+    """The CONTRACT.md §3 ``modes`` document.
+
+    Besides ``frequencies_hz`` and ``modes[i].frequency_hz`` / ``shape`` (node id →
+    mass-normalised translations, m·kg^-½), it gives ``rigid_modes`` (number of zero-frequency
+    modes), each mode's ``kind`` ("rigid" or "elastic"), ``participation`` and
+    ``effective_mass`` per axis, and ``total_mass`` per axis.
+    """
+    fe = result.fe
+    s = fe.structure
+    dim = s.dim
+    axes = ("x", "y", "z")[:dim]
+    shapes = result.node_shapes()
+    modes = []
+    for i in range(result.count):
+        modes.append({
+            "frequency_hz": float(result.frequencies_hz[i]),
+            "kind": result.kinds[i],
+            "participation": dict(zip(axes, result.participation[i].tolist())),
+            "effective_mass": dict(zip(axes, result.effective_mass[i].tolist())),
+            "shape": {nid: shapes[i, j, :dim].tolist() for j, nid in enumerate(s.node_ids)},
+        })
+    return {
+        "units": "SI",
+        "command": command,
+        "model": s.name,
+        "bar_model": fe.bar_model,
+        "subdivisions": fe.subdivisions,
+        "mass": result.mass_kind,
+        "n_dof": fe.n_dof,
+        "n_free_dof": int(fe.free.size),
+        "rigid_modes": int(result.rigid_modes),
+        "frequencies_hz": result.frequencies_hz.tolist(),
+        "total_mass": dict(zip(axes, result.total_mass.tolist())),
+        "modes": modes,
+    }

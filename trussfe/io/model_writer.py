@@ -1,0 +1,284 @@
+# SPDX-License-Identifier: MIT
+"""Writer of trussfe model files (TOML, CONTRACT.md §1): the inverse of
+:func:`trussfe.io.model_file.read_model`.
+
+``read_model(write_model(s, path))`` gives back the same nodes, members, sections, materials,
+supports, loads, masses and gravity (floats are written with ``repr``, which round-trips
+exactly).  The geometry may go to a meshio mesh file instead (``mesh="chain.vtu"``), for models
+too large for a readable TOML table.
+"""
+from __future__ import annotations
+
+import json
+import logging
+import math
+import os
+import re
+from pathlib import Path
+
+import numpy as np
+
+from ..model.sections import Material, Section
+from ..model.structure import DOF_NAMES, Structure
+from .output import atomic_path
+
+log = logging.getLogger(__name__)
+
+_BARE_KEY = re.compile(r"^[A-Za-z0-9_-]+$")
+
+
+def toml_key(key: str) -> str:
+    """A TOML key: bare when it may be, else a quoted basic string.
+
+    Examples
+    --------
+    >>> toml_key("M6"), toml_key("b1.N4")
+    ('M6', '"b1.N4"')
+    """
+    key = str(key)
+    return key if _BARE_KEY.match(key) else _string(key)
+
+
+def _string(text: str) -> str:
+    # JSON escapes (\\", \\\\, \\n, \\uXXXX) are valid in TOML basic strings.
+    return json.dumps(str(text), ensure_ascii=False)
+
+
+def toml_value(value) -> str:
+    """A TOML value for a number, bool, string or (nested) list.
+
+    Examples
+    --------
+    >>> toml_value([0.1, -2, True, "a"])
+    '[0.1, -2, true, "a"]'
+    """
+    if isinstance(value, (bool, np.bool_)):
+        return "true" if value else "false"
+    if isinstance(value, (int, np.integer)):
+        return str(int(value))
+    if isinstance(value, (float, np.floating)):
+        x = float(value)
+        if math.isnan(x):
+            return "nan"
+        if math.isinf(x):
+            return "inf" if x > 0 else "-inf"
+        return repr(x)
+    if isinstance(value, str):
+        return _string(value)
+    if isinstance(value, (list, tuple, np.ndarray)):
+        return "[" + ", ".join(toml_value(v) for v in value) + "]"
+    if isinstance(value, dict):
+        return "{ " + ", ".join(f"{toml_key(k)} = {toml_value(v)}" for k, v in value.items()) + " }"
+    raise TypeError(f"cannot write {type(value).__name__} to TOML")
+
+
+def _unique_names(objs: list, kind: str) -> dict[int, str]:
+    """Name of each distinct section/material object (by value); clashing names get suffixes."""
+    names: dict = {}
+    used: set[str] = set()
+    out: dict[int, str] = {}
+    by_id: dict[int, str] = {}
+    for i, o in enumerate(objs):
+        if id(o) in by_id:          # catalogue models share one object: skip hashing it
+            out[i] = by_id[id(o)]
+            continue
+        if o in names:
+            out[i] = by_id[id(o)] = names[o]
+            continue
+        base = o.name or kind
+        name, k = base, 2
+        while name in used:
+            name, k = f"{base}_{k}", k + 1
+        used.add(name)
+        names[o] = name
+        out[i] = by_id[id(o)] = name
+    return out
+
+
+def _section_table(sec: Section) -> dict:
+    if sec.is_tube:
+        return {"outer_diameter": sec.outer_diameter, "inner_diameter": sec.inner_diameter}
+    out = {"area": sec.area}
+    for key in ("Iy", "Iz", "J", "c"):
+        v = getattr(sec, key)
+        if not math.isnan(v):
+            out[key] = v
+    return out
+
+
+def _material_table(mat: Material) -> dict:
+    out = {"E": mat.E, "G": mat.G, "density": mat.density}
+    if not math.isnan(mat.yield_strength):
+        out["yield_strength"] = mat.yield_strength
+    return out
+
+
+def model_toml(structure: Structure, *, mesh: str | None = None, header: str = "") -> str:
+    """The TOML text of a model file for ``structure``.
+
+    Parameters
+    ----------
+    structure : Structure
+    mesh : str, optional
+        When given, ``[model] mesh = mesh`` replaces the ``[nodes]`` and ``[members]`` tables
+        (the mesh file must be written separately, see :func:`write_model`); node ids become
+        the point indices.
+    header : str
+        Comment lines written at the top (without the ``#``).
+    """
+    s = structure
+    lines = [f"# {ln}" if ln else "#" for ln in header.splitlines()]
+    if lines:
+        lines.append("")
+    lines += ["[model]", f"name = {_string(s.name)}", f"dimension = {s.dim}"]
+    if np.any(s.gravity != 0):
+        lines.append(f"gravity = {toml_value(list(s.gravity))}")
+    if mesh is not None:
+        lines.append(f"mesh = {_string(mesh)}")
+    mat_names = _unique_names(s.materials, "material")
+    sec_names = _unique_names(s.sections, "section")
+    lines.append("")
+    seen = set()
+    for i, mat in enumerate(s.materials):
+        if mat_names[i] not in seen:
+            seen.add(mat_names[i])
+            lines += [f"[materials.{toml_key(mat_names[i])}]"]
+            lines += [f"{k} = {toml_value(v)}" for k, v in _material_table(mat).items()]
+            lines.append("")
+    seen = set()
+    for i, sec in enumerate(s.sections):
+        if sec_names[i] not in seen:
+            seen.add(sec_names[i])
+            lines += [f"[sections.{toml_key(sec_names[i])}]"]
+            lines += [f"{k} = {toml_value(v)}" for k, v in _section_table(sec).items()]
+            lines.append("")
+    node_ids = s.node_ids if mesh is None else [str(i) for i in range(s.n_nodes)]
+
+    def member_props(i: int) -> dict:
+        d = {"section": sec_names[i], "material": mat_names[i]}
+        if s.is_beam[i]:
+            d["type"] = "beam"
+            rel = [e for e, r in zip(("start", "end"), s.releases[i]) if r]
+            if rel:
+                d["releases"] = rel
+        if s.orientation is not None and np.all(np.isfinite(s.orientation[i])):
+            d["orientation"] = list(s.orientation[i])
+        return d
+
+    if mesh is None:
+        lines.append("[nodes]")
+        lines += [f"{toml_key(n)} = {toml_value(list(x))}" for n, x in zip(node_ids, s.coords)]
+        lines += ["", "[members]"]
+        for i, mid in enumerate(s.member_ids):
+            d = {"nodes": [node_ids[a] for a in s.connectivity[i]], **member_props(i)}
+            lines.append(f"{toml_key(mid)} = {toml_value(d)}")
+        lines.append("")
+    else:
+        groups = _mesh_groups(s)
+        for gname, idx in groups.items():
+            lines += [f"[groups.{toml_key(gname)}]"]
+            lines += [f"{k} = {toml_value(v)}" for k, v in member_props(int(idx[0])).items()]
+            lines.append("")
+    names = DOF_NAMES[s.dim]
+    sup = np.flatnonzero(s.supports.any(axis=1))
+    if sup.size:
+        lines.append("[supports]")
+        lines += [f"{toml_key(node_ids[i])} = "
+                  f"{toml_value([names[d] for d in np.flatnonzero(s.supports[i])])}" for i in sup]
+        lines.append("")
+    loaded = np.flatnonzero(np.any(s.loads != 0, axis=1))
+    if loaded.size:
+        lines.append("[loads]")
+        for i in loaded:
+            f = s.loads[i] if np.any(s.loads[i, s.dim:] != 0) else s.loads[i, : s.dim]
+            lines.append(f"{toml_key(node_ids[i])} = {toml_value(list(f))}")
+        lines.append("")
+    massive = np.flatnonzero(s.masses != 0)
+    if massive.size:
+        lines.append("[masses]")
+        lines += [f"{toml_key(node_ids[i])} = {toml_value(s.masses[i])}" for i in massive]
+        lines.append("")
+    if s.extensions:
+        log.warning("extension tables %s are not written", ", ".join(s.extensions))
+    return "\n".join(lines)
+
+
+def _mesh_groups(s: Structure) -> dict[str, np.ndarray]:
+    """Member indices per distinct (section, material, type, releases) combination."""
+    def codes(objs: list) -> np.ndarray:
+        # equal objects share a code; identity first, as catalogue models share one object
+        seen: dict = {}
+        by_id: dict[int, int] = {}
+        out = np.empty(len(objs), dtype=np.int64)
+        for i, o in enumerate(objs):
+            c = by_id.get(id(o))
+            if c is None:
+                c = by_id[id(o)] = seen.setdefault(o, len(seen))
+            out[i] = c
+        return out
+
+    sec, mat = codes(s.sections), codes(s.materials)
+    key = ((sec * (mat.max(initial=0) + 1) + mat) * 2 + s.is_beam) * 4 \
+        + s.releases[:, 0] * 2 + s.releases[:, 1]
+    uniq, first, inverse = np.unique(key, return_index=True, return_inverse=True)
+    if len(uniq) == 1:
+        return {"default": np.arange(s.n_members)}
+    # Several groups, in order of first appearance, named by the integer tag the mesh
+    # carries for them (see write_model).
+    order = np.argsort(first)
+    return {str(j + 1): np.flatnonzero(inverse.reshape(-1) == g) for j, g in enumerate(order)}
+
+
+def write_model(structure: Structure, path: str | Path, *, mesh: str | None = None,
+                header: str = "") -> Path:
+    """Write ``structure`` as a model file (atomically).
+
+    Parameters
+    ----------
+    structure : Structure
+    path : path
+        TOML file to write.
+    mesh : str, optional
+        File name (relative to ``path``'s folder) of a meshio mesh to hold the geometry, e.g.
+        ``"chain.vtu"``: line cells in member order; when members differ in section, material
+        or type, a cell-data tag ``gmsh:physical`` numbers the groups ``[groups.1]``, ...
+    header : str
+        Comment written at the top of the file.
+
+    Returns
+    -------
+    Path
+        ``path``.
+    """
+    path = Path(path)
+    text = model_toml(structure, mesh=mesh, header=header)
+    if mesh is not None:
+        import meshio
+
+        pts = np.zeros((structure.n_nodes, 3))
+        pts[:, : structure.dim] = structure.coords
+        groups = _mesh_groups(structure)
+        cell_data = {}
+        if len(groups) > 1:
+            # An integer tag per cell, read back as the group name (the reader's
+            # "gmsh:physical" convention; VTU cannot hold named cell sets).
+            tags = np.zeros(structure.n_members, dtype=np.int64)
+            for g, idx in groups.items():
+                tags[idx] = int(g)
+            cell_data = {"gmsh:physical": [tags]}
+        m = meshio.Mesh(pts, [("line", structure.connectivity)], cell_data=cell_data)
+        target = path.parent / mesh
+        with atomic_path(target) as tmp:
+            meshio.write(tmp, m)        # format from the suffix, which tmp keeps
+        _readable(target)
+    with atomic_path(path) as tmp:
+        tmp.write_text(text + "\n", encoding="utf-8")
+    _readable(path)
+    return path
+
+
+def _readable(path: Path) -> None:
+    """Give a file written through a private temporary file the usual umask permissions."""
+    mask = os.umask(0)
+    os.umask(mask)
+    os.chmod(path, 0o666 & ~mask)

@@ -1,0 +1,703 @@
+# SPDX-License-Identifier: MIT
+"""Finite-mechanism motion of an inextensional bar-and-joint assembly (Hortobágyi, seed 000).
+
+The motion is followed in steps.  At each step the compatibility matrix B is partitioned into
+``[B11 B12]`` with the independent coordinate(s) in ``B12`` (Hortobágyi eq. 3), a linear
+prediction is made (eq. 4) and the dependent coordinates are corrected until the exact
+compatibility error of every bar (eq. 1 / eq. 5) is below the tolerance (eq. 7).
+
+What recomputing the paper's section 4 showed, and how it is implemented here:
+
+* The paper's B in section 4 is built at the start state *plus* the prescribed increment; at a
+  bifurcation point that is what makes B11 invertible.  The first Jacobian here is likewise
+  evaluated at the predicted state.
+* Eq. (6) as printed, ``d1 = −B11⁻¹ B12 d2 − B11⁻¹ t``, has the linear prediction as its fixed
+  point; the worked numbers follow the incremental form ``d1 ← d1 − B11⁻¹ t``, implemented here.
+* Refreshing B11 at every iterate (Newton's method on eq. 1) converges in 4 iterations in the
+  section-4 example where the frozen B11 of the paper needs 14 (see
+  :func:`trussfe.kinematics.reproductions.hortobagyi_section4`).  ``newton=False`` keeps the
+  paper's frozen matrix.
+* The independent coordinate after the first step is the one with the largest velocity
+  (section 5), so a node that reaches a limit point and turns back does not stall the motion.
+* Bifurcations are found from the sign of ``det [B; τᵀ]`` (τ the oriented tangent), never from a
+  determinant's value, which under- or overflows for a hundred coordinates; and from a rank drop
+  of B (nullity above the number of drives) at a step's start.  They are not located to machine
+  precision (Newton would then jump to another branch).
+* Step halving stops at a minimum step ``max(|S|/1024, 10·sqrt(tolerance)·L)``: below it an
+  infinitesimal (higher-order) mechanism would satisfy the tolerance and be crept along.
+* Over-constrained assemblies (self-stress states, e.g. Bricard's octahedron) are corrected by
+  least squares over all bars.
+"""
+from __future__ import annotations
+
+import logging
+from dataclasses import dataclass, field
+
+import numpy as np
+import scipy.linalg as sla
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+
+from ..errors import AnalysisError, InputError
+from .compatibility import compatibility_matrix
+
+log = logging.getLogger(__name__)
+
+#: Largest number of free coordinates for which the rank is computed by dense SVD each step.
+DENSE_LIMIT = 600
+
+DIVERGENCE_MESSAGE = ("the prescribed increment leaves the motion region, or the assembly is "
+                      "not a finite mechanism")
+
+
+# --------------------------------------------------------------------------- exact equation
+def compatibility_error(coords: np.ndarray, connectivity: np.ndarray, lengths: np.ndarray,
+                        increments: np.ndarray) -> np.ndarray:
+    """Exact compatibility error t of every bar after finite increments (Hortobágyi eq. 1/5).
+
+    Parameters
+    ----------
+    coords : ndarray, shape (n, dim)
+        Joint positions r of the current state.
+    connectivity : ndarray of int, shape (b, 2)
+    lengths : ndarray, shape (b,)
+        Bar lengths l_i.
+    increments : ndarray, shape (n, dim)
+        Finite coordinate increments δ.
+
+    Returns
+    -------
+    ndarray, shape (b,)
+        ``t_i = (|r_k + δ_k − r_h − δ_h|² − l_i²) / (2 l_i)``; for a compatible state r this is
+        eq. (1), ``[(r_k − r_h)·(δ_k − δ_h) + |δ_k − δ_h|²/2] / l_i``.  Positive when the bar
+        would have to lengthen.  Hortobágyi's printed t has the opposite sign (his B is minus
+        ours); the correction ``−B11⁻¹ t`` is the same either way.
+
+    Examples
+    --------
+    Hortobágyi section 4, bar 2 (node 3 at the origin to node 1 at (l, 0), l = 1) after
+    δ1 = (−l/100, −l/10): the paper prints t₂ = l/202 with its sign convention.
+
+    >>> t = compatibility_error(np.array([[0., 0.], [1., 0.]]), np.array([[0, 1]]),
+    ...                         np.array([1.0]), np.array([[0., 0.], [-0.01, -0.1]]))
+    >>> round(float(-1 / t[0]), 2)
+    202.02
+    """
+    x = np.asarray(coords, float) + np.asarray(increments, float)
+    conn = np.asarray(connectivity, dtype=np.int64).reshape(-1, 2)
+    vec = x[conn[:, 1]] - x[conn[:, 0]]
+    L = np.asarray(lengths, float)
+    return (np.einsum("ij,ij->i", vec, vec) - L * L) / (2.0 * L)
+
+
+def _jacobian(x: np.ndarray, conn: np.ndarray, lengths: np.ndarray, free: np.ndarray):
+    """∂t/∂δ of the exact error at positions x: row i = (x_k − x_h)/l_i at the free columns."""
+    vec = x[conn[:, 1]] - x[conn[:, 0]]                    # (bar, dim)
+    n, dim = x.shape
+    b = conn.shape[0]
+    g = vec / lengths[:, None]
+    rows = np.repeat(np.arange(b), 2 * dim)
+    cols = (conn[:, :, None] * dim + np.arange(dim)[None, None, :]).reshape(b, -1)
+    vals = np.concatenate([-g, g], axis=1)
+    J = sp.csr_matrix((vals.ravel(), (rows, cols.ravel())), shape=(b, n * dim))
+    return J[:, np.flatnonzero(free.ravel())]
+
+
+def _solve_dependent(J: sp.csr_matrix, rhs: np.ndarray) -> np.ndarray | None:
+    """Solve ``J Δ = rhs``: sparse LU when square, least squares over all bars otherwise."""
+    b, f = J.shape
+    if b == f:
+        try:
+            lu = spla.splu(J.tocsc())
+        except RuntimeError:
+            return None
+        d = np.abs(lu.U.diagonal())
+        if d.min() <= 1e-12 * max(d.max(), 1.0):
+            return None
+        return lu.solve(rhs)
+    if f <= 3000:
+        A = J.toarray()
+        sol, *_ = np.linalg.lstsq(A, rhs, rcond=1e-10)
+        return sol
+    return spla.lsqr(J, rhs, atol=1e-14, btol=1e-14, iter_lim=20 * f)[0]
+
+
+@dataclass
+class StepResult:
+    """Outcome of one corrector (:func:`hortobagyi_step`).
+
+    Attributes
+    ----------
+    increments : ndarray, shape (f,)
+        Converged increments of the free coordinates d.
+    iterations : int
+        Corrector iterations used (eq. 5–6 cycles).
+    residual : float
+        Largest |t_i| at the end, m.
+    converged : bool
+    history : list of ndarray
+        The compatibility error vector t⁽ⁿ⁾ of each iteration (``record=True`` only).
+    iterates : list of ndarray
+        The increments d⁽ⁿ⁾ after each update (``record=True`` only).
+    """
+
+    increments: np.ndarray
+    iterations: int
+    residual: float
+    converged: bool
+    history: list = field(default_factory=list)
+    iterates: list = field(default_factory=list)
+
+
+def hortobagyi_step(coords: np.ndarray, connectivity: np.ndarray, lengths: np.ndarray,
+                    free: np.ndarray, independent: np.ndarray, prediction: np.ndarray, *,
+                    tolerance: float = 1e-10, max_iterations: int = 30, newton: bool = True,
+                    record: bool = False) -> StepResult:
+    """Correct a predicted finite increment until every bar closes (Hortobágyi eq. 4–7).
+
+    Parameters
+    ----------
+    coords : ndarray, shape (n, dim)
+        Compatible start state r.
+    connectivity : ndarray of int, shape (b, 2)
+    lengths : ndarray, shape (b,)
+        Bar lengths to keep.
+    free : ndarray of bool, shape (n, dim)
+        Free coordinates (the columns of B).
+    independent : array of int
+        Positions, among the free coordinates, of the prescribed (independent) increments d2.
+    prediction : ndarray, shape (f,)
+        Predicted increments; its independent entries are the prescribed d2 and are kept.
+    tolerance : float
+        Convergence when ``max|t| ≤ tolerance · max(l)`` (eq. 7).
+    max_iterations : int
+    newton : bool
+        Refresh B11 at every iterate (Newton).  ``False`` keeps the matrix of the predicted
+        state for all iterations, as the paper does.
+    record : bool
+        Keep the error vectors and iterates (for reproducing the paper's tables).
+
+    Returns
+    -------
+    StepResult
+
+    Notes
+    -----
+    Incremental form of eq. (6): ``d1 ← d1 − B11⁻¹ t(d)``, with B11 the dependent columns of
+    ∂t/∂d evaluated at ``r + d`` (at ``r + prediction`` for the frozen variant).
+    """
+    x0 = np.asarray(coords, float)
+    conn = np.asarray(connectivity, dtype=np.int64).reshape(-1, 2)
+    L = np.asarray(lengths, float)
+    free = np.asarray(free, bool)
+    fidx = np.flatnonzero(free.ravel())
+    f = fidx.size
+    indep = np.atleast_1d(np.asarray(independent, dtype=np.int64))
+    dep = np.setdiff1d(np.arange(f), indep)
+    d = np.array(prediction, dtype=float)
+    tol = tolerance * float(L.max())
+
+    def full(dv):
+        out = np.zeros(x0.size)
+        out[fidx] = dv
+        return out.reshape(x0.shape)
+
+    out = StepResult(increments=d, iterations=0, residual=np.inf, converged=False)
+    J = None
+    t0 = None
+    for it in range(max_iterations + 1):
+        t = compatibility_error(x0, conn, L, full(d))
+        res = float(np.max(np.abs(t))) if t.size else 0.0
+        if record:
+            out.history.append(t.copy())
+        out.iterations, out.residual = it, res
+        if not np.isfinite(res):
+            break
+        if res <= tol:
+            out.converged = True
+            break
+        if t0 is None:
+            t0 = res
+        elif res > 1e3 * t0:                               # diverging: give up early
+            break
+        if it == max_iterations:
+            break
+        if J is None or newton:
+            J = _jacobian(x0 + full(d), conn, L, free)[:, dep]
+        delta = _solve_dependent(J, -t)
+        if delta is None or not np.all(np.isfinite(delta)):
+            break
+        d = d.copy()
+        d[dep] += delta
+        out.increments = d
+        if record:
+            out.iterates.append(d.copy())
+    out.increments = d
+    return out
+
+
+# --------------------------------------------------------------------------- partition
+def pivoted_partition(B: np.ndarray, n_independent: int | None = None) -> tuple[np.ndarray,
+                                                                                  np.ndarray]:
+    """Split the columns of B into dependent (B11) and independent (B12) ones by pivoting.
+
+    Column-pivoted QR picks the columns with the largest pivots for B11 (Hortobágyi section 3,
+    step c: B11 the submatrix of largest determinant, found by pivoting); the remaining ones
+    carry the independent coordinate increments.
+
+    Parameters
+    ----------
+    B : ndarray, shape (b, f)
+    n_independent : int, optional
+        Number of independent coordinates (default ``f − rank``).
+
+    Returns
+    -------
+    dependent, independent : ndarray of int
+
+    Examples
+    --------
+    Hortobágyi section 4, B at the folded state plus δ12 = −l/10 (columns 11, 12, 21, 22):
+
+    >>> B = np.array([[0.995037, 0.0995037, -0.995037, -0.0995037],
+    ...               [-0.995037, 0.0995037, 0, 0], [0, 0, -1, 0]])
+    >>> dep, ind = pivoted_partition(B)
+    >>> ind.tolist()
+    [3]
+
+    The largest-determinant B11 (|det| = 0.198 against 0.099 for columns 11, 21, 22) leaves
+    δ22 independent; the paper prescribes δ12 instead, which is allowed because its B11 is
+    invertible too.
+    """
+    B = np.asarray(B, float)
+    _, r, piv = sla.qr(B, mode="economic", pivoting=True)
+    if n_independent is None:
+        d = np.abs(np.diag(r))
+        rank = int(np.sum(d > max(B.shape) * 1e3 * np.finfo(float).eps * max(d.max(), 1e-300)))
+        n_independent = B.shape[1] - rank
+    k = B.shape[1] - n_independent
+    return np.sort(piv[:k]), np.sort(piv[k:])
+
+
+# --------------------------------------------------------------------------- trace
+@dataclass
+class TraceResult:
+    """A traced finite-mechanism path.
+
+    Attributes
+    ----------
+    coords : ndarray, shape (steps + 1, n, dim)
+        Joint positions at the start state and after every step.
+    parameter : ndarray, shape (steps + 1,)
+        Path parameter: accumulated independent-coordinate increments, m.
+    rank : ndarray of int, shape (steps + 1,)
+        ρ(B) at each state.
+    iterations : ndarray of int, shape (steps,)
+        Corrector iterations of each step.
+    residual : ndarray, shape (steps + 1,)
+        Largest bar-length misfit at each state, m.
+    events : list of dict
+        ``{"step": k, "kind": "bifurcation" | "limit_point", ...}``.
+    independent : list of int
+        Free-coordinate position of the independent coordinate of each step.
+    """
+
+    coords: np.ndarray
+    parameter: np.ndarray
+    rank: np.ndarray
+    iterations: np.ndarray
+    residual: np.ndarray
+    events: list
+    independent: list
+
+
+def _perm_parity(perm: np.ndarray) -> int:
+    """Parity (0 even, 1 odd) of a permutation, vectorised by pointer doubling."""
+    n = perm.size
+    lab = np.arange(n)
+    p = perm.copy()
+    for _ in range(max(1, int(np.ceil(np.log2(max(n, 2)))) + 1)):
+        lab = np.minimum(lab, lab[p])
+        p = p[p]
+    cycles = int(np.sum(lab == np.arange(n)))
+    return (n - cycles) % 2
+
+
+def _augmented_tangent(B: sp.csr_matrix, c: np.ndarray, return_lu: bool = False):
+    """Tangent τ with ``B τ = 0, cᵀ τ = 1`` and the sign of ``det [B; cᵀ]`` (sparse LU)."""
+    A = sp.vstack([B, sp.csr_matrix(c[None, :])]).tocsc()
+    try:
+        lu = spla.splu(A)
+    except RuntimeError:
+        return None, 0
+    diag = lu.U.diagonal()
+    if np.abs(diag).min() <= 1e-13 * max(np.abs(diag).max(), 1.0):
+        return None, 0
+    rhs = np.zeros(A.shape[0])
+    rhs[-1] = 1.0
+    tau = lu.solve(rhs)
+    sign = int(np.prod(np.sign(diag)))
+    sign *= (-1) ** (_perm_parity(lu.perm_r) + _perm_parity(lu.perm_c))
+    if return_lu:
+        return tau, sign, lu
+    return tau, sign
+
+
+def _chord_corrector(x0, conn, L, fidx, pred, lu, p, tol, max_iterations) -> StepResult:
+    """Corrector with the factorised ``[B(x0); e_pᵀ]`` kept (chord iteration): solves
+    ``B Δ = −t, Δ_p = 0`` with one factorisation per step; for the small steps of a trace it
+    converges in a few cheap solves (used above the dense limit)."""
+    n, dim = x0.shape
+    d = pred.copy()
+    rhs = np.zeros(fidx.size)
+    res = np.inf
+    for it in range(max_iterations + 1):
+        full = np.zeros(n * dim)
+        full[fidx] = d
+        t = compatibility_error(x0, conn, L, full.reshape(n, dim))
+        res = float(np.max(np.abs(t)))
+        if res <= tol or not np.isfinite(res) or it == max_iterations:
+            break
+        rhs[:-1] = -t
+        d = d + lu.solve(rhs)
+    return StepResult(increments=d, iterations=it, residual=res,
+                      converged=bool(res <= tol))
+
+
+def _dense_null(B: sp.csr_matrix, rtol: float):
+    A = B.toarray()
+    if A.shape[0] == 0:
+        return A.shape[1] * 0, np.eye(A.shape[1]), np.zeros(0)
+    _, s, vt = np.linalg.svd(A, full_matrices=True)
+    tol = rtol * max(s.max(initial=0.0), 1e-300)
+    rank = int(np.sum(s > tol))
+    return rank, vt[rank:].T, s
+
+
+def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarray,
+                    drives: list[int], step: float | list[float], steps: int, *,
+                    branch: int = 0, tolerance: float = 1e-10, max_iterations: int = 30,
+                    newton: bool = True, rank_tolerance: float | None = None,
+                    names: list[str] | None = None) -> TraceResult:
+    """Follow the finite motion of a mechanism (Hortobágyi sections 3–6).
+
+    Parameters
+    ----------
+    coords : ndarray, shape (n, dim)
+        Compatible start state; its bar lengths are kept.
+    connectivity : ndarray of int, shape (b, 2)
+    free : ndarray of bool, shape (n, dim)
+        Free coordinates.
+    drives : list of int
+        Flat coordinate indices (``node * dim + axis``) of the prescribed coordinates; one for a
+        one-degree-of-freedom mechanism, several for section 6 (as many as degrees of freedom).
+    step : float or list of float
+        Prescribed increment of each drive coordinate per step, m.  After the first step of a
+        one-drive trace the step length is kept in the coordinate of largest velocity
+        (section 5), so limit points of the drive coordinate are passed.
+    steps : int
+        Number of steps.
+    branch : int
+        At a bifurcation point met at a step's start (rank drop, μ·j − ρ(B) above the number of
+        drives), take branch ``branch``: the candidate independent coordinates are found by
+        pivoting the null space; branch 0 prescribes the drive coordinate, branch k the k-th
+        other candidate, the other candidates kept at zero in the prediction (section 4).
+    tolerance : float
+        Relative bar-length tolerance of the corrector (eq. 7).
+    max_iterations : int
+    newton : bool
+        Refresh B11 each iteration (default) or keep the paper's frozen B11.
+    rank_tolerance : float, optional
+        Relative singular-value tolerance of the per-step rank; default
+        ``max(1e-8, 100·tolerance)`` — never tighter than the bar-length accuracy.
+    names : list of str, optional
+        Coordinate names ``"node:axis"`` for events and messages.
+
+    Returns
+    -------
+    TraceResult
+
+    Raises
+    ------
+    AnalysisError
+        The assembly is rigid (no mechanism to trace), the drive does not move it, or a step
+        cannot be closed even after halving to the minimum step (the message says
+        "the prescribed increment leaves the motion region, or the assembly is not a finite
+        mechanism").
+
+    Examples
+    --------
+    A four-bar linkage (ground 0–3, crank 0–1, coupler 1–2, rocker 2–3) driven by the x
+    coordinate of joint 1; every bar keeps its length:
+
+    >>> x = np.array([[0., 0.], [0., 1.], [2., 1.5], [2., 0.]])
+    >>> conn = np.array([[0, 1], [1, 2], [2, 3]])
+    >>> free = np.array([[0, 0], [1, 1], [1, 1], [0, 0]], bool)
+    >>> r = trace_mechanism(x, conn, free, drives=[2], step=0.05, steps=4)
+    >>> L0 = np.linalg.norm(x[conn[:, 1]] - x[conn[:, 0]], axis=1)
+    >>> L4 = np.linalg.norm(r.coords[-1][conn[:, 1]] - r.coords[-1][conn[:, 0]], axis=1)
+    >>> bool(np.allclose(L4, L0, rtol=1e-9)), round(float(r.coords[-1][1, 0]), 6)
+    (True, 0.2)
+    """
+    x = np.array(coords, dtype=float)
+    conn = np.asarray(connectivity, dtype=np.int64).reshape(-1, 2)
+    free = np.asarray(free, dtype=bool).reshape(x.shape)
+    n, dim = x.shape
+    fidx = np.flatnonzero(free.ravel())
+    f = fidx.size
+    col_of = -np.ones(n * dim, dtype=np.int64)
+    col_of[fidx] = np.arange(f)
+    drives = [int(k) for k in np.atleast_1d(drives)]
+    nd = len(drives)
+    names = names or [f"{k // dim}:{'xyz'[k % dim]}" for k in range(n * dim)]
+    for k in drives:
+        if not 0 <= k < n * dim:
+            raise InputError("drive", f"coordinate {k} does not exist")
+        if col_of[k] < 0:
+            raise InputError("drive", f"'{names[k]}' is a supported (fixed) coordinate; drive "
+                                      "a free coordinate of a moving joint")
+    dcols = col_of[drives]
+    S = np.broadcast_to(np.asarray(step, dtype=float), (nd,)).astype(float)
+    if not np.all(np.isfinite(S)) or np.any(S == 0):
+        raise InputError("step", f"must be finite and non-zero, got {step}")
+    if steps < 1:
+        raise InputError("steps", f"must be at least 1, got {steps}")
+    L = np.linalg.norm(x[conn[:, 1]] - x[conn[:, 0]], axis=1)
+    Lmax = float(L.max())
+    rtol = max(1e-8, 100 * tolerance) if rank_tolerance is None else float(rank_tolerance)
+    h_full = float(np.max(np.abs(S)))
+    h_min = max(h_full / 1024.0, 10.0 * np.sqrt(tolerance) * Lmax)
+    dense = f <= DENSE_LIMIT
+    square = conn.shape[0] + nd == f
+
+    # Independent rows for the determinant test on over-constrained assemblies.
+    rows = np.arange(conn.shape[0])
+    if not square and nd == 1:
+        if not dense:
+            raise AnalysisError("trace", f"an assembly with self-stress states and {f} "
+                                         f"coordinates is beyond the dense limit ({DENSE_LIMIT})")
+        Bt = compatibility_matrix(x, conn, free).toarray().T
+        _, rr, piv = sla.qr(Bt, mode="economic", pivoting=True)
+        dg = np.abs(np.diag(rr))
+        rows = np.sort(piv[: int(np.sum(dg > rtol * max(dg.max(), 1e-300)))])
+
+    def full(dv):
+        out = np.zeros(n * dim)
+        out[fidx] = dv
+        return out.reshape(n, dim)
+
+    path = [x.copy()]
+    param = [0.0]
+    ranks, iters, resid, indeps, events = [], [], [0.0], [], []
+    prev_tau = None
+    prev_sign = 0
+    prev_drive_dir = None
+    s_acc = 0.0
+    h = h_full
+    for k in range(1, steps + 1):
+        item = f"trace: step {k}"
+        B = compatibility_matrix(x, conn, free)
+        rank = None
+        N = None
+        if dense:
+            rank, N, _ = _dense_null(B, rtol)
+        ranks.append(rank if rank is not None else f - nd)
+        nullity = None if rank is None else f - rank
+        bif_here = False
+        chord = None
+        if nullity == 0:
+            raise AnalysisError(item if k > 1 else "trace",
+                                "the assembly is rigid (rank of the compatibility matrix = "
+                                f"{rank} = number of free coordinates): there is no mechanism "
+                                "to trace" if k == 1 else "the assembly locks: no mechanism "
+                                "left to follow")
+        if nullity is not None and nullity < nd:
+            if k == 1:
+                raise InputError("drive", f"the assembly has {nullity} degree(s) of freedom "
+                                          f"here but {nd} drives were given; prescribe at most "
+                                          f"{nullity}")
+            # Unfolded into a mechanism with fewer degrees of freedom (section 6: after the
+            # four prescribed increments a one-degree-of-freedom finite mechanism): continue
+            # along the tangent, the drive with the largest increment reporting limit points.
+            keep = int(np.argmax(np.abs(S)))
+            drives, dcols, S, nd = [drives[keep]], dcols[[keep]], S[[keep]], 1
+            prev_drive_dir = None
+        if nd > 1:
+            # Several drives (section 6): the prescribed increments give the prediction.
+            if N is None:
+                raise AnalysisError("trace", "several drives need the dense path "
+                                             f"(at most {DENSE_LIMIT} coordinates)")
+            # Prediction in the null space with the prescribed drive increments (min-norm
+            # combination when the null space is larger than the number of drives).
+            a, *_ = np.linalg.lstsq(N[dcols], S, rcond=None)
+            pred = N @ a
+            if not np.allclose(pred[dcols], S, rtol=1e-6, atol=1e-12 * Lmax):
+                raise AnalysisError(item, "the drives are not independent degrees of freedom "
+                                          "of the mechanism; choose other drive coordinates")
+            if nullity > nd:
+                # More infinitesimal than finite freedoms: only the coordinate of the largest
+                # displacement is independent in the corrector (section 6).
+                bif_here = True
+                indep = dcols[[int(np.argmax(np.abs(S)))]]
+                events.append({"step": k - 1, "kind": "bifurcation", "branches": int(nullity),
+                               "independent": names[fidx[indep[0]]]})
+            else:
+                indep = dcols
+        elif nullity is not None and nullity > 1:
+            # A bifurcation point (rank drop): choose the branch as in section 4.
+            bif_here = True
+            dv = N[dcols[0]]
+            if np.linalg.norm(dv) > 1e-8:
+                # the drive first, then the coordinates of largest pivot in the rest
+                vh = dv / np.linalg.norm(dv)
+                rest = N - np.outer(N @ vh, vh)
+                _, _, piv = sla.qr(rest.T, mode="economic", pivoting=True)
+                cands = [int(dcols[0])] + [int(c) for c in piv if c != dcols[0]][:nullity - 1]
+            else:
+                _, _, piv = sla.qr(N.T, mode="economic", pivoting=True)
+                cands = [int(c) for c in piv[:nullity]]
+            if branch >= len(cands):
+                raise InputError("branch", f"the bifurcation at step {k} has {len(cands)} "
+                                           f"branches (0..{len(cands) - 1}); got {branch}")
+            p = int(cands[branch])
+            e = np.zeros(nullity)
+            e[branch] = 1.0
+            a = np.linalg.solve(N[cands], e)
+            tau = N @ a                                    # τ_p = 1, other candidates 0
+            if prev_tau is None:
+                pred = S[0] * tau                          # prescribed increment of p is S
+            else:
+                if tau @ prev_tau < 0:
+                    tau = -tau
+                pred = h * tau / abs(tau[p])
+            indep = np.array([p])
+            events.append({"step": k - 1, "kind": "bifurcation", "branches": int(nullity),
+                           "branch": int(branch), "independent": names[fidx[p]]})
+        else:
+            # Regular point: tangent from the augmented system [B; cᵀ] τ = e (sparse LU).
+            c = prev_tau if prev_tau is not None else np.sign(S[0]) * np.eye(f)[dcols[0]]
+            Br = B[rows] if rows.size != B.shape[0] else B
+            chord = None
+            if not dense and square and prev_tau is not None and nd == 1:
+                # One factorisation per step: [B; e_pᵀ] with p the coordinate of largest
+                # velocity of the last step gives the tangent (τ_p = 1), the determinant sign
+                # (det [B; τ̂ᵀ] has the sign of det [B; e_pᵀ]·τ̂_p) and the chord corrector.
+                p0 = int(np.argmax(np.abs(prev_tau)))
+                ep = np.zeros(f)
+                ep[p0] = 1.0
+                tau, sign, lu = _augmented_tangent(Br, ep, return_lu=True)
+                if tau is not None:
+                    if tau @ prev_tau < 0:
+                        tau = -tau
+                    sign *= int(np.sign(tau[p0]))
+                    if abs(tau[p0]) >= 0.5 * np.abs(tau).max():
+                        chord = (lu, p0)
+            elif Br.shape[0] + 1 == f:
+                tau, sign = _augmented_tangent(Br, c)
+            else:
+                tau, sign = None, 0
+            if tau is None:
+                if N is None or N.shape[1] != 1:
+                    msg = ("the drive coordinate does not move the mechanism at the start; "
+                           "choose another drive" if prev_tau is None else DIVERGENCE_MESSAGE)
+                    raise AnalysisError(item, msg)
+                tau = N[:, 0] * (1.0 if N[:, 0] @ c >= 0 else -1.0)
+                sign = prev_sign
+            if prev_tau is None:
+                if abs(tau[dcols[0]]) <= 1e-8 * np.abs(tau).max():
+                    raise AnalysisError("drive", f"'{names[drives[0]]}' does not move in the "
+                                                 "mechanism at the start; choose another drive")
+                p = int(dcols[0])
+                pred = S[0] * tau / tau[p]
+                tau = pred / np.linalg.norm(pred)
+            else:
+                if prev_sign and sign and sign != prev_sign:
+                    events.append({"step": k - 1, "kind": "bifurcation",
+                                   "detected_by": "sign change of det [B; tangent]"})
+                p = int(np.argmax(np.abs(tau)))            # largest velocity (section 5)
+                if chord is not None:
+                    p = chord[1]
+                pred = h * tau / abs(tau[p])               # forward along the oriented tangent
+            prev_sign = sign
+            indep = np.array([p])
+
+        # Corrector with step halving down to the minimum step.
+        while True:
+            res = None
+            if chord is not None:
+                res = _chord_corrector(x, conn, L, fidx, pred, chord[0], chord[1],
+                                       tolerance * Lmax, max_iterations)
+                chord = None                               # a retry uses Newton
+            if res is None or not res.converged:
+                res = hortobagyi_step(x, conn, L, free, indep, pred, tolerance=tolerance,
+                                      max_iterations=max_iterations, newton=newton)
+            if res.converged:
+                break
+            scale = 0.5
+            h_try = float(np.max(np.abs(pred[indep]))) * scale
+            if h_try < h_min:
+                raise AnalysisError(item, f"{DIVERGENCE_MESSAGE} (no compatible position "
+                                          f"within a step of {h_try / scale:.3g} m after "
+                                          "halving to the minimum step)")
+            log.info("%s: corrector did not converge; halving the step to %.3g", item, h_try)
+            pred = pred * scale
+        d = res.increments
+        h = min(h_full, 2.0 * float(np.max(np.abs(d[indep])))) if nd == 1 else h
+        x = x + full(d)
+        s_acc += float(np.max(np.abs(d[indep])))
+        path.append(x.copy())
+        param.append(s_acc)
+        iters.append(res.iterations)
+        resid.append(res.residual)
+        indeps.append(int(indep[0]))
+        norm = float(np.linalg.norm(d))
+        if nd > 1:
+            prev_tau = d / norm
+        if nd == 1:
+            new_tau = d / norm
+            if bif_here:
+                prev_sign = 0                              # restart the determinant record
+            prev_tau = new_tau
+            ddir = np.sign(d[dcols[0]]) if abs(d[dcols[0]]) > 1e-12 * norm else 0.0
+            if prev_drive_dir and ddir and ddir != prev_drive_dir:
+                events.append({"step": k - 1, "kind": "limit_point",
+                               "coordinate": names[drives[0]]})
+            if ddir:
+                prev_drive_dir = ddir
+    B = compatibility_matrix(x, conn, free)
+    ranks.append(_dense_null(B, rtol)[0] if dense else f - nd)
+    return TraceResult(coords=np.array(path), parameter=np.array(param),
+                       rank=np.array(ranks, dtype=int), iterations=np.array(iters, dtype=int),
+                       residual=np.array(resid), events=events, independent=indeps)
+
+
+def trace_structure(structure, drive: str | list[str], step, steps: int, **kwargs) -> TraceResult:
+    """:func:`trace_mechanism` for a :class:`~trussfe.model.Structure`.
+
+    Parameters
+    ----------
+    drive : str or list of str
+        ``"NODE:AXIS"`` (axis x, y or z), one per degree of freedom.
+    """
+    dim = structure.dim
+    drives = []
+    for dv in ([drive] if isinstance(drive, str) else list(drive)):
+        node, sep, axis = str(dv).rpartition(":")
+        if not sep or not node:
+            raise InputError("--drive", f"expected NODE:AXIS (e.g. 3:y), got '{dv}'")
+        axes = "xyz"[:dim]
+        if axis not in axes:
+            raise InputError("--drive", f"axis '{axis}' does not exist in a {dim}-D model; "
+                                        f"use one of {', '.join(axes)}")
+        try:
+            i = structure.node_index(node)
+        except KeyError:
+            raise InputError("--drive", f"node '{node}' is not defined in the model") from None
+        if structure.translation_supports[i, axes.index(axis)]:
+            raise InputError("--drive", f"node '{node}' is fixed in {axis} by a support; "
+                                        "drive a free coordinate of a moving joint")
+        drives.append(i * dim + axes.index(axis))
+    names = [f"{nid}:{ax}" for nid in structure.node_ids for ax in "xyz"[:dim]]
+    return trace_mechanism(structure.coords, structure.connectivity,
+                           ~structure.translation_supports, drives, step, steps, names=names,
+                           **kwargs)

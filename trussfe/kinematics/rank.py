@@ -1,0 +1,331 @@
+# SPDX-License-Identifier: MIT
+"""Rank analysis of a pin-jointed assembly: mechanisms, rigid-body motions, self-stress states.
+
+For ``b`` bars and ``f`` free joint coordinates the compatibility matrix B (b × f,
+Hortobágyi eq. 2) has rank ρ.  Then (Hortobágyi section 2; Pellegrino & Calladine)
+
+* ``f − ρ`` independent infinitesimal motions (the null space of B).  Those that are rigid-body
+  motions of the whole assembly left free by insufficient supports are reported separately as
+  ``rigid_body_motions``; the rest are internal ``mechanisms``;
+* ``b − ρ`` independent states of self-stress (the null space of Bᵀ, the equilibrium matrix).
+
+The assembly is statically determinate when it has no self-stress state and kinematically
+determinate when it has no mechanism and no rigid-body motion.
+
+Tolerance
+---------
+B holds direction cosines, so its singular values are dimensionless and independent of the
+length unit; a singular value counts as zero when ``σ ≤ tolerance · σ_max``.  The default
+relative tolerance is ``max(b, f) · 1e3 · eps`` (about 2e-10 for a hundred bars) for the dense
+SVD.  Near a singular position the gap matters: the result carries the smallest singular value
+kept and the largest one dropped, so a reader can see how clear the decision was.  When the
+geometry itself is only known to an accuracy δ (e.g. positions from a continuation converged to
+a bar-length misfit δ·L), pass ``tolerance ≥ δ``: a rank decided below the geometric accuracy is
+noise (the Bricard octahedron is the standard trap).
+
+Large assemblies (more than ``dense_limit`` coordinates or twice as many bars) use a sparse
+path: the nullity of ``K = BᵀB`` is the number of its eigenvalues σ² below the tolerance, counted
+exactly by Sylvester's law of inertia from one symmetric sparse factorisation of
+``K − σ_tol² I`` (null vectors by inverse iteration with that factorisation).  The relative
+tolerance is raised to at least 1e-6 (relative to the Gershgorin bound of σ_max) because σ² is
+resolved only to round-off of K; self-stress states are counted as ``b − ρ`` without a basis,
+and the decision margin is reported only when mechanisms are found.
+"""
+from __future__ import annotations
+
+import logging
+from dataclasses import dataclass, field
+
+import numpy as np
+import scipy.linalg as sla
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+
+from ..errors import AnalysisError
+from .compatibility import compatibility_matrix
+
+log = logging.getLogger(__name__)
+
+#: Relative rank tolerance of the sparse path (σ resolved through σ² ~ round-off of BᵀB).
+SPARSE_MIN_TOLERANCE = 1e-6
+
+
+@dataclass
+class RankResult:
+    """Outcome of :func:`rank_analysis`.
+
+    Attributes
+    ----------
+    rank : int
+        ρ(B).
+    n_coordinates, n_bars : int
+        Columns (free coordinates) and rows (bars) of B.
+    mechanisms : int
+        Internal infinitesimal mechanisms, ``f − ρ − rigid_body_motions``.
+    rigid_body_motions : int
+        Rigid-body motions the supports leave free.
+    self_stress_states : int
+        ``b − ρ``.
+    mechanism_basis : ndarray, shape (f, mechanisms)
+        Orthonormal basis of the internal mechanisms (orthogonal to the rigid-body motions),
+        in free-coordinate order.
+    rigid_body_basis : ndarray, shape (f, rigid_body_motions)
+    self_stress_basis : ndarray, shape (b, self_stress_states) or None
+        Bar tensions of each state (None on the sparse path).
+    free : ndarray of bool, shape (n, dim)
+        Free coordinates (columns of B in row-major order).
+    tolerance : float
+        Absolute singular-value threshold used.
+    smallest_kept, largest_dropped : float
+        Smallest singular value counted in the rank and largest one treated as zero
+        (``nan`` if none): the margin of the rank decision.
+    """
+
+    rank: int
+    n_coordinates: int
+    n_bars: int
+    mechanisms: int
+    rigid_body_motions: int
+    self_stress_states: int
+    mechanism_basis: np.ndarray
+    rigid_body_basis: np.ndarray
+    self_stress_basis: np.ndarray | None
+    free: np.ndarray
+    tolerance: float
+    smallest_kept: float = float("nan")
+    largest_dropped: float = float("nan")
+    extra: dict = field(default_factory=dict)
+
+    @property
+    def infinitesimal_motions(self) -> int:
+        """``f − ρ``: every independent motion (Hortobágyi's μ·j − ρ(B))."""
+        return self.n_coordinates - self.rank
+
+    @property
+    def statically_determinate(self) -> bool:
+        """No state of self-stress."""
+        return self.self_stress_states == 0
+
+    @property
+    def kinematically_determinate(self) -> bool:
+        """No mechanism and no rigid-body motion."""
+        return self.mechanisms == 0 and self.rigid_body_motions == 0
+
+    @property
+    def classification(self) -> str:
+        """Pellegrino–Calladine type: I (s=0, m=0), II (s>0, m=0), III (s=0, m>0), IV."""
+        m = self.mechanisms + self.rigid_body_motions
+        s = self.self_stress_states
+        return {(False, False): "I", (True, False): "II", (False, True): "III",
+                (True, True): "IV"}[(s > 0, m > 0)]
+
+
+def rigid_body_modes(coords: np.ndarray) -> np.ndarray:
+    """Orthonormal basis of the rigid-body displacement fields of a point set.
+
+    Parameters
+    ----------
+    coords : ndarray, shape (n, dim)
+
+    Returns
+    -------
+    ndarray, shape (n * dim, r)
+        r = 3 in 2-D and 6 in 3-D, fewer for degenerate point sets (collinear points have no
+        rotation about their own line).
+
+    Examples
+    --------
+    >>> rigid_body_modes(np.array([[0., 0.], [1., 0.]])).shape
+    (4, 3)
+    >>> rigid_body_modes(np.array([[0., 0., 0.], [1., 0., 0.]])).shape
+    (6, 5)
+    """
+    x = np.asarray(coords, dtype=float)
+    n, dim = x.shape
+    xc = x - x.mean(axis=0)
+    cols = []
+    for k in range(dim):                                   # translations
+        t = np.zeros((n, dim))
+        t[:, k] = 1.0
+        cols.append(t.ravel())
+    if dim == 2:                                           # rotation about z: (−y, x)
+        cols.append(np.column_stack([-xc[:, 1], xc[:, 0]]).ravel())
+    else:                                                  # rotations ω × x
+        for k in range(3):
+            w = np.zeros(3)
+            w[k] = 1.0
+            cols.append(np.cross(w, xc).ravel())
+    R = np.column_stack(cols)
+    u, s, _ = np.linalg.svd(R, full_matrices=False)
+    keep = s > 1e-10 * max(s.max(), 1e-300)
+    return u[:, keep]
+
+
+def _free_rigid_modes(coords: np.ndarray, free: np.ndarray) -> np.ndarray:
+    """Rigid-body motions with every fixed coordinate at zero, on the free coordinates."""
+    R = rigid_body_modes(coords)                           # (n*dim, r)
+    fixed_rows = ~free.ravel()
+    if np.any(fixed_rows):
+        ns = sla.null_space(R[fixed_rows], rcond=1e-10)    # (r, k) combinations fixing supports
+        R = R @ ns
+    if R.shape[1] == 0:
+        return np.zeros((int(free.sum()), 0))
+    Rf = R[free.ravel()]
+    q, s, _ = np.linalg.svd(Rf, full_matrices=False)
+    return q[:, s > 1e-10 * max(s.max(initial=0.0), 1e-300)]
+
+
+def rank_analysis(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarray, *,
+                  tolerance: float | None = None, dense_limit: int = 1500) -> RankResult:
+    """Rank, mechanisms, rigid-body motions and self-stress states of an assembly.
+
+    Parameters
+    ----------
+    coords : ndarray, shape (n, dim)
+        Joint positions (the geometry decides the rank).
+    connectivity : ndarray of int, shape (b, 2)
+        Bars.
+    free : ndarray of bool, shape (n, dim)
+        Free coordinates (``~structure.translation_supports``).
+    tolerance : float, optional
+        Relative singular-value tolerance (σ ≤ tolerance·σ_max counts as zero).  Default
+        ``max(b, f)·1e3·eps`` (dense) or 1e-6 (sparse).
+    dense_limit : int
+        Above this many free coordinates the sparse path is used.
+
+    Returns
+    -------
+    RankResult
+
+    Notes
+    -----
+    Hortobágyi section 2: infinitesimal mechanisms ``μ·j − ρ(B)``; self-stress ``b − ρ(B)``
+    (the null space of the equilibrium matrix Bᵀ).
+
+    Examples
+    --------
+    A triangle pinned at one corner and on a roller at another is rigid and determinate:
+
+    >>> x = np.array([[0., 0.], [1., 0.], [0., 1.]])
+    >>> free = np.array([[0, 0], [1, 0], [1, 1]], bool)
+    >>> r = rank_analysis(x, np.array([[0, 1], [1, 2], [2, 0]]), free)
+    >>> (r.rank, r.mechanisms, r.rigid_body_motions, r.self_stress_states)
+    (3, 0, 0, 0)
+
+    The same triangle with no support has three rigid-body motions and no mechanism:
+
+    >>> r = rank_analysis(x, np.array([[0, 1], [1, 2], [2, 0]]), np.ones((3, 2), bool))
+    >>> (r.mechanisms, r.rigid_body_motions)
+    (0, 3)
+    """
+    x = np.asarray(coords, dtype=float)
+    conn = np.asarray(connectivity, dtype=np.int64).reshape(-1, 2)
+    free = np.asarray(free, dtype=bool).reshape(x.shape)
+    B = compatibility_matrix(x, conn, free)
+    b, f = B.shape
+    rigid = _free_rigid_modes(x, free)
+    if f <= dense_limit and b <= 2 * dense_limit:
+        return _dense_rank(B, rigid, free, tolerance)
+    return _sparse_rank(B, rigid, free, tolerance)
+
+
+def _split_rigid(null: np.ndarray, rigid: np.ndarray, atol: float) -> tuple[np.ndarray, np.ndarray]:
+    """Split a null-space basis into rigid-body motions and internal mechanisms."""
+    if rigid.shape[1] == 0 or null.shape[1] == 0:
+        return null, rigid[:, :0] if rigid.size else np.zeros((null.shape[0], 0))
+    # rigid motions lie in the null space of B (they do not stretch bars); keep those that do
+    coef = null.T @ rigid                                  # (k, r)
+    resid = np.linalg.norm(rigid - null @ coef, axis=0)
+    rig = rigid[:, resid <= max(atol, 1e-8)]
+    if rig.shape[1] == 0:
+        return null, rig
+    proj = null - rig @ (rig.T @ null)                     # remove the rigid part
+    u, s, _ = np.linalg.svd(proj, full_matrices=False)
+    k = null.shape[1] - rig.shape[1]
+    return u[:, :k], rig
+
+
+def _dense_rank(B, rigid, free, tolerance) -> RankResult:
+    b, f = B.shape
+    A = B.toarray()
+    if b == 0 or f == 0:
+        s = np.zeros(0)
+        u = np.eye(b)
+        vt = np.eye(f)
+    else:
+        u, s, vt = np.linalg.svd(A, full_matrices=True)
+    rtol = max(b, f) * 1e3 * np.finfo(float).eps if tolerance is None else float(tolerance)
+    smax = float(s.max()) if s.size else 0.0
+    tol = rtol * max(smax, 1e-300)
+    rank = int(np.sum(s > tol))
+    null = vt[rank:].T                                     # (f, f − ρ)
+    stress = u[:, rank:]                                   # (b, b − ρ)
+    mech, rig = _split_rigid(null, rigid, 1e3 * tol)
+    kept = float(s[rank - 1]) if rank > 0 else float("nan")
+    dropped = float(s[rank]) if rank < s.size else (0.0 if f > rank else float("nan"))
+    return RankResult(rank=rank, n_coordinates=f, n_bars=b, mechanisms=mech.shape[1],
+                      rigid_body_motions=rig.shape[1], self_stress_states=b - rank,
+                      mechanism_basis=mech, rigid_body_basis=rig,
+                      self_stress_basis=_sign_fix(stress), free=free, tolerance=tol,
+                      smallest_kept=kept, largest_dropped=dropped)
+
+
+def _sign_fix(v: np.ndarray) -> np.ndarray:
+    """Make the largest entry of each column positive (deterministic output)."""
+    if v.size == 0:
+        return v
+    idx = np.argmax(np.abs(v), axis=0)
+    return v * np.sign(v[idx, np.arange(v.shape[1])])
+
+
+def _sparse_rank(B, rigid, free, tolerance) -> RankResult:
+    b, f = B.shape
+    rtol = max(SPARSE_MIN_TOLERANCE, 0.0 if tolerance is None else float(tolerance))
+    K = (B.T @ B).tocsc()
+    # λ_max(K) ≤ ‖K‖₁ (Gershgorin): a cheap, safe scale for the relative tolerance
+    smax2 = float(abs(K).sum(axis=0).max())
+    lam_tol = (rtol ** 2) * smax2
+    # Sylvester's law of inertia: the number of eigenvalues of K below λ_tol is the number of
+    # negative pivots of a symmetric (unpivoted) factorisation of K − λ_tol·I.
+    shifted = (K - lam_tol * sp.eye(f, format="csc")).tocsc()
+    try:
+        lu = spla.splu(shifted, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
+                       options={"SymmetricMode": True})
+    except RuntimeError as exc:                         # an exactly singular pivot
+        raise AnalysisError("rank analysis", f"sparse factorisation failed ({exc}); "
+                                             "use the dense path (raise dense_limit)") from None
+    nz = int(np.sum(lu.U.diagonal() < 0))
+    if nz >= f - 1:
+        raise AnalysisError("rank analysis", "too many mechanisms for the sparse path; "
+                                             "use the dense path (raise dense_limit)")
+    vals = np.zeros(0)
+    vecs = np.zeros((f, 0))
+    if nz:
+        # block inverse iteration with the same factorisation, then Rayleigh–Ritz
+        rng = np.random.default_rng(0)
+        V = np.linalg.qr(rng.normal(size=(f, nz + 2)))[0]
+        for _ in range(6):
+            V = np.linalg.qr(lu.solve(V))[0]
+        w, Z = np.linalg.eigh(V.T @ (K @ V))
+        vals, vecs = w, V @ Z
+    null = vecs[:, :nz]
+    rank = f - nz
+    tol = float(np.sqrt(lam_tol))
+    mech, rig = _split_rigid(null, rigid, 1e3 * tol)
+    kept = float(np.sqrt(max(vals[nz], 0.0))) if nz < vals.size else float("nan")
+    dropped = float(np.sqrt(max(vals[nz - 1], 0.0))) if nz > 0 else float("nan")
+    log.info("sparse rank analysis: %d near-zero eigenvalues of BᵀB below %.3g", nz, lam_tol)
+    return RankResult(rank=rank, n_coordinates=f, n_bars=b, mechanisms=mech.shape[1],
+                      rigid_body_motions=rig.shape[1], self_stress_states=b - rank,
+                      mechanism_basis=mech, rigid_body_basis=rig, self_stress_basis=None,
+                      free=free, tolerance=tol, smallest_kept=kept, largest_dropped=dropped)
+
+
+def structure_rank(structure, **kwargs) -> RankResult:
+    """:func:`rank_analysis` of a :class:`~trussfe.model.Structure` (its bars and supports).
+
+    Beams are treated as pin-jointed bars: the rank analysis is that of the bar-and-joint
+    assembly (Hortobágyi's setting).
+    """
+    return rank_analysis(structure.coords, structure.connectivity,
+                         ~structure.translation_supports, **kwargs)

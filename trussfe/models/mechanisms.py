@@ -1,0 +1,331 @@
+# SPDX-License-Identifier: MIT
+"""Catalogue of named bar-and-joint assemblies with known rank and mechanism counts.
+
+Each entry carries its geometry, supports, the counts a rank analysis must find (from the
+source named in the entry, or from the construction) and a drive for tracing its motion.
+Tests parametrise over :data:`CATALOGUE`; the shipped models ``meshes/mech_*.toml`` are written
+from it by :func:`write_toml` (and a test checks they agree).
+
+Hortobágyi's figures are missing from the text of seed 000; the assemblies of sections 6, 8 and
+9 are constructions that satisfy every property the text states, documented in their builders.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+
+@dataclass
+class MechanismEntry:
+    """A reference assembly.
+
+    Attributes
+    ----------
+    name : str
+        Catalogue key and model name.
+    title : str
+    coords : ndarray, shape (n, dim)
+    bars : ndarray of int, shape (b, 2)
+    supports : dict
+        Node index → fixed axes, e.g. ``"xy"``.
+    expected : dict
+        ``rank``, ``mechanisms``, ``rigid_body_motions``, ``self_stress_states``.
+    source : str
+        Where the expected numbers come from.
+    drive : str
+        ``"NODE:AXIS"`` suggested for ``trussfe trace`` (node ids are ``str(index + 1)``).
+    step : float
+        Suggested drive increment, m.
+    removable : dict
+        Names of bars whose removal gives another catalogue case (documentation).
+    """
+
+    name: str
+    title: str
+    coords: np.ndarray
+    bars: np.ndarray
+    supports: dict
+    expected: dict
+    source: str
+    drive: str = ""
+    step: float = 0.05
+    notes: str = ""
+    extra: dict = field(default_factory=dict)
+
+    @property
+    def dim(self) -> int:
+        """Spatial dimension."""
+        return self.coords.shape[1]
+
+    @property
+    def node_ids(self) -> list[str]:
+        """Node ids: ``"1"``, ``"2"``, ... (Hortobágyi numbers joints from 1)."""
+        return [str(i + 1) for i in range(self.coords.shape[0])]
+
+    @property
+    def free(self) -> np.ndarray:
+        """Free coordinates, shape (n, dim)."""
+        f = np.ones(self.coords.shape, dtype=bool)
+        for i, axes in self.supports.items():
+            for a in axes:
+                f[i, "xyz".index(a)] = False
+        return f
+
+    def drive_index(self) -> int:
+        """Flat coordinate index of :attr:`drive`."""
+        node, axis = self.drive.split(":")
+        return (int(node) - 1) * self.dim + "xyz".index(axis)
+
+    def structure(self):
+        """The entry as a :class:`~trussfe.model.Structure` (aluminium tube members)."""
+        from ..model.sections import Material, Section
+        from ..model.structure import build_structure
+        return build_structure(self.coords, self.bars, section=Section.tube("tube", 0.02, 0.016),
+                               material=Material("aluminium", E=70e9, G=26e9, density=2700.0),
+                               supports={i: list(a) for i, a in self.supports.items()},
+                               name=self.name, node_ids=self.node_ids,
+                               member_ids=[f"b{k + 1}" for k in range(len(self.bars))])
+
+
+def _entry(name, title, coords, bars, supports, expected, source, drive="", step=0.05,
+           notes="") -> MechanismEntry:
+    return MechanismEntry(name=name, title=title, coords=np.asarray(coords, float),
+                          bars=np.asarray(bars, dtype=np.int64), supports=supports,
+                          expected=dict(zip(("rank", "mechanisms", "rigid_body_motions",
+                                             "self_stress_states"), expected)),
+                          source=source, drive=drive, step=step, notes=notes)
+
+
+def hortobagyi_section4() -> MechanismEntry:
+    """Hortobágyi section 4 in the folded state (l = 1): joints 1, 2 free, 3 at the origin and
+    4 at (l, 0) fixed; bars b1 = 1–2, b2 = 3–1, b3 = 4–2.  Joint 1 lies on top of joint 4.
+    The paper: B is 3 × 4 with ρ(B) = 2 here (3 after a step)."""
+    return _entry("mech_hortobagyi_sec4", "Hortobágyi (1999) section 4, folded state",
+                  [[1, 0], [2, 0], [0, 0], [1, 0]], [[0, 1], [2, 0], [3, 1]],
+                  {2: "xy", 3: "xy"}, (2, 2, 0, 1),
+                  "Hortobágyi (1999) section 4: rho(B) = 2 at the folded state", "1:y", -0.1)
+
+
+def fourbar(theta: float = 0.1) -> MechanismEntry:
+    """Crank-rocker four-bar: ground 3, crank 1, coupler 3.2, rocker 2.6 (Grashof)."""
+    from ..kinematics.reproductions import fourbar_position
+    B, C = fourbar_position(theta)
+    return _entry("mech_fourbar", "Four-bar linkage (crank-rocker)",
+                  [[0, 0], B, C, [3, 0]], [[0, 1], [1, 2], [3, 2]], {0: "xy", 3: "xy"},
+                  (3, 1, 0, 0), "Gruebler: 2·2 − 3 = 1 degree of freedom", "2:y", 0.02)
+
+
+def slider_crank(theta: float = 0.3) -> MechanismEntry:
+    """Slider-crank as a bar assembly: crank 1, rod 3, slider joint on a roller (y fixed)."""
+    x = np.cos(theta) + np.sqrt(9 - np.sin(theta) ** 2)
+    return _entry("mech_slider_crank", "Slider-crank as a bar assembly",
+                  [[0, 0], [np.cos(theta), np.sin(theta)], [x, 0]], [[0, 1], [1, 2]],
+                  {0: "xy", 2: "y"}, (2, 1, 0, 0), "3 coordinates − 2 bars = 1", "2:y", 0.02)
+
+
+def bricard_octahedron() -> MechanismEntry:
+    """Bricard's flexible octahedron of type 1: opposite vertices (i, i + 3) symmetric about
+    the z axis; 12 bars, 18 coordinates, six supports removing the rigid-body motions.  By
+    Cauchy–Dehn counting it would be rigid (3·6 − 6 = 12 bars); it has one finite mechanism and
+    one state of self-stress."""
+    P = np.array([[1.0, 0.2, 0.3], [0.3, 1.1, -0.2], [-0.7, 0.5, 0.6]])
+    X = np.vstack([P, P * np.array([-1.0, -1.0, 1.0])])
+    bars = [(i, j) for i in range(6) for j in range(i + 1, 6) if j != i + 3]
+    return _entry("mech_bricard", "Bricard's flexible octahedron (type 1, line-symmetric)",
+                  X, bars, {0: "xyz", 1: "yz", 2: "z"}, (11, 1, 0, 1),
+                  "Bricard (1897): flexible; rank 11 = 12 bars − 1 self-stress", "6:x", 0.02,
+                  notes="over-constrained: traced by least squares over all bars")
+
+
+def generic_octahedron() -> MechanismEntry:
+    """A convex octahedron (Cauchy: rigid), same supports as the Bricard entry."""
+    X = np.array([[1, 0, 0], [0, 1, 0], [-1, 0, 0], [0, -1, 0], [0.1, 0.1, 1], [0, 0.05, -1]],
+                 float)
+    opp = {(0, 2), (1, 3), (4, 5)}
+    bars = [(i, j) for i in range(6) for j in range(i + 1, 6) if (i, j) not in opp]
+    return _entry("mech_octahedron_rigid", "Convex octahedron (rigid)", X, bars,
+                  {0: "xyz", 1: "yz", 2: "z"}, (12, 0, 0, 0),
+                  "Cauchy (1813): convex polyhedra are rigid; 3·6 − 6 = 12 bars", "2:x", 0.02)
+
+
+#: Section 6 joints: ground G0, G1, G2 and inner joints P1..P4 folded on the x axis.
+_SEC6_X = [[0, 0], [1, 0], [1.5, 0], [1, 0], [2, 0], [3, 0], [4, 0]]
+_SEC6_BARS = [(0, 3), (1, 4), (2, 5), (3, 4), (3, 5), (4, 5), (4, 6), (5, 6)]
+
+
+def section6_foldable(remove: int | None = None) -> MechanismEntry:
+    """Hortobágyi section 6 (Figs. 4, 5, 7), a construction.
+
+    Ground joints G0 = (0, 0), G1 = (1, 0), G2 = (1.5, 0); four inner joints P1..P4 folded on
+    the x axis at 1, 2, 3, 4 (P1 on top of G1); eight bars G0–P1, G1–P2, G2–P3, P1–P2, P1–P3,
+    P2–P3, P2–P4, P3–P4.  P1..P4 stay collinear (flat triangles of bars are rigid), so the
+    assembly is a rigid coupler on three links.  Properties stated in the text and satisfied:
+
+    * eight bars, four inner joints, an infinitesimal mechanism: the inner joints cannot move
+      (links 1, 1, 1.5 on ground points 0, 1, 1.5 admit no motion of the coupler: rigid);
+    * removing a bar (G0–P1, Fig. 5, ``remove=0``; or G2–P3, Fig. 7, ``remove=2``) gives
+      μ·j − ρ(B) = 4 at the folded state and leaves a change-point four-bar (0.5 + 1.5 = 1 + 1,
+      resp. 1 + 2 = 1.5 + 1.5): one finite degree of freedom, two branches through the folded
+      state and their mirror images — four unfolding shapes.
+
+    Limitation of this construction (found by computing): the flat triangles P1–P2–P3 and
+    P2–P3–P4 stay flat during the motion, so two states of self-stress and two infinitesimal
+    flutters of P1 and P4 persist after unfolding (ρ(B) = 5, not 7); the paper's assembly,
+    whose figure is missing, becomes a full-row-rank mechanism.  The rank counts at the folded
+    state are what this entry checks; tracing its unfolding with four prescribed increments is
+    not claimed.
+    """
+    bars = list(_SEC6_BARS)
+    name, title, exp = "mech_sec6_foldable", "Hortobágyi section 6: foldable assembly", \
+        (4, 4, 0, 4)
+    if remove is not None:
+        del bars[remove]
+        fig = {0: 5, 2: 7}.get(remove, "")
+        name = f"mech_sec6_foldable_minus{remove + 1}"
+        title = f"Hortobágyi section 6, Fig. {fig}: foldable assembly with bar {remove + 1} removed"
+        exp = (4, 4, 0, 3)
+    return _entry(name, title, _SEC6_X, bars, {0: "xy", 1: "xy", 2: "xy"}, exp,
+                  "Hortobágyi (1999) section 6: mu*j - rho(B) = 4 with a bar removed", "7:y",
+                  -0.05)
+
+
+def section8_compound(flip: bool = False) -> MechanismEntry:
+    """Hortobágyi section 8 (Fig. 10), a construction: two Watt linkages joined by a bar.
+
+    Each side is a Watt straight-line linkage (rockers 1, coupler 1) whose coupler is a plate of
+    joints C1, M, C2 and E, triangulated by five bars (Vlase's construction I); the coupler
+    midpoint M traces a curve with an inflection and a vertical tangent at the symmetric state.
+    The two midpoints are joined by the horizontal connecting bar.  8 inner joints, 15 bars.
+    At the symmetric state each M moves vertically, so the connecting bar adds no first-order
+    constraint: ρ(B) = 14, μ·j − ρ(B) = 2, b − ρ(B) = 1 (as the text states); one end can move
+    down with the other fixed to first order.  To second order the connecting bar needs
+    ``(y_L − y_R)² = 4a β (y_L³ + y_R³)`` (β the cubic coefficient of the midpoint curve),
+    which has real solutions only for y ≤ 0 with this orientation: the assembly can move only
+    downward (``flip=True`` mirrors it upside down).
+    """
+    s = 1.0 if flip else -1.0
+    left = np.array([[-3, 0.5], [-2, 0.5], [-2, -0.5], [-1, -0.5], [-2, 0], [-2.3, 0]], float)
+    right = left * np.array([-1.0, 1.0])
+    left[:, 1] *= s
+    right[:, 1] *= s
+    # joints: A, C1, C2, D, M, E per side; A and D are ground
+    X = np.vstack([left, right])
+    side = [(0, 1), (2, 3), (1, 4), (4, 2), (1, 5), (5, 2), (4, 5)]
+    bars = side + [(a + 6, b + 6) for a, b in side] + [(4, 10)]
+    return _entry("mech_sec8_compound", "Hortobágyi section 8: compound mechanism", X, bars,
+                  {0: "xy", 3: "xy", 6: "xy", 9: "xy"}, (14, 2, 0, 1),
+                  "Hortobágyi (1999) section 8: mu*j - rho(B) = 2, b - rho(B) = 1", "5:y",
+                  -0.02)
+
+
+def section9_space(seed: int = 3) -> MechanismEntry:
+    """Hortobágyi section 9 (Figs. 12–14), a construction: 17 inner joints, 50 bars in space.
+
+    A change-point four-bar (ground 3, crank 1, coupler 2.5, rocker 1.5) in the plane z = 0 is
+    built from bars: each of its two moving joints P, Q is tied to two ground joints on the
+    pivot's axis (z = ±1), so it moves on a circle, and P–Q is the coupler — 2 joints, 5 bars.
+    Fifteen more joints follow, each tied by three bars to joints of the crank or the rocker
+    body (Henneberg steps, full row rank): 17 joints, 5 + 45 = 50 bars, μ·j − ρ(B) = 51 − 50 = 1.  At the four-bar's
+    flat position all bars meeting at P (and at Q) are coplanar — the bifurcation the text
+    describes; the start state is the four-bar at crank angle 150°.
+    """
+    rng = np.random.default_rng(seed)
+    theta = np.deg2rad(150.0)
+    P = np.array([np.cos(theta), np.sin(theta), 0.0])
+    D = np.array([3.0, 0.0, 0.0])
+    # Q: |Q − P| = 2.5, |Q − D| = 1.5, in the plane z = 0, on the branch through Q = (1.5, 0)
+    w = D - P
+    dist = np.linalg.norm(w)
+    u = w / dist
+    along = (2.5 ** 2 - 1.5 ** 2 + dist ** 2) / (2 * dist)
+    h = np.sqrt(2.5 ** 2 - along ** 2)
+    Q = P + along * u - h * np.array([-u[1], u[0], 0.0])
+    ground = np.array([[0, 0, 1], [0, 0, -1], [3, 0, 1], [3, 0, -1],
+                       [-1.5, 2.0, 0.0], [4.5, 2.0, 0.3], [1.5, -2.5, 0.2]], float)
+    # node order: P, Q, ground (7), then 15 new joints: 8 on the crank body {P, axis joints},
+    # 7 on the rocker body {Q, axis joints}; each is tied by three bars to joints of its body
+    # (Henneberg steps), so it turns rigidly with the crank or the rocker and never makes its
+    # own bars coplanar.
+    pts = [P, Q] + list(ground)
+    bodies = [[0, 2, 3], [1, 4, 5]]
+    centres = [np.zeros(3), np.array([3.0, 0.0, 0.0])]
+    new_bars = []
+    for k in range(15):
+        body = bodies[0] if k < 8 else bodies[1]
+        c = centres[0] if k < 8 else centres[1]
+        pick = rng.choice(np.array(body), 3, replace=False)
+        ref = pts[body[0]] - c                              # towards the moving joint
+        pts.append(c + ref * rng.uniform(0.3, 0.9) + rng.normal(0, 0.25, 3))
+        new_bars += [(int(i), len(pts) - 1) for i in pick]
+        body.append(len(pts) - 1)
+    X = np.array(pts)
+    bars = [(0, 2), (0, 3), (1, 4), (1, 5), (0, 1)] + new_bars
+    ground_idx = range(2, 9)
+    return _entry("mech_sec9_space", "Hortobágyi section 9: spatial assembly, 17 joints, 50 bars",
+                  X, bars, {i: "xyz" for i in ground_idx}, (50, 1, 0, 0),
+                  "Hortobágyi (1999) section 9: 3*17 - 50 = 1, full row rank", "1:y", -0.05)
+
+
+def square_frame() -> MechanismEntry:
+    """A pinned square of four bars on two supports: one mechanism (sway)."""
+    return _entry("mech_square", "Square frame, no diagonal (sway mechanism)",
+                  [[0, 0], [1, 0], [1, 1], [0, 1]], [[0, 3], [3, 2], [2, 1]],
+                  {0: "xy", 1: "xy"}, (3, 1, 0, 0), "4 coordinates − 3 independent bars", "3:x",
+                  0.05)
+
+
+def triangle_free() -> MechanismEntry:
+    """An unsupported triangle: three rigid-body motions, no mechanism."""
+    return _entry("mech_triangle_free", "Unsupported triangle", [[0, 0], [1, 0], [0, 1]],
+                  [[0, 1], [1, 2], [2, 0]], {}, (3, 0, 3, 0), "3·2 − 3 bars = 3 rigid-body "
+                  "motions in the plane")
+
+
+def _build() -> dict[str, MechanismEntry]:
+    entries = [hortobagyi_section4(), fourbar(), slider_crank(), bricard_octahedron(),
+               generic_octahedron(), section6_foldable(), section6_foldable(0),
+               section6_foldable(2), section8_compound(), section9_space(), square_frame(),
+               triangle_free()]
+    return {e.name: e for e in entries}
+
+
+#: Named reference assemblies.
+CATALOGUE: dict[str, MechanismEntry] = _build()
+
+
+def to_toml(entry: MechanismEntry) -> str:
+    """The entry as a trussfe model file (CONTRACT.md §1)."""
+    fmt = "{:.15g}".format
+    lines = [f"# {entry.title}", f"# expected: {entry.expected}; source: {entry.source}"]
+    if entry.drive:
+        lines.append(f"# trace: trussfe trace {entry.name}.toml --drive {entry.drive} "
+                     f"--step {entry.step:g} --steps 20")
+    lines += ["", "[model]", f'name = "{entry.name}"', f"dimension = {entry.dim}", "",
+              "[materials.aluminium]", "E = 70.0e9", "G = 26.0e9", "density = 2700.0", "",
+              "[sections.tube]", "outer_diameter = 0.02", "inner_diameter = 0.016", "",
+              "[nodes]"]
+    for nid, x in zip(entry.node_ids, entry.coords):
+        lines.append(f'"{nid}" = [{", ".join(fmt(v) for v in x)}]')
+    lines += ["", "[members]"]
+    for k, (a, b) in enumerate(entry.bars):
+        lines.append(f'b{k + 1} = {{ nodes = ["{a + 1}", "{b + 1}"], section = "tube", '
+                     'material = "aluminium" }')
+    if entry.supports:
+        lines += ["", "[supports]"]
+        for i, axes in entry.supports.items():
+            lines.append(f'"{i + 1}" = [{", ".join(repr(a).replace(chr(39), chr(34)) for a in axes)}]')
+    return "\n".join(lines) + "\n"
+
+
+def write_toml(directory: str | Path) -> list[Path]:
+    """Write every catalogue entry as ``<directory>/<name>.toml``; returns the paths."""
+    d = Path(directory)
+    d.mkdir(parents=True, exist_ok=True)
+    out = []
+    for e in CATALOGUE.values():
+        p = d / f"{e.name}.toml"
+        p.write_text(to_toml(e))
+        out.append(p)
+    return out

@@ -1,0 +1,81 @@
+# SPDX-License-Identifier: MIT
+"""Linear buckling of the co-rotational model and geometric imperfections from its modes.
+
+The linear buckling problem about the linear static state under the reference load,
+
+.. math:: (K + \\lambda K_g(N_0))\\,\\varphi = 0,
+
+uses the tangent of the co-rotational elements at the reference geometry: ``K`` with zero
+forces and ``Kg(N0)`` the change made by the linear axial forces ``N0``.  Its first load factor
+is the one at which the nonlinear path of a perfect structure meets its first bifurcation
+(up to the pre-buckling shortening), and is compared with the FE core's eigen result.
+"""
+from __future__ import annotations
+
+import numpy as np
+import scipy.linalg as sla
+import scipy.sparse as sp
+from scipy.sparse.linalg import eigsh, splu
+
+from ..errors import AnalysisError
+from .model import NonlinearModel
+
+
+def linear_buckling(model: NonlinearModel, count: int = 1):
+    """Lowest positive linear buckling load factors and their modes.
+
+    Parameters
+    ----------
+    model : NonlinearModel
+    count : int
+
+    Returns
+    -------
+    load_factors : ndarray, shape (count,)
+        Ascending positive load factors λ.
+    modes : ndarray, shape (dof, count)
+        Mode shapes (all DOFs, zero on supports), scaled to a largest translation of 1.
+    """
+    free = np.flatnonzero(model.free)
+    K = model.reference_tangent()[free][:, free]
+    try:
+        lu = splu(sp.csc_matrix(K))
+        u0 = np.zeros(model.ndof)
+        u0[free] = lu.solve(model.load[free])
+    except RuntimeError:
+        raise AnalysisError(model.structure.source or model.structure.name,
+                            "the structure is a mechanism: no linear buckling analysis") from None
+    Nt, Nb = model.linear_axial_forces(u0)
+    Kg = model.reference_tangent(Nt, Nb)[free][:, free] - K
+    n = len(free)
+    # -Kg φ = μ K φ with K positive definite; λ = 1/μ for μ > 0
+    if n <= 800:
+        mu, vec = sla.eigh(-Kg.toarray(), K.toarray())
+    else:
+        k = min(max(2 * count, count + 4), n - 2)
+        mu, vec = eigsh(-Kg.tocsc(), k=k, M=K.tocsc(), which="LA")
+    pos = mu > 1e-12 * np.abs(mu).max()
+    if not pos.any():
+        raise AnalysisError(model.structure.source or model.structure.name,
+                            "no positive buckling load factor: the load puts no member in "
+                            "compression")
+    order = np.argsort(-mu[pos])[:count]
+    lam = 1.0 / mu[pos][order]
+    modes = np.zeros((model.ndof, len(lam)))
+    modes[free] = vec[:, pos][:, order]
+    tr = model.n_points * model.dim
+    modes /= np.abs(modes[:tr]).max(axis=0)
+    return lam, modes
+
+
+def apply_imperfection(model: NonlinearModel, shape: np.ndarray, amplitude: float) -> None:
+    """Make the reference geometry imperfect: points moved by ``amplitude · shape``.
+
+    The imperfect geometry is stress-free (an initially crooked member), as in a physical
+    imperfection.  ``shape`` is a DOF vector (e.g. a buckling mode); its translations are scaled
+    so that the largest is ``amplitude`` (m).
+    """
+    tr = model.n_points * model.dim
+    d = shape[:tr].reshape(-1, model.dim)
+    model.X = model.X + amplitude * d / np.abs(d).max()
+    model.__dict__.pop("_t_len0", None)

@@ -1,0 +1,353 @@
+# SPDX-License-Identifier: MIT
+"""The geometrically nonlinear model: DOF numbering, internal forces and tangent stiffness.
+
+A :class:`NonlinearModel` turns a :class:`~trussfe.model.Structure` into co-rotational elements:
+
+* every bar member (``--bar-model truss``) is one co-rotational truss element carrying the
+  member's failure laws;
+* with ``bar_model = "pinned-beam"`` a bar becomes ``subdivisions`` co-rotational beam
+  elements whose end rotations are released (each member end owns a rotation DOF), so it can
+  buckle by bending — the Euler column of the validation suite;
+* a ``type = "beam"`` member (frame member) becomes ``subdivisions`` beam elements whose
+  unreleased ends share the joint's rotation DOF.
+
+Global DOF vector (``point`` = joints first, then the points inside subdivided members)::
+
+    u = [translations (point, dim) row-major | rotations (rotation slot,)]
+
+Beam elements are plane (2-D) only; 3-D models may hold bar members.
+"""
+from __future__ import annotations
+
+import logging
+
+import numpy as np
+
+from ..errors import AnalysisError, InputError
+from ..model.structure import Structure
+from .elements import (beam2d_local, beam2d_matrices, truss_kinematics,
+                       truss_matrices)
+from .failure import FailureLaws, axial_law, failure_margins
+
+log = logging.getLogger(__name__)
+
+BAR_MODELS = ("truss", "pinned-beam")
+
+
+class NonlinearModel:
+    """Co-rotational discretisation of a structure.
+
+    Parameters
+    ----------
+    structure : Structure
+    bar_model : {"truss", "pinned-beam"}
+        How pin-jointed bars are modelled.
+    subdivisions : int
+        Beam elements per beam (or pinned-beam) member.
+    laws : FailureLaws, optional
+        Failure laws per member (only bar members modelled as truss elements use them).
+
+    Attributes
+    ----------
+    X : ndarray, shape (point, dim)
+        Reference positions of all points (joints first).
+    free : ndarray of bool, shape (dof,)
+    load : ndarray, shape (dof,)
+        Reference load pattern ``f`` (``[loads]``), scaled by the load factor λ.
+    alive : ndarray of bool, shape (member,)
+        Members still in the structure (failed members are removed).
+    plastic : ndarray, shape (truss element,)
+        Committed plastic strain of each truss element.
+    """
+
+    def __init__(self, structure: Structure, bar_model: str = "truss",
+                 subdivisions: int = 8, laws: FailureLaws | None = None):
+        if bar_model not in BAR_MODELS:
+            raise InputError("--bar-model", f"unknown bar model {bar_model!r}; valid: "
+                                            f"{', '.join(BAR_MODELS)}")
+        if int(subdivisions) < 1:
+            raise InputError("subdivisions", f"must be at least 1, got {subdivisions}")
+        s = structure
+        self.structure = s
+        self.dim = dim = s.dim
+        self.bar_model = bar_model
+        n, m = s.n_nodes, s.n_members
+        conn = s.connectivity
+        beam_members = s.is_beam | (bar_model == "pinned-beam")
+        if dim == 3 and beam_members.any():
+            raise AnalysisError(
+                f"members.{s.member_ids[int(np.flatnonzero(beam_members)[0])]}",
+                "geometrically nonlinear beam elements are plane (2-D) only; model the 3-D "
+                "members as bars (type = \"bar\", --bar-model truss)")
+        laws = laws if laws is not None else FailureLaws.none(m)
+        bad = np.flatnonzero(beam_members & (laws.buckling > 0))
+        if bad.size:
+            raise InputError(f"failure.members.{s.member_ids[int(bad[0])]}",
+                             "a buckling law applies to bars modelled as truss elements; a "
+                             "beam (or pinned-beam) member buckles through its own bending "
+                             "stiffness — remove the buckling law or use --bar-model truss")
+        self.laws = laws
+        k = int(subdivisions)
+
+        # ---- truss elements: one per bar member
+        t_mem = np.flatnonzero(~beam_members)
+        self.t_member = t_mem
+        self.t_conn = conn[t_mem]
+        self.t_laws = laws.subset(t_mem)
+        self.t_EA = (s.E * s.area)[t_mem]
+
+        # ---- beam elements: k per beam member, points inside, rotation slots
+        b_mem = np.flatnonzero(beam_members)
+        nb = b_mem.size
+        rigid_end = np.zeros((m, 2), dtype=bool)
+        rigid_end[s.is_beam] = ~s.releases[s.is_beam]
+        joint_has_rot = np.zeros(n, dtype=bool)
+        np.logical_or.at(joint_has_rot, conn[rigid_end[:, 0], 0], True)
+        np.logical_or.at(joint_has_rot, conn[rigid_end[:, 1], 1], True)
+        joint_slot = np.full(n, -1)
+        joint_slot[joint_has_rot] = np.arange(joint_has_rot.sum())
+        nslot = int(joint_has_rot.sum())
+        # points inside each beam member: (nb, k-1)
+        inner_pts = n + np.arange(nb * (k - 1)).reshape(nb, k - 1)
+        t = (np.arange(1, k) / k)[None, :, None]
+        Xa, Xb = s.coords[conn[b_mem, 0]], s.coords[conn[b_mem, 1]]
+        X_inner = (Xa[:, None, :] * (1 - t) + Xb[:, None, :] * t).reshape(-1, dim)
+        chain = np.concatenate([conn[b_mem, :1], inner_pts, conn[b_mem, 1:]], axis=1)
+        slots = np.empty((nb, k + 1), dtype=np.int64)
+        # start and end slots: the joint's when rigid, else a slot of the member end
+        for col, end in ((0, 0), (k, 1)):
+            rigid = rigid_end[b_mem, end]
+            slots[rigid, col] = joint_slot[conn[b_mem[rigid], end]]
+            nown = int((~rigid).sum())
+            slots[~rigid, col] = nslot + np.arange(nown)
+            nslot += nown
+        slots[:, 1:k] = nslot + np.arange(nb * (k - 1)).reshape(nb, k - 1)
+        nslot += nb * (k - 1)
+        self.b_member = np.repeat(b_mem, k)
+        self.b_conn = np.stack([chain[:, :-1].ravel(), chain[:, 1:].ravel()], axis=1)
+        self.b_slot = np.stack([slots[:, :-1].ravel(), slots[:, 1:].ravel()], axis=1)
+        self.b_EA = (s.E * s.area)[self.b_member]
+        Ib = s.Iz[self.b_member] if dim == 2 else s.Iy[self.b_member]
+        if nb and not np.all(np.isfinite(Ib)):
+            i = int(self.b_member[np.flatnonzero(~np.isfinite(Ib))[0]])
+            raise InputError(f"sections.{s.sections[i].name}",
+                             f"member {s.member_ids[i]} is a beam but its section has no "
+                             "second moment of area (Iy)")
+        self.b_EI = s.E[self.b_member] * Ib
+
+        self.X = np.vstack([s.coords, X_inner]) if nb else s.coords.copy()
+        self.n_points = self.X.shape[0]
+        self.n_rot = nslot
+        self.ndof = self.n_points * dim + nslot
+        self.joint_slot = joint_slot
+        tdofs = lambda pts: (pts[:, :, None] * dim + np.arange(dim)).reshape(len(pts), 2 * dim)
+        self.t_dofs = tdofs(self.t_conn)
+        if nb:
+            bd = np.empty((len(self.b_conn), 6), dtype=np.int64)
+            bd[:, [0, 1, 3, 4]] = tdofs(self.b_conn)
+            bd[:, 2] = self.n_points * dim + self.b_slot[:, 0]
+            bd[:, 5] = self.n_points * dim + self.b_slot[:, 1]
+            self.b_dofs = bd
+        else:
+            self.b_dofs = np.zeros((0, 6), dtype=np.int64)
+
+        # ---- supports, loads
+        free = np.ones(self.ndof, dtype=bool)
+        free[: n * dim] = ~s.supports[:, :dim].ravel()
+        if dim == 2:
+            rz = s.supports[:, 2] & joint_has_rot
+            free[n * dim * 0 + self.n_points * dim + joint_slot[rz]] = False
+        # joints that no member touches carry nothing: fixed, unless loaded
+        touched = np.zeros(n, dtype=bool)
+        touched[conn.ravel()] = True
+        loose = np.flatnonzero(~touched)
+        if loose.size:
+            if np.any(s.loads[loose, :dim] != 0):
+                i = int(loose[np.flatnonzero(np.any(s.loads[loose, :dim] != 0, axis=1))[0]])
+                raise InputError(f"loads.{s.node_ids[i]}", "node is connected to no member")
+            free[(loose[:, None] * dim + np.arange(dim)).ravel()] = False
+        self.free = free
+        f = np.zeros(self.ndof)
+        f[: n * dim] = s.loads[:, :dim].ravel()
+        moments = s.loads[:, dim:]
+        if np.any(moments != 0):
+            if dim == 3:
+                i = int(np.flatnonzero(np.any(moments != 0, axis=1))[0])
+                raise InputError(f"loads.{s.node_ids[i]}", "nodal moments are not supported "
+                                                          "by the 3-D post-critical analysis")
+            bad = np.flatnonzero((moments[:, 0] != 0) & ~joint_has_rot)
+            if bad.size:
+                raise InputError(f"loads.{s.node_ids[int(bad[0])]}",
+                                 "a moment on a node that no rigid beam end connects to")
+            has = np.flatnonzero(moments[:, 0] != 0)
+            f[self.n_points * dim + joint_slot[has]] = moments[has, 0]
+        self.load = f
+        self.alive = np.ones(m, dtype=bool)
+        self.plastic = np.zeros(len(t_mem))
+        #: (cause, truss element): events already reported (each is reported once)
+        self.silenced = np.zeros((3, len(t_mem)), dtype=bool)
+
+    # ------------------------------------------------------------------ helpers
+    def positions(self, u: np.ndarray) -> np.ndarray:
+        """Current point positions, shape (point, dim)."""
+        return self.X + u[: self.n_points * self.dim].reshape(-1, self.dim)
+
+    def joint_displacements(self, u: np.ndarray) -> np.ndarray:
+        """Displacements of the structure's nodes, shape (node, dim)."""
+        n = self.structure.n_nodes
+        return u[: n * self.dim].reshape(n, self.dim)
+
+    def dof(self, node: int, axis: int) -> int:
+        """Global DOF number of translation ``axis`` of node ``node``."""
+        return int(node) * self.dim + int(axis)
+
+    # ------------------------------------------------------------------ evaluation
+    def evaluate(self, u: np.ndarray, tangent: bool = True, plastic: np.ndarray | None = None):
+        """Internal forces (and tangent) at the displacement ``u``.
+
+        Parameters
+        ----------
+        u : ndarray, shape (dof,)
+        tangent : bool
+            Assemble the tangent stiffness too.
+        plastic : ndarray, optional
+            Plastic strains to use (default: the committed ones).
+
+        Returns
+        -------
+        dict
+            ``internal`` (dof,), ``tangent`` (sparse dof × dof or None), and per truss element
+            ``t_force``, ``t_strain``, ``t_trial``, ``t_buckling_force``; per beam element
+            ``b_force``, ``b_moment``.
+        """
+        x = self.positions(u)
+        plastic = self.plastic if plastic is None else plastic
+        out = {}
+        fs, ks, ds = [], [], []
+        # truss elements
+        l, e, strain = truss_kinematics(x, self.t_conn, self.t_len0)
+        N, dNde, trial, Nb = axial_law(self.t_laws, self.t_EA, strain, plastic)
+        live_t = self.alive[self.t_member]
+        N = np.where(live_t, N, 0.0)
+        out.update(t_force=N, t_strain=strain, t_trial=trial, t_buckling_force=Nb,
+                   t_length=l)
+        idx = np.flatnonzero(live_t)
+        if idx.size:
+            f, k = truss_matrices(e[idx], l[idx], self.t_len0[idx], N[idx], dNde[idx],
+                                  tangent)
+            fs.append(f)
+            ks.append(k)
+            ds.append(self.t_dofs[idx])
+        # beam elements
+        if len(self.b_conn):
+            rot = u[self.n_points * self.dim:][self.b_slot]
+            lb, c, s_, L0, ul, th = beam2d_local(x, self.b_conn, rot, self.X)
+            live_b = self.alive[self.b_member]
+            fb, kb, Nbm, Mb = beam2d_matrices(lb, c, s_, L0, ul, th, self.b_EA, self.b_EI)
+            out.update(b_force=np.where(live_b, Nbm, 0.0), b_moment=Mb * live_b[:, None])
+            fs.append(fb[live_b])
+            ks.append(kb[live_b])
+            ds.append(self.b_dofs[live_b])
+        F, K = _assemble_mixed(self.ndof, ds, fs, ks, tangent)
+        out["internal"] = F
+        out["tangent"] = K
+        return out
+
+    @property
+    def t_len0(self) -> np.ndarray:
+        """Reference lengths of the truss elements, shape (truss element,)."""
+        if not hasattr(self, "_t_len0"):
+            self._t_len0 = np.linalg.norm(self.X[self.t_conn[:, 1]] - self.X[self.t_conn[:, 0]],
+                                          axis=1)
+        return self._t_len0
+
+    def margins(self, res: dict) -> np.ndarray:
+        """Failure margins of the truss elements of live members, shape (3, truss element)."""
+        mg = failure_margins(self.t_laws, res["t_trial"], res["t_buckling_force"],
+                             res["t_strain"])
+        mg[:, ~self.alive[self.t_member]] = -np.inf
+        mg[self.silenced] = -np.inf
+        return mg
+
+    def commit(self, res: dict) -> None:
+        """Commit the plastic strain of a converged state (yield ``cap`` law)."""
+        y = (self.t_laws.yield_mode == 1) & self.alive[self.t_member]
+        over = y & (np.abs(res["t_buckling_force"]) > self.t_laws.yield_force)
+        if over.any():
+            N = res["t_force"][over]
+            self.plastic[over] = res["t_strain"][over] - N / self.t_EA[over]
+
+    def member_axial_forces(self, res: dict) -> np.ndarray:
+        """Axial force of every member (mean over its elements; 0 for failed members)."""
+        m = self.structure.n_members
+        out = np.zeros(m)
+        out[self.t_member] = res["t_force"]
+        if len(self.b_conn):
+            cnt = np.bincount(self.b_member, minlength=m)
+            sm = np.bincount(self.b_member, weights=res["b_force"], minlength=m)
+            has = cnt > 0
+            out[has] = sm[has] / cnt[has]
+        return np.where(self.alive, out, 0.0)
+
+    def reference_tangent(self, axial_force_t: np.ndarray | None = None,
+                          axial_force_b: np.ndarray | None = None):
+        """Tangent at the reference geometry with prescribed element axial forces.
+
+        With zero forces this is the linear stiffness ``K``; the difference made by the
+        forces is the geometric stiffness ``Kg(N)`` (linear in N).
+        """
+        x = self.X
+        ds, fs, ks = [], [], []
+        l, e, _ = truss_kinematics(x, self.t_conn, self.t_len0)
+        Nt = np.zeros(len(l)) if axial_force_t is None else axial_force_t
+        live_t = self.alive[self.t_member]
+        f, k = truss_matrices(e[live_t], l[live_t], self.t_len0[live_t], Nt[live_t],
+                              self.t_EA[live_t])
+        ds.append(self.t_dofs[live_t]); fs.append(f); ks.append(k)
+        if len(self.b_conn):
+            lb, c, s_, L0, ul, th = beam2d_local(x, self.b_conn, np.zeros_like(
+                self.b_slot, dtype=float), self.X)
+            Nb = np.zeros(len(lb)) if axial_force_b is None else axial_force_b
+            live_b = self.alive[self.b_member]
+            fb, kb, _, _ = beam2d_matrices(lb, c, s_, L0, ul, th, self.b_EA, self.b_EI,
+                                           N_override=Nb)
+            ds.append(self.b_dofs[live_b]); fs.append(fb[live_b]); ks.append(kb[live_b])
+        return _assemble_mixed(self.ndof, ds, fs, ks, True)[1]
+
+    def linear_axial_forces(self, u: np.ndarray):
+        """Element axial forces of the linearised kinematics, ``EA/L0 · eᵀ(u_b − u_a)``."""
+        d = self.dim
+        U = u[: self.n_points * d].reshape(-1, d)
+        e = (self.X[self.t_conn[:, 1]] - self.X[self.t_conn[:, 0]]) / self.t_len0[:, None]
+        Nt = self.t_EA / self.t_len0 * np.einsum("ij,ij->i", e, U[self.t_conn[:, 1]]
+                                                 - U[self.t_conn[:, 0]])
+        Nb = None
+        if len(self.b_conn):
+            D = self.X[self.b_conn[:, 1]] - self.X[self.b_conn[:, 0]]
+            L0 = np.linalg.norm(D, axis=1)
+            Nb = self.b_EA / L0 * np.einsum("ij,ij->i", D / L0[:, None],
+                                            U[self.b_conn[:, 1]] - U[self.b_conn[:, 0]])
+        return Nt, Nb
+
+
+def _assemble_mixed(ndof, ds, fs, ks, tangent):
+    """One COO assembly of element groups with different DOF counts (truss and beam)."""
+    import scipy.sparse as sp
+    F = np.zeros(ndof)
+    rows, cols, vals = [], [], []
+    for d, f, k in zip(ds, fs, ks):
+        if len(d) == 0:
+            continue
+        F += np.bincount(d.ravel(), weights=f.ravel(), minlength=ndof)
+        if tangent:
+            nd = d.shape[1]
+            rows.append(np.repeat(d, nd, axis=1).ravel())
+            cols.append(np.tile(d, (1, nd)).ravel())
+            vals.append(k.ravel())
+    if not tangent:
+        return F, None
+    if not rows:
+        return F, sp.csr_matrix((ndof, ndof))
+    K = sp.coo_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
+                      shape=(ndof, ndof)).tocsr()
+    return F, K

@@ -1,0 +1,760 @@
+# SPDX-License-Identifier: MIT
+"""Path following with member failure: load, displacement and arc-length control.
+
+One function, :func:`follow_path`, follows the equilibrium path ``f_int(u) = λ f`` of a
+:class:`~trussfe.nonlinear.model.NonlinearModel` under the reference load pattern ``f``:
+
+* **load control** — Newton at prescribed λ (stops at a limit point);
+* **displacement control** — one monitored displacement prescribed, λ unknown (passes load
+  limit points, not displacement snap-back);
+* **arc-length** (Crisfield's cylindrical constraint ``‖Δu‖ = Δs``) — passes limit points,
+  snap-through and snap-back.
+
+Along the path it
+
+* counts the negative pivots of the tangent (:func:`~trussfe.nonlinear.solvers.factorize`);
+  a change brackets a critical point, located by bisection of the step and classified by its
+  eigenvector φ: a **limit point** when ``φᵀf ≠ 0``, a **bifurcation** when ``φᵀf = 0``
+  (optionally the path branches along φ);
+* locates every member failure event (the step is cut so that the member's force equals the
+  failure law's threshold to ``event_tolerance``), applies it (a removed member leaves the
+  structure, which is re-equilibrated at the same λ; members overloaded by the redistribution
+  fail in turn at that λ), and re-checks the rank of the compatibility matrix;
+* when the assembly has become a mechanism, hands over to the finite-mechanism motion
+  (:func:`~trussfe.nonlinear.mechanism.equilibrium_form`).
+"""
+from __future__ import annotations
+
+import logging
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import InputError, MechanismError
+from .mechanism import MechanismMotion, equilibrium_form, mechanism_count
+from .model import NonlinearModel
+from .solvers import SingularTangent, critical_mode, factorize
+
+log = logging.getLogger(__name__)
+
+CONTROLS = ("load", "displacement", "arc-length")
+_CAUSE = ("buckling", "yield", "fracture")
+#: |φᵀf|/(|φ||f|) below which a critical point is a bifurcation (φ orthogonal to the load).
+_BIFURCATION_RATIO = 1e-3
+#: A load- or displacement-controlled step whose converged increment exceeds this multiple of
+#: the tangent predictor has jumped to a remote equilibrium: it is cut.
+_JUMP_FACTOR = 5.0
+#: Newton iterations per step that the step-size control aims at.
+_TARGET_ITERATIONS = 6.0
+
+
+@dataclass
+class PathPoint:
+    """One equilibrium state on the path.
+
+    Attributes
+    ----------
+    load_factor : float
+    u : ndarray, shape (dof,)
+        Displacements (all DOFs of the model).
+    forces : ndarray, shape (member,)
+        Member axial forces, N.
+    alive : ndarray of bool, shape (member,)
+    negative : int
+        Negative eigenvalues of the tangent (−1 if unknown).
+    stage : str
+        ``"equilibrium"`` or ``"mechanism"`` (rigid-bar motion after the hand-over).
+    """
+
+    load_factor: float
+    u: np.ndarray
+    forces: np.ndarray
+    alive: np.ndarray
+    negative: int = -1
+    stage: str = "equilibrium"
+
+
+@dataclass
+class Event:
+    """An event on the path: a member failure, a critical point or the mechanism hand-over."""
+
+    kind: str
+    load_factor: float
+    member: int | None = None
+    point: int = -1
+    force: float = np.nan
+    threshold: float = np.nan
+    detail: str = ""
+
+
+@dataclass
+class PathResult:
+    """Result of :func:`follow_path`."""
+
+    model: NonlinearModel
+    path: list = field(default_factory=list)
+    events: list = field(default_factory=list)
+    termination: str = ""
+    mechanism: MechanismMotion | None = None
+    monitor: int = -1
+
+    @property
+    def load_factors(self) -> np.ndarray:
+        """Load factor of every path point, shape (point,)."""
+        return np.array([p.load_factor for p in self.path])
+
+    def displacement(self, dof: int | None = None) -> np.ndarray:
+        """Displacement of one DOF (default: the monitored one) along the path."""
+        d = self.monitor if dof is None else dof
+        return np.array([p.u[d] for p in self.path])
+
+
+class _Stepper:
+    """Predictor–corrector steps from a converged state (private to :func:`follow_path`)."""
+
+    def __init__(self, model: NonlinearModel, control: str, monitor: int, tol: float,
+                 max_iter: int):
+        self.m = model
+        self.control = control
+        self.free = np.flatnonzero(model.free)
+        self.f = model.load[self.free]
+        self.fn = np.linalg.norm(self.f)
+        self.c = int(np.searchsorted(self.free, monitor)) if monitor >= 0 else -1
+        self.tol = tol
+        self.max_iter = max_iter
+        self.lam_unit = 1.0
+        self.size = float(np.ptp(model.X, axis=0).max())
+        #: displacement control moves the monitored DOF the way the load first pushes it
+        self.dsign = 1.0
+        #: free DOFs up to which every Newton iteration refactorises the tangent
+        self.full_newton_size = 2000
+
+    def full(self, uf):
+        u = np.zeros(self.m.ndof)
+        u[self.free] = uf
+        return u
+
+    def eval(self, uf, tangent=True):
+        res = self.m.evaluate(self.full(uf), tangent=tangent)
+        K = res["tangent"][self.free][:, self.free] if tangent else None
+        return res, res["internal"][self.free], K
+
+    def step(self, uf0, lam0, fac0, ds, direction, du_prev, mode=None):
+        """One step of size ``ds``; returns (uf, lam, res, iterations) or None."""
+        mode = mode or self.control
+        f = self.f
+        try:
+            ut = fac0.solve(f)
+        except SingularTangent:
+            return None
+        if mode == "load":
+            dlam = ds
+            du = dlam * ut
+        elif mode == "displacement":
+            if abs(ut[self.c]) < 1e-300:
+                return None
+            dlam = ds * self.dsign / ut[self.c]
+            du = dlam * ut
+        elif mode == "branch":
+            du = ds * direction
+            dlam = 0.0
+            mode = "arc-length"
+        else:
+            sign = 1.0
+            if du_prev is not None:
+                sign = 1.0 if du_prev @ ut >= 0.0 else -1.0
+            elif direction is not None:
+                sign = float(direction)
+            dlam = sign * ds / np.linalg.norm(ut)
+            du = dlam * ut
+        ds_arc = np.linalg.norm(du)
+        # load and displacement control may converge to a remote equilibrium beyond a limit
+        # point (a dynamic snap); such a step is refused (and cut) rather than followed
+        jump = _JUMP_FACTOR * max(ds_arc, 1e-12 * self.size) if mode in ("load",
+                                                                         "displacement") \
+            else np.inf
+        # full Newton on small systems; on large ones modified Newton: the tangent is
+        # refactorised only when the residual stops falling fast (ratio > 0.5)
+        modified = len(uf0) > self.full_newton_size
+        fac, dt_fac, rprev, fresh = fac0, ut, np.inf, None
+        for it in range(1, self.max_iter + 1):
+            uf = uf0 + du
+            lam = lam0 + dlam
+            res, fint, K = self.eval(uf, tangent=not modified)
+            R = fint - lam * f
+            scale = self.fn * max(abs(lam), self.lam_unit)
+            if not np.all(np.isfinite(R)):
+                return None
+            rn = np.linalg.norm(R)
+            if rn <= self.tol * scale:
+                if np.linalg.norm(du) > jump:
+                    return None
+                return uf, lam, res, it, fresh
+            try:
+                if not modified or rn > 0.5 * rprev:
+                    if K is None:
+                        K = self.eval(uf)[2]
+                    fac = factorize(K)
+                    fresh = fac
+                    dt_fac = fac.solve(f)
+                rprev = rn
+                dr = -fac.solve(R)
+                dt = dt_fac
+            except SingularTangent:
+                return None
+            if mode == "load":
+                dl = 0.0
+            elif mode == "displacement":
+                dl = -dr[self.c] / dt[self.c]
+            else:
+                a = dt @ dt
+                w = du + dr
+                b = 2.0 * dt @ w
+                cc = w @ w - ds_arc ** 2
+                disc = b * b - 4 * a * cc
+                if disc < 0:
+                    return None
+                roots = ((-b + np.sqrt(disc)) / (2 * a), (-b - np.sqrt(disc)) / (2 * a))
+                dl = max(roots, key=lambda r: (w + r * dt) @ du)
+            corr = dr + dl * dt
+            du = du + corr
+            dlam += dl
+            # round-off floor of the residual: accept when the correction is negligible
+            if np.linalg.norm(corr) <= 1e-13 * (np.linalg.norm(uf0 + du) + self.size):
+                if np.linalg.norm(du) > jump:
+                    return None
+                return (uf0 + du, lam0 + dlam, self.m.evaluate(self.full(uf0 + du)), it,
+                        fresh)
+        return None
+
+
+def _mech_free(model: NonlinearModel) -> np.ndarray:
+    s = model.structure
+    return ~s.supports[:, : s.dim] & _touched(model)
+
+
+def _touched(model):
+    s = model.structure
+    t = np.zeros(s.n_nodes, dtype=bool)
+    t[s.connectivity[model.alive].ravel()] = True
+    return np.repeat(t[:, None], s.dim, axis=1) | s.supports[:, : s.dim] | (
+        s.loads[:, : s.dim] != 0)
+
+
+def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int = 100,
+                step: float | None = None, max_load_factor: float | None = None,
+                monitor: int | None = None, branch: bool = False,
+                tolerance: float = 1e-9, max_iterations: int = 30,
+                event_tolerance: float = 1e-6, locate_critical: bool = True,
+                handover: bool = True, max_cuts: int = 12,
+                branch_step: float = 0.01,
+                max_displacement: float | None = None,
+                max_failures: int | None = None) -> PathResult:
+    """Follow the equilibrium path of a structure under ``λ f``.
+
+    Parameters
+    ----------
+    model : NonlinearModel
+    control : {"load", "displacement", "arc-length"}
+    steps : int
+        Number of converged steps (events add located points).
+    step : float, optional
+        First increment: Δλ (load control), Δu of the monitored DOF (displacement control) or
+        the arc length Δs in displacement norm (arc-length).  Default: a tenth of the linear
+        response to ``max_load_factor`` (or to λ = 1).
+    max_load_factor : float, optional
+        Stop when λ exceeds it (default: no limit for displacement and arc-length control,
+        1 for load control).
+    monitor : int, optional
+        Global DOF monitored (and prescribed under displacement control); default the
+        translation with the largest reference load.
+    branch : bool
+        At a bifurcation, continue on the secondary branch along the critical eigenvector.
+    tolerance : float
+        Newton convergence: ``‖f_int − λf‖ ≤ tolerance · ‖f‖ · max(|λ|, λ₁)``.
+    max_iterations : int
+        Newton iterations per step before the step is cut.
+    event_tolerance : float
+        Failure events are located to ``|force/threshold − 1| ≤ event_tolerance``.
+    locate_critical : bool
+        Locate critical points by bisection (else report the bracketing step).
+    handover : bool
+        Hand over to the finite-mechanism motion when the bars left form a mechanism.
+    max_cuts : int
+        Halvings of a step that fails to converge before the path ends.
+    branch_step : float
+        First step on a secondary branch, as a fraction of the structure's size.
+    max_displacement : float, optional
+        Stop when the monitored displacement exceeds this magnitude, m.
+    max_failures : int, optional
+        Stop after this many member failure events.
+
+    Returns
+    -------
+    PathResult
+
+    Raises
+    ------
+    InputError
+        No load pattern, unknown control, bad step or monitor.
+    MechanismError
+        The structure is a mechanism before any load is applied.
+    """
+    if control not in CONTROLS:
+        raise InputError("--control", f"unknown control {control!r}; valid: "
+                                      f"{', '.join(CONTROLS)}")
+    if int(steps) < 1:
+        raise InputError("--steps", f"must be at least 1, got {steps}")
+    m = model
+    s = m.structure
+    free = np.flatnonzero(m.free)
+    f = m.load[free]
+    if np.linalg.norm(f) == 0.0:
+        raise InputError(f"{s.source or s.name}: [loads]",
+                         "no load pattern on a free degree of freedom: give the reference "
+                         "loads that the load factor λ scales")
+    if monitor is None:
+        fl = np.abs(m.load[: s.n_nodes * s.dim])
+        monitor = int(np.argmax(fl))
+    if not m.free[monitor]:
+        raise InputError("monitor", "the monitored displacement is a supported DOF")
+    if step is not None and not (np.isfinite(step) and step > 0):
+        raise InputError("step", f"must be a positive number, got {step}")
+    if max_load_factor is None and control == "load":
+        max_load_factor = 1.0
+    st = _Stepper(m, control, monitor, tolerance, max_iterations)
+    out = PathResult(model=m, monitor=monitor)
+
+    uf = np.zeros(free.size)
+    lam = 0.0
+    res, fint, K = st.eval(uf)
+    try:
+        fac = factorize(K)
+    except SingularTangent:
+        nm, _ = mechanism_count(s.coords, s.connectivity, _mech_free(m))
+        raise MechanismError(s.source or s.name, f"the unloaded structure is a mechanism "
+                             f"({nm} independent mechanism(s)); a post-critical analysis "
+                             "needs a stiff start — see 'trussfe mechanism'",
+                             mechanisms=nm) from None
+    ut = fac.solve(f)
+    if control == "displacement":
+        if abs(ut[st.c]) <= 1e-12 * np.abs(ut).max():
+            raise InputError("monitor", "the reference load does not move the monitored "
+                                        "displacement: choose another for displacement control")
+        st.dsign = float(np.sign(ut[st.c]))
+    lam_ref = max_load_factor if max_load_factor is not None else 1.0
+    if step is None:
+        if control == "load":
+            step = lam_ref / steps
+        elif control == "displacement":
+            step = lam_ref * abs(ut[st.c]) / 10.0
+        else:
+            step = lam_ref * np.linalg.norm(ut) / 10.0
+    st.lam_unit = abs(step / ut[st.c]) if control == "displacement" else (
+        abs(step) if control == "load" else abs(step) / np.linalg.norm(ut))
+
+    def record(uf_, lam_, res_, neg, stage="equilibrium"):
+        out.path.append(PathPoint(lam_, st.full(uf_), m.member_axial_forces(res_),
+                                  m.alive.copy(), neg, stage))
+        return len(out.path) - 1
+
+    record(uf, lam, res, fac.negative)
+    ds = float(step)
+    size = float(np.ptp(m.X, axis=0).max())
+    ds_max = abs(ds) if control == "load" else 32.0 * abs(ds)
+    du_prev = None
+    branch_dir = None
+    neg = fac.negative
+    k = 0
+    while k < steps:
+        if max_load_factor is not None and lam >= max_load_factor * (1 - 1e-12):
+            out.termination = f"reached the maximum load factor {max_load_factor:g}"
+            break
+        if max_failures is not None and sum(e.kind in _CAUSE for e in out.events) \
+                >= max_failures:
+            out.termination = f"reached {max_failures} member failure events"
+            break
+        if max_displacement is not None and abs(uf[st.c]) >= max_displacement:
+            out.termination = f"reached the maximum displacement {max_displacement:g} m"
+            break
+        dss = ds
+        if control == "load" and max_load_factor is not None:
+            dss = min(ds, max_load_factor - lam)
+        mode = "branch" if branch_dir is not None else None
+        new = None
+        for _cut in range(max_cuts + 1):
+            new = st.step(uf, lam, fac, dss, branch_dir, du_prev, mode)
+            if new is not None:
+                break
+            dss *= 0.5
+        if new is None or (control == "load" and dss < 1e-4 * abs(step)):
+            out.termination = _cannot_continue(control, lam, neg)
+            out.events.append(Event("end", lam, detail=out.termination))
+            break
+        uf1, lam1, res1, its, fac_new = new
+        # ---- member failure events inside the step: cut the step to the first one
+        mg0 = m.margins(res)
+        mg1 = m.margins(res1)
+        crossed = (mg1 > event_tolerance) & (mg0 <= event_tolerance)
+        if crossed.any():
+            located = _locate_failure(st, m, uf, lam, fac, dss, branch_dir, du_prev, mode,
+                                      mg0, uf1, lam1, res1, fac_new, event_tolerance)
+            uf1, lam1, res1, fac_new = located
+        mg1 = m.margins(res1)
+        hit = (mg1 >= -event_tolerance) & (mg0 < -event_tolerance)
+        # ---- accept the step; the factor of the last Newton iteration (one tiny correction
+        # away from the converged state) serves the next predictor and the inertia count
+        try:
+            fac1 = fac_new if fac_new is not None else factorize(st.eval(uf1)[2])
+            neg1 = fac1.negative
+        except SingularTangent:
+            fac1, neg1 = None, -1
+        if control == "load" and fac1 is not None and neg1 > neg and not hit.any():
+            # load control cannot pass a critical point: a limit point ends the path; on a
+            # bifurcation the (now unstable) fundamental path is followed
+            kind, detail, _ = _classify(st, uf1, neg, neg1)
+            out.events.append(Event(kind, lam1, point=len(out.path), detail=detail
+                                    + "; located within the last load step"))
+            if kind == "limit_point":
+                m.commit(res1)
+                record(uf1, lam1, res1, neg1)
+                out.termination = _cannot_continue(control, lam1, neg1)
+                out.events.append(Event("end", lam1, detail=out.termination))
+                break
+        if (locate_critical and fac1 is not None and neg1 != neg and not hit.any()
+                and mode != "branch" and control != "load"):
+            crit = _critical_point(st, m, out, uf, lam, fac, dss, branch_dir, du_prev, mode,
+                                   neg, neg1, record, branch)
+        else:
+            crit = None
+            if fac1 is not None and neg1 != neg and hit.any() and control != "load":
+                # a failure event changed the inertia: the critical point is the event state
+                kind, detail, _ = _classify(st, uf1, neg, neg1)
+                out.events.append(Event(kind, lam1, point=len(out.path),
+                                        detail=detail + "; at a member failure event"))
+        branch_dir = None
+        m.commit(res1)
+        if crit is not None:
+            # branch: restart from the bifurcation point along the critical eigenvector
+            u2, lam2, res2, phi = crit
+            du_prev = None
+            uf, lam, res = u2, lam2, res2
+            fac1 = factorize(st.eval(uf)[2])
+            neg1 = fac1.negative
+            branch_dir = phi if phi @ st.f >= 0 else -phi
+            ds = max(dss, branch_step * size)
+            ds_max = max(ds_max, 8.0 * ds)
+            fac, neg = fac1, neg1
+            k += 1
+            continue
+        du_prev = uf1 - uf
+        uf, lam, res = uf1, lam1, res1
+        point = record(uf, lam, res, neg1)
+        k += 1
+        # ---- apply the failure events at this state
+        if hit.any() and _apply_failures(st, m, out, hit, mg1, res, lam, point):
+            uf_new, res_new, fac_new, reason = _reequilibrate(st, m, out, uf, lam, handover,
+                                                              record)
+            if reason:
+                out.termination = reason
+                break
+            uf, res, fac1 = uf_new, res_new, fac_new
+            neg1 = fac1.negative
+        if fac1 is None:
+            out.termination = _cannot_continue(control, lam, neg)
+            out.events.append(Event("end", lam, detail=out.termination))
+            break
+        fac = fac1
+        neg = neg1
+        ds = float(np.clip(dss * np.sqrt(_TARGET_ITERATIONS / max(its, 1)),
+                           0.25 * dss, 2.0 * dss))
+        ds = min(ds, ds_max) if control != "displacement" else dss
+    else:
+        out.termination = f"completed {steps} steps"
+    if not out.termination:
+        out.termination = f"completed {k} steps"
+    log.info("path: %d points, %d events; %s", len(out.path), len(out.events),
+             out.termination)
+    return out
+
+
+def _cannot_continue(control: str, lam: float, neg: int) -> str:
+    why = "Newton iterations did not converge even with a step cut 4096 times"
+    if control == "load" and neg != 0:
+        why = ("no equilibrium at a larger load factor: the tangent stiffness has "
+               f"{neg} negative eigenvalue(s) (a limit point or unstable branch); use "
+               "--control arc-length")
+    elif control == "load":
+        why = ("no equilibrium at a larger load factor (a limit point); use "
+               "--control arc-length")
+    elif control == "displacement":
+        why += ("; the monitored displacement may turn back (snap-back); use "
+                "--control arc-length")
+    return f"path cannot be continued at load factor {lam:.6g}: {why}"
+
+
+def _locate_failure(st, m, uf, lam, fac, dss, direction, du_prev, mode, mg0, uf1, lam1, res1,
+                    fac1, tol):
+    """Cut the step so that the first member to fail sits on its threshold.
+
+    Root of ``g(θ) = max margin`` over the members that crossed within the step, θ the
+    fraction of the step: secant steps through the last two iterates, kept inside the
+    bracket (else an Illinois regula-falsi step); the state returned has ``|g| ≤ tol``.
+    """
+    mg1 = m.margins(res1)
+    cand = (mg1 > tol) & (mg0 <= tol)
+    g = lambda mg: float(np.max(mg[cand]))
+    a, ga = 0.0, g(mg0)
+    b, gb = 1.0, g(mg1)
+    best = (uf1, lam1, res1, fac1)
+    side = 0
+    hist = [(a, ga), (b, gb)]
+    for _ in range(60):
+        (c0, g0), (c1, g1) = hist[-2], hist[-1]
+        c = c1 - g1 * (c1 - c0) / (g1 - g0) if g1 != g0 else 0.5 * (a + b)
+        if not a < c < b or len(hist) == 2:
+            c = b - gb * (b - a) / (gb - ga) if gb != ga else 0.5 * (a + b)
+        if not a < c < b:
+            c = 0.5 * (a + b)
+        new = st.step(uf, lam, fac, dss * c, direction, du_prev, mode)
+        if new is None:
+            c = 0.5 * (a + b)
+            new = st.step(uf, lam, fac, dss * c, direction, du_prev, mode)
+            if new is None:
+                break
+        u2, l2, r2, _, f2 = new
+        gc = g(m.margins(r2))
+        hist.append((c, gc))
+        log.debug("locate: theta %.12g margin %.3e", c, gc)
+        if abs(gc) <= tol:
+            return u2, l2, r2, f2
+        if gc > 0:
+            b, gb, best = c, gc, (u2, l2, r2, f2)
+            if side == 1:
+                ga *= 0.5
+            side = 1
+        else:
+            a, ga = c, gc
+            if side == -1:
+                gb *= 0.5
+            side = -1
+        if b - a < 1e-14:
+            break
+    return best
+
+
+def _critical_point(st, m, out, uf, lam, fac, dss, direction, du_prev, mode, neg0, neg1,
+                    record, branch):
+    """Bisect the step for the inertia change, record a limit point or a bifurcation."""
+    lo, hi = 0.0, 1.0
+    state_hi = None
+    for _ in range(40):
+        if hi - lo < 1e-7:
+            break
+        mid = 0.5 * (lo + hi)
+        new = st.step(uf, lam, fac, dss * mid, direction, du_prev, mode)
+        if new is None:
+            break
+        try:
+            fmid = new[4] if new[4] is not None else factorize(st.eval(new[0])[2])
+        except SingularTangent:
+            state_hi = new
+            break
+        if fmid.negative == neg0:
+            lo = mid
+        else:
+            hi, state_hi = mid, new
+    if state_hi is None:
+        new = st.step(uf, lam, fac, dss * hi, direction, du_prev, mode)
+        state_hi = new
+    if state_hi is None:
+        return None
+    u2, l2, r2 = state_hi[:3]
+    kind, detail, phi = _classify(st, u2, neg0, neg1)
+    p = record(u2, l2, r2, neg1)
+    ev = Event(kind, l2, point=p, detail=detail)
+    out.events.append(ev)
+    if kind == "bifurcation" and branch:
+        ev.detail += "; branch taken along the critical eigenvector"
+        return u2, l2, r2, phi
+    return None
+
+
+def _classify(st, uf, neg0, neg1):
+    """Limit point (the critical mode does work on the load) or bifurcation (it does not)."""
+    w, phi = critical_mode(st.eval(uf)[2])
+    ratio = abs(phi @ st.f) / (np.linalg.norm(st.f) * np.linalg.norm(phi))
+    kind = "limit_point" if ratio > _BIFURCATION_RATIO else "bifurcation"
+    return kind, (f"negative eigenvalues {neg0} -> {neg1}; |phi.f|/(|phi||f|) = "
+                  f"{ratio:.2e}"), phi
+
+
+def _apply_failures(st, m, out, hit, mg, res, lam, point):
+    """Record the failure events reached at this state and remove the failed members."""
+    s = m.structure
+    removed = []
+    cause_idx, el_idx = np.nonzero(hit)
+    laws = m.t_laws
+    for c, e in zip(cause_idx, el_idx):
+        mem = int(m.t_member[e])
+        N = float(res["t_force"][e])
+        if c == 0:
+            thr = -laws.critical_load[e]
+            remove = laws.buckling[e] == 3
+        elif c == 1:
+            thr = np.sign(res["t_buckling_force"][e]) * laws.yield_force[e]
+            remove = laws.yield_mode[e] == 2
+        else:
+            thr = laws.fracture_strain[e]
+            remove = True
+        if c == 2:
+            N_show = float(res["t_strain"][e])
+        else:
+            N_show = float(res["t_trial"][e]) if remove else N
+        out.events.append(Event(_CAUSE[c], lam, mem, point, N_show, float(thr),
+                                f"member {s.member_ids[mem]}"
+                                + (" removed" if remove else " follows its law")))
+        if remove:
+            removed.append(mem)
+        m.silenced[c, e] = True          # each kind of event is reported once per member
+    for mem in removed:
+        m.alive[mem] = False
+    return removed
+
+
+def _reequilibrate(st, m, out, uf, lam, handover, record):
+    """After members were removed: rank check, equilibrium at the same λ, cascades."""
+    s = m.structure
+    for _ in range(len(m.alive) + 1):
+        conn = s.connectivity[m.alive]
+        x = m.positions(st.full(uf))[: s.n_nodes]
+        if not s.is_beam.any():
+            nm, rank = mechanism_count(x, conn, _mech_free(m))
+            if nm > 0:
+                out.events.append(Event("mechanism", lam, None, len(out.path) - 1,
+                                        detail=f"{nm} mechanism(s), rank {rank} "
+                                               f"after {int((~m.alive).sum())} member(s) "
+                                               "failed"))
+                if handover:
+                    _handover(st, m, out, x, conn, lam)
+                    return None, None, None, ("the structure became a mechanism at load factor "
+                                              f"{lam:.6g}; " + out.mechanism.reason)
+                return None, None, None, (f"the structure became a mechanism at load factor "
+                                          f"{lam:.6g}")
+        new = _release(st, uf, lam)
+        if new is None:
+            last = out.events[-1].member
+            who = s.member_ids[last] if last is not None else "?"
+            reason = (f"path cannot be continued at load factor {lam:.6g}: no equilibrium "
+                      f"after the failure of member {who} (the structure snaps: a dynamic "
+                      "collapse that a static analysis cannot follow)")
+            out.events.append(Event("end", lam, detail=reason))
+            return None, None, None, reason
+        uf, res, interrupted = new
+        m.commit(res)
+        mg = m.margins(res)
+        over = mg >= (-1e-6 if interrupted else 1e-9)
+        if not over.any():
+            fac = factorize(st.eval(uf)[2])
+            record(uf, lam, res, fac.negative)
+            return uf, res, fac, ""
+        # cascade: the most overloaded member fails now, at the same load factor
+        c, e = np.unravel_index(np.argmax(np.where(over, mg, -np.inf)), mg.shape)
+        hit = np.zeros_like(over)
+        hit[c, e] = True
+        point = record(uf, lam, res, -1)
+        _apply_failures(st, m, out, hit, mg, res, lam, point)
+        out.events[-1].detail += " (redistribution at the same load factor)"
+    return None, None, None, "too many cascading failures"
+
+
+def _release(st, uf0, lam, event_tolerance=1e-6, min_increment=1.0 / 4096):
+    """Quasi-static release of the forces of removed members at constant λ.
+
+    Just after a removal the structure is out of balance by ``r0 = f_int(u0) − λf`` (minus
+    the removed members' forces).  The equilibrium of the reduced structure is followed from
+    ``f_int(u) − λf = τ r0`` at τ = 1 (satisfied by ``u0``) to τ = 0 in load-controlled
+    increments, so that the state found is the one the structure reaches by a slow release —
+    not an arbitrary remote equilibrium that Newton from ``u0`` might jump to.  When another
+    member reaches its failure limit during the release, the release stops there (located by
+    bisection in τ to ``event_tolerance``) so that the member fails at its limit.
+
+    Returns
+    -------
+    tuple or None
+        ``(uf, res, interrupted)``, or ``None`` when no equilibrium exists for some τ (the
+        structure snaps through: a dynamic collapse).
+    """
+    m = st.m
+    res, fint, _ = st.eval(uf0, tangent=False)
+    r0 = fint - lam * st.f
+    scale = st.fn * max(abs(lam), st.lam_unit)
+    if np.linalg.norm(r0) <= st.tol * scale:
+        return uf0, m.evaluate(st.full(uf0)), False
+    mg_start = m.margins(res)
+
+    def solve(u, target):
+        for _ in range(st.max_iter):
+            r, fi, K = st.eval(u)
+            R = fi - lam * st.f - target * r0
+            if np.linalg.norm(R) <= st.tol * scale:
+                return u, r
+            try:
+                u = u - factorize(K).solve(R)
+            except SingularTangent:
+                return None
+            if not np.all(np.isfinite(u)):
+                return None
+        return None
+
+    tau, dtau, uf = 1.0, 0.25, uf0
+    while tau > 0.0:
+        target = max(tau - dtau, 0.0)
+        new = solve(uf.copy(), target)
+        if new is None:
+            dtau *= 0.5
+            if dtau < min_increment:
+                return None
+            continue
+        u, r = new
+        mg = m.margins(r)
+        crossed = (mg > event_tolerance) & (mg_start <= event_tolerance)
+        if crossed.any():
+            lo, hi, u_lo = tau, target, uf          # τ decreases from lo to hi
+            for _ in range(60):
+                mid = 0.5 * (lo + hi)
+                new = solve(u_lo.copy(), mid)
+                if new is None:
+                    break
+                um, rm = new
+                mgm = m.margins(rm)
+                cm = (mgm > event_tolerance) & (mg_start <= event_tolerance)
+                if cm.any():
+                    hi, u, r = mid, um, rm
+                else:
+                    lo, u_lo = mid, um
+                    if np.any((mgm >= -event_tolerance) & (mg_start < -event_tolerance)):
+                        return um, rm, True
+            return u, r, True
+        uf, tau, res = u, target, r
+        dtau = min(2.0 * dtau, 0.25)
+    return uf, res, False
+
+
+def _handover(st, m, out, x, conn, lam):
+    """Finite-mechanism motion of the remaining bars to the equilibrium form."""
+    s = m.structure
+    load = lam * s.loads[:, : s.dim]
+    mot = equilibrium_form(x, conn, _mech_free(m), load)
+    out.mechanism = mot
+    X = s.coords
+    forces_alive = m.alive.copy()
+    for xp in mot.positions[1:]:
+        u = np.zeros(m.ndof)
+        u[: s.n_nodes * s.dim] = (xp - X).ravel()
+        forces = np.zeros(s.n_members)
+        if mot.tensions is not None and xp is mot.positions[-1]:
+            forces[forces_alive] = mot.tensions
+        out.path.append(PathPoint(lam, u, forces, forces_alive.copy(), -1, "mechanism"))
+    out.events.append(Event("equilibrium_form" if mot.converged else "end", lam, None,
+                            len(out.path) - 1, detail=mot.reason))

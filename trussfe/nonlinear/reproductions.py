@@ -1,0 +1,303 @@
+# SPDX-License-Identifier: MIT
+"""Validation studies of the post-critical analysis, each against an independent solution.
+
+Every function returns a flat dict of numbers (and optionally ``figures``) for the validation
+suite (``validation/cases/postcritical_*.toml``) and the tests:
+
+* :func:`von_mises_truss` — the two-bar shallow truss against its closed form;
+* :func:`euler_column` — the imperfect and the perfect pin-ended column against the elastica;
+* :func:`lattice_progressive` — the lattice dome that loses bars until it is a mechanism;
+* :func:`linear_buckling_agreement` — first linear buckling load factor against the Euler load,
+  the nonlinear path's bifurcation and (when present) the FE core's eigen solution.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from scipy.optimize import brentq
+from scipy.special import ellipe, ellipk
+
+from .._resources import mesh_path
+from ..io.model_file import read_model
+from .analysis import run_postcritical
+from .buckling import linear_buckling
+from .model import NonlinearModel
+from .path import follow_path
+
+
+# ------------------------------------------------------------------------- closed forms
+def von_mises_load(v: np.ndarray, a: float, h: float, EA: float) -> np.ndarray:
+    """Apex load of the two-bar truss at the apex deflection ``v`` (downward positive).
+
+    Notes
+    -----
+    With ``w = h − v``, ``ℓ = √(a² + w²)``, ``L = √(a² + h²)`` and the engineering-strain bar
+    ``N = EA(ℓ − L)/L`` (the co-rotational truss), vertical equilibrium of the apex gives
+
+    .. math:: P(v) = 2 EA\\, w \\left(\\frac{1}{\\ell} - \\frac{1}{L}\\right)
+
+    Examples
+    --------
+    >>> float(von_mises_load(np.array([0.1]), 1.0, 0.1, 1e6)[0])   # flat: no load carried
+    0.0
+    """
+    L = math.hypot(a, h)
+    w = h - np.asarray(v, dtype=float)
+    return 2.0 * EA * w * (1.0 / np.hypot(a, w) - 1.0 / L)
+
+
+def von_mises_limit(a: float, h: float, EA: float) -> tuple[float, float]:
+    """Limit load and apex deflection of the two-bar truss (``dP/dv = 0``).
+
+    ``dP/dw = 2EA(a²/ℓ³ − 1/L) = 0`` gives ``ℓ³ = a² L``.
+
+    >>> round(von_mises_limit(1.0, 0.1, 1e6)[0], 6)
+    381.08719
+    """
+    L = math.hypot(a, h)
+    lc = (a * a * L) ** (1.0 / 3.0)
+    wc = math.sqrt(lc * lc - a * a)
+    return float(von_mises_load(h - wc, a, h, EA)), h - wc
+
+
+def elastica(load_ratio: float, length: float) -> tuple[float, float]:
+    """Mid-span deflection and end shortening of the pin-ended inextensible elastica.
+
+    Parameters
+    ----------
+    load_ratio : float
+        ``P / P_E`` (> 1).
+    length : float
+
+    Notes
+    -----
+    With ``p = sin(α/2)`` (α the end slope) and the complete elliptic integrals ``K(p)``,
+    ``E(p)``: ``P/P_E = (2K/π)²``, ``δ = pL/K``, end shortening ``L(2 − 2E/K)``
+    (Timoshenko & Gere, *Theory of Elastic Stability*, §2.7).
+
+    >>> d, s = elastica(1.0 + 1e-9, 1.0)
+    >>> bool(d < 1e-3 and s < 1e-6)
+    True
+    """
+    p = brentq(lambda p: (2.0 * ellipk(p * p) / math.pi) ** 2 - load_ratio, 1e-12,
+               1.0 - 1e-12)
+    K, E = ellipk(p * p), ellipe(p * p)
+    return p * length / K, length * (2.0 - 2.0 * E / K)
+
+
+def elastica_load_ratio(deflection_ratio: float) -> float:
+    """``P/P_E`` of the elastica whose mid-span deflection is ``δ/L`` (inverse of δ = pL/K).
+
+    ``p/K(p)`` rises monotonically to 0.401 at p = 0.8 (and peaks at about 0.4025), so
+    ``δ/L`` up to 0.4 is inverted on that bracket.
+    """
+    p = brentq(lambda p: p / ellipk(p * p) - deflection_ratio, 1e-12, 0.8)
+    return (2.0 * ellipk(p * p) / math.pi) ** 2
+
+
+# ------------------------------------------------------------------------- studies
+def von_mises_truss(steps: int = 400, step: float = 0.002) -> dict:
+    """Two-bar shallow truss (``meshes/postcritical_von_mises.toml``) against the closed form.
+
+    Returns the limit loads found on the path (located by the inertia change of the tangent),
+    the closed-form limit load, and the largest deviation of the whole arc-length path
+    (snap-through, unloading, negative branch, re-stiffening in tension) from ``P(v)``.
+    """
+    s = read_model(mesh_path("postcritical_von_mises.toml"))
+    a = float(s.coords[2, 0])
+    h = float(s.coords[1, 1])
+    EA = float(s.E[0] * s.area[0])
+    res = run_postcritical(s, steps=steps, step=step)
+    lam = res.load_factors
+    v = -res.displacement()
+    P = von_mises_load(v, a, h, EA)
+    Plim, vlim = von_mises_limit(a, h, EA)
+    limits = [e for e in res.events if e.kind == "limit_point"]
+    upper = max(limits, key=lambda e: e.load_factor)
+    lower = min(limits, key=lambda e: e.load_factor)
+    vu = -res.path[upper.point].u[res.monitor]
+    return {
+        "limit_load": float(upper.load_factor),
+        "limit_load_closed_form": Plim,
+        "limit_deflection": float(vu),
+        "limit_deflection_closed_form": vlim,
+        "lower_limit_load": float(lower.load_factor),
+        "limit_points": len(limits),
+        "path_max_error": float(np.abs(lam - P).max() / Plim),
+        "path_points": len(lam),
+        "final_deflection": float(v[-1]),
+    }
+
+
+def euler_column(subdivisions: int = 16) -> dict:
+    """Pin-ended column (``meshes/postcritical_euler_column.toml``) against the elastica.
+
+    * imperfect column (L/1000 in the first mode): load ratio ``P/P_E`` at the points where the
+      mid-span deflection is 0.1 L … 0.4 L, against the elastica at the same deflection;
+    * perfect column with branching: the bifurcation load against the extensible-column value
+      ``P_E (1 + P_E/EA)`` (the shortening before buckling raises it slightly), and the
+      secondary branch against the elastica.
+    """
+    s = read_model(mesh_path("postcritical_euler_column.toml"))
+    L = float(s.lengths()[0])
+    Pe = math.pi ** 2 * float(s.E[0] * s.Iz[0]) / L ** 2
+    ratio_ref = -float(s.loads[1, 1]) / Pe              # reference load / P_E (= 1)
+    out = {"reference_over_euler": ratio_ref}
+    k = subdivisions
+    res = run_postcritical(s, subdivisions=k, steps=200)
+    m = res.model
+    mid = m.dof(s.n_nodes + k // 2 - 1, 0)               # mid-span point, lateral
+    d = np.abs(res.displacement(mid)) / L
+    lam = res.load_factors * ratio_ref
+    for target in (0.1, 0.2, 0.3):
+        if d.max() < target:
+            continue
+        lam_at = float(np.interp(target, d, lam))      # d grows monotonically here
+        out[f"imperfect_load_ratio_at_{int(target * 10)}"] = lam_at
+        out[f"elastica_load_ratio_at_{int(target * 10)}"] = elastica_load_ratio(target)
+    # perfect column, branch at the bifurcation
+    perfect = NonlinearModel(s, bar_model="pinned-beam", subdivisions=k)
+    EA = float(s.E[0] * s.area[0])
+    pres = follow_path(perfect, "arc-length", steps=60, max_load_factor=1.6, branch=True,
+                       monitor=perfect.dof(1, 1))
+    bif = [e for e in pres.events if e.kind == "bifurcation"]
+    out["bifurcation_load_ratio"] = float(bif[0].load_factor * ratio_ref) if bif else math.nan
+    out["extensible_euler_ratio"] = 1.0 + Pe / EA
+    lf, _ = linear_buckling(perfect, count=1)
+    out["linear_buckling_ratio"] = float(lf[0] * ratio_ref)
+    d = np.abs(pres.displacement(mid)) / L
+    lam = pres.load_factors * ratio_ref
+    on = (d > 0.15) & (d < 0.4)
+    if on.any():
+        ref = np.array([elastica_load_ratio(x) for x in d[on]])
+        out["branch_max_error"] = float(np.abs(lam[on] / ref - 1.0).max())
+        out["branch_max_deflection"] = float(d.max())
+    return out
+
+
+def lattice_progressive() -> dict:
+    """The lattice dome (``meshes/postcritical_dome.toml``) loses apex bars until it becomes a
+    mechanism; checks that every event is justified and that the equilibrium form is the one
+    the kinematics predicts.
+
+    The four-bar loss leaves the apex hanging from two bars (A4, A6) whose far ends are held
+    by the stiff ring: a pendulum about the axis through R4 and R6.  Under a vertical dead load
+    its equilibrium form is the lowest point of the circle the apex can describe: the apex
+    straight below that axis.
+    """
+    s = read_model(mesh_path("postcritical_dome.toml"))
+    res = run_postcritical(s)
+    out = {}
+    fails = [e for e in res.events if e.kind in ("buckling", "yield", "fracture")]
+    out["failures"] = len(fails)
+    out["failures_by_redistribution"] = sum("redistribution" in e.detail for e in fails)
+    # every event, on the path or during a redistribution at constant λ, is located where the
+    # member force equals the failure law's limit
+    out["event_force_error"] = float(max(abs(e.force / e.threshold - 1.0) for e in fails))
+    mech = [e for e in res.events if e.kind == "mechanism"]
+    out["mechanism_load_factor"] = float(mech[0].load_factor) if mech else math.nan
+    out["first_failure_load_factor"] = float(fails[0].load_factor)
+    mot = res.mechanism
+    out["equilibrium_form_found"] = float(bool(mot and mot.converged))
+    out["equilibrium_residual"] = float(mot.residual) if mot else math.nan
+    out["equilibrium_stable"] = float(bool(mot and mot.stable))
+    if mot and mot.converged:
+        alive = res.path[-1].alive
+        live_apex = [s.member_ids[i] for i in np.flatnonzero(alive) if
+                     s.member_ids[i].startswith("A")]
+        out["apex_bars_left"] = len(live_apex)
+        x0, x1 = mot.positions[0], mot.positions[-1]
+        apex = s.node_index("A")
+        ends = [s.node_index(s.node_ids[s.connectivity[s.member_index(b)][1]])
+                for b in live_apex]
+        if len(ends) == 2:
+            p, q = x0[ends[0]], x0[ends[1]]
+            axis = (q - p) / np.linalg.norm(q - p)
+            c = p + axis * ((x0[apex] - p) @ axis)
+            r = np.linalg.norm(x0[apex] - c)
+            down = np.array([0.0, 0.0, -1.0])
+            down = down - axis * (down @ axis)
+            expected = c + r * down / np.linalg.norm(down)
+            out["apex_form_error"] = float(np.linalg.norm(x1[apex] - expected) / r)
+            out["apex_form_z"] = float(x1[apex, 2])
+            out["apex_form_z_expected"] = float(expected[2])
+        t = mot.tensions
+        idx = [list(np.flatnonzero(alive)).index(s.member_index(b)) for b in live_apex]
+        out["apex_bars_in_tension"] = float(all(t[i] > 0 for i in idx))
+    return out
+
+
+def linear_buckling_agreement(subdivisions: int = 16) -> dict:
+    """First linear buckling load factor of the Euler column: co-rotational tangent, Euler
+    formula, and the FE core's eigen solver when it is installed (``trussfe.cli.cmd_buckling``).
+    """
+    s = read_model(mesh_path("postcritical_euler_column.toml"))
+    L = float(s.lengths()[0])
+    Pe = math.pi ** 2 * float(s.E[0] * s.Iz[0]) / L ** 2
+    P = -float(s.loads[1, 1])
+    m = NonlinearModel(s, bar_model="pinned-beam", subdivisions=subdivisions)
+    lf, _ = linear_buckling(m, count=2)
+    out = {"load_factor": float(lf[0]), "euler_load_factor": Pe / P,
+           "second_load_factor": float(lf[1]), "second_euler_load_factor": 4 * Pe / P}
+    try:
+        from ..cli import cmd_buckling  # noqa: F401  (FE core eigen solver)
+        doc = cmd_buckling.analyse(str(mesh_path("postcritical_euler_column.toml")),
+                                   bar_model="pinned-beam", subdivisions=subdivisions)
+        out["fe_core_load_factor"] = float(doc["load_factors"][0])
+    except Exception:  # not installed yet: the comparison is skipped, not faked
+        pass
+    return out
+
+
+# ------------------------------------------------------------------------- large lattice
+def double_layer_grid(n: int, spacing: float = 1.0, depth: float = 0.7,
+                      load: float = -1000.0, spread: float = 0.1, seed: int = 0,
+                      law: str = "cap"):
+    """Square-on-square double-layer grid with buckling laws on its chords.
+
+    ``n × n`` top nodes (pinned along the perimeter, each loaded by ``load`` N vertically),
+    ``(n−1)²`` bottom nodes offset by half a bay, top and bottom chords and four diagonals
+    per bottom node: ``2n(n−1) + 2(n−1)(n−2) + 4(n−1)²`` bars (9800 for n = 36).  Every bar
+    has a buckling law (``law``) with its Euler load scaled by a random factor in
+    ``1 ± spread`` (seeded), so that members fail one at a time.
+
+    Returns
+    -------
+    structure : Structure
+    laws : FailureLaws
+    """
+    from ..model.sections import Material, Section
+    from ..model.structure import build_structure
+    from .failure import BUCKLING, FailureLaws
+    i, j = np.meshgrid(np.arange(n), np.arange(n), indexing="ij")
+    top = np.stack([i.ravel() * spacing, j.ravel() * spacing, np.zeros(n * n)], axis=1)
+    k, l = np.meshgrid(np.arange(n - 1), np.arange(n - 1), indexing="ij")
+    bot = np.stack([(k.ravel() + 0.5) * spacing, (l.ravel() + 0.5) * spacing,
+                    np.full((n - 1) ** 2, -depth)], axis=1)
+    T = (i * n + j)                                        # top node numbers (n, n)
+    Bn = n * n + (k * (n - 1) + l)                         # bottom node numbers (n-1, n-1)
+    bars = [np.stack([T[:-1, :].ravel(), T[1:, :].ravel()], 1),
+            np.stack([T[:, :-1].ravel(), T[:, 1:].ravel()], 1),
+            np.stack([Bn[:-1, :].ravel(), Bn[1:, :].ravel()], 1),
+            np.stack([Bn[:, :-1].ravel(), Bn[:, 1:].ravel()], 1)]
+    for di in (0, 1):
+        for dj in (0, 1):
+            bars.append(np.stack([Bn.ravel(), T[di:n - 1 + di, dj:n - 1 + dj].ravel()], 1))
+    conn = np.concatenate(bars)
+    edge = (i == 0) | (j == 0) | (i == n - 1) | (j == n - 1)
+    s = build_structure(np.vstack([top, bot]), conn,
+                        section=Section.tube("tube", 0.04, 0.036),
+                        material=Material(name="steel", E=2.1e11, G=8.1e10, density=7850.0,
+                                          yield_strength=3.55e8),
+                        name=f"double-layer grid {n}x{n}")
+    s.supports[np.flatnonzero(edge.ravel()), :3] = True
+    s.loads[np.flatnonzero(~edge.ravel()), 2] = load
+    m = s.n_members
+    rng = np.random.default_rng(seed)
+    laws = FailureLaws.none(m)
+    laws.buckling[:] = BUCKLING.index(law)
+    L = s.lengths()
+    laws.critical_load[:] = (math.pi ** 2 * s.E * s.Iy / L ** 2
+                             * (1.0 + spread * (2 * rng.random(m) - 1)))
+    return s, laws

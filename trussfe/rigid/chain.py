@@ -1,0 +1,420 @@
+# SPDX-License-Identifier: MIT
+"""Multi-bay chains analysed bay by bay (Lacy chapter 6), as a cross-check of the direct analysis.
+
+Lacy describes, but never implemented, the kinematics of a chain of double-octahedral bays in
+bay-fixed frames: bay n's base plane is bay n−1's top plane, so each bay is solved alone in a
+frame attached to its base and carried up the chain (eqs. 6.1–6.14):
+
+.. math::
+
+   x_i &= o_n + R_n p_i,                                                  \\\\
+   v_i &= \\dot o_n + \\omega_n \\times R_n p_i + R_n \\dot p_i,               \\\\
+   a_i &= \\ddot o_n + \\alpha_n \\times R_n p_i
+          + \\omega_n \\times (\\omega_n \\times R_n p_i)
+          + 2 \\omega_n \\times R_n \\dot p_i + R_n \\ddot p_i ,
+
+with p, ṗ, p̈ the node position, velocity and acceleration of the bay alone (base fixed) and
+o_n the centroid of bay n−1's top plane (eqs. 6.2, 6.6, 6.8, 6.13).  Here the frame's rotation
+R_n, angular velocity ω_n and angular acceleration α_n are computed directly from the
+Newtonian positions, velocities and accelerations of the three top-plane nodes of bay n−1 (a
+rigid triangle: ``J ω = Σ r_i × (v_i − v_o)``, ``J = Σ (|r_i|² I − r_i r_iᵀ)``), not by
+Lacy's sums of relative rotations.  Two of those need care: eq. 6.5, ``C^{bn/N} =
+(C^{b2/N})^{n−1}``, holds only while every bay has the same configuration, and eq. 6.14 sums
+relative angular accelerations, which omits the terms ``ω_{k−1} × ω_{k/k−1}`` (the derivative
+of a relative angular velocity seen from a rotating frame); it is exact only when successive
+bays turn about parallel axes.  :func:`thesis_angular_acceleration` evaluates eq. 6.14 so the
+difference can be shown.
+
+Bay-local kinematics (:func:`bay_kinematics`) use the forward-position solver and the
+compatibility matrix of the bay: ``B ṗ = L̇``, ``B p̈ = L̈ − (|ṗ_b − ṗ_a|² − L̇²)/L``
+(DESIGN.md), exact, batched over time steps.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import AnalysisError
+from ..kinematics.assembly import solve_positions
+from ..model.structure import Structure, build_structure
+from .active import ActiveMember, active_members
+
+#: Bay template nodes: base N1–N3 (0–2), midplane N4–N6 (3–5), top N7–N9 (6–8).  The top
+#: plane is the mirror image of the base in the midplane, N7 over N1, N9 over N2, N8 over N3,
+#: so the next bay's base (N1, N2, N3) is this bay's (N7, N9, N8).
+TOP_AS_NEXT_BASE = (6, 8, 7)
+
+
+@dataclass
+class BayFrames:
+    """Frames attached to the base plane of every bay, arrays (nt, n_bays, ...).
+
+    Attributes
+    ----------
+    origin, origin_velocity, origin_acceleration : ndarray, shape (nt, nb, 3)
+        Base-plane centroid o_n and its rates.
+    rotation : ndarray, shape (nt, nb, 3, 3)
+        R_n: columns are the frame's unit vectors in Newtonian coordinates.
+    omega, alpha : ndarray, shape (nt, nb, 3)
+        Angular velocity and acceleration of the frame (Newtonian components).
+    """
+
+    origin: np.ndarray
+    origin_velocity: np.ndarray
+    origin_acceleration: np.ndarray
+    rotation: np.ndarray
+    omega: np.ndarray
+    alpha: np.ndarray
+
+
+@dataclass
+class ChainKinematics:
+    """Kinematics of the chain, nodes numbered as :func:`stack_bays`.
+
+    Attributes
+    ----------
+    coords, velocity, acceleration : ndarray, shape (nt, n_nodes, 3)
+    frames : BayFrames
+    """
+
+    coords: np.ndarray
+    velocity: np.ndarray
+    acceleration: np.ndarray
+    frames: BayFrames
+
+
+def triangle_frame(x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Origin and rotation of the frame of triangles ``x`` (..., 3 nodes, 3).
+
+    Origin at the centroid (Lacy eq. 6.2), e1 along node 0 → 1, e3 normal (right-handed in the
+    node order), e2 = e3 × e1.
+
+    Examples
+    --------
+    >>> o, R = triangle_frame(np.array([[0., 0, 0], [1, 0, 0], [0, 1, 0]]))
+    >>> np.round(o, 4).tolist(), np.allclose(R, np.eye(3))
+    ([0.3333, 0.3333, 0.0], True)
+    """
+    o = x.mean(axis=-2)
+    u = x[..., 1, :] - x[..., 0, :]
+    w = np.cross(u, x[..., 2, :] - x[..., 0, :])
+    e1 = u / np.linalg.norm(u, axis=-1, keepdims=True)
+    e3 = w / np.linalg.norm(w, axis=-1, keepdims=True)
+    e2 = np.cross(e3, e1)
+    return o, np.stack([e1, e2, e3], axis=-1)
+
+
+def rigid_rates(x: np.ndarray, v: np.ndarray, a: np.ndarray) -> tuple[np.ndarray, ...]:
+    """Centroid velocity/acceleration, angular velocity and acceleration of rigid triangles.
+
+    Parameters
+    ----------
+    x, v, a : ndarray, shape (..., 3 nodes, 3)
+        Node positions, velocities, accelerations of a rigid body.
+
+    Returns
+    -------
+    vo, ao, omega, alpha : ndarray, shape (..., 3)
+
+    Notes
+    -----
+    With r_i = x_i − o: ``Σ r_i × (v_i − v_o) = J ω`` and
+    ``Σ r_i × (a_i − a_o − ω × (ω × r_i)) = J α``, ``J = Σ (|r_i|² I − r_i r_iᵀ)``, exact for a
+    rigid motion of three non-collinear points.
+    """
+    o = x.mean(axis=-2, keepdims=True)
+    r = x - o
+    vo = v.mean(axis=-2)
+    ao = a.mean(axis=-2)
+    rr = np.einsum("...ik,...ik->...", r, r)
+    J = rr[..., None, None] * np.eye(3) - np.einsum("...ij,...ik->...jk", r, r)
+    h = np.cross(r, v - vo[..., None, :]).sum(axis=-2)
+    omega = np.linalg.solve(J, h[..., None])[..., 0]
+    cen = np.cross(omega[..., None, :], np.cross(omega[..., None, :], r))
+    g = np.cross(r, a - ao[..., None, :] - cen).sum(axis=-2)
+    alpha = np.linalg.solve(J, g[..., None])[..., 0]
+    return vo, ao, omega, alpha
+
+
+def bay_kinematics(bay: Structure, lengths: np.ndarray, rates: np.ndarray, accs: np.ndarray,
+                   coords0: np.ndarray | None = None, item: str = "bay"
+                   ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Node positions, velocities, accelerations of one bay alone (base fixed), exact.
+
+    Parameters
+    ----------
+    bay : Structure
+        The bay (three supported base nodes, three active members).
+    lengths, rates, accs : ndarray, shape (nt, n_active)
+        Active lengths, L̇, L̈ (columns in the order of the bay's active members).
+    coords0 : ndarray, optional
+        Starting guess for the first step (default the bay's coordinates).
+
+    Returns
+    -------
+    p, pd, pdd : ndarray, shape (nt, n_nodes, 3)
+    """
+    acts = np.array([a.member for a in active_members(bay)], dtype=np.int64)
+    nt = lengths.shape[0]
+    conn = bay.connectivity
+    fixed = bay.translation_supports
+    free = ~fixed
+    m, n = conn.shape[0], bay.n_nodes
+    L = np.broadcast_to(bay.lengths(), (nt, m)).copy()
+    L[:, acts] = lengths
+    Ld = np.zeros((nt, m))
+    Ld[:, acts] = rates
+    Ldd = np.zeros((nt, m))
+    Ldd[:, acts] = accs
+    X = np.empty((nt, n, 3))
+    x = bay.coords if coords0 is None else coords0
+    for k in range(nt):                 # warm-started Newton, one step after another
+        x = solve_positions(x, conn, L[k], fixed, member_ids=bay.member_ids,
+                            item=f"{item}: step {k}").coords
+        X[k] = x
+    d = X[:, conn[:, 1]] - X[:, conn[:, 0]]                       # (nt, m, 3)
+    e = d / np.linalg.norm(d, axis=2, keepdims=True)
+    # Dense B on all coordinates, (nt, m, n*3), then the free columns.
+    B = np.zeros((nt, m, n, 3))
+    rows = np.arange(m)
+    B[:, rows, conn[:, 1]] += e
+    B[:, rows, conn[:, 0]] -= e
+    cols = np.flatnonzero(free.ravel())
+    Bf = B.reshape(nt, m, n * 3)[:, :, cols]
+    if Bf.shape[1] != Bf.shape[2]:
+        raise AnalysisError(item, "the bay is not statically determinate "
+                            f"({m} members, {cols.size} free coordinates)")
+    cond = np.linalg.cond(Bf)
+    if np.any(cond > 1e12):
+        k = int(np.argmax(cond > 1e12))
+        raise AnalysisError(f"{item}: step {k}", "the bay passes a singular position")
+    V = np.zeros((nt, n * 3))
+    V[:, cols] = np.linalg.solve(Bf, Ld[..., None])[..., 0]
+    V = V.reshape(nt, n, 3)
+    vrel = V[:, conn[:, 1]] - V[:, conn[:, 0]]
+    rhs = Ldd - (np.einsum("tmk,tmk->tm", vrel, vrel) - Ld ** 2) / L
+    A = np.zeros((nt, n * 3))
+    A[:, cols] = np.linalg.solve(Bf, rhs[..., None])[..., 0]
+    return X, V, A.reshape(nt, n, 3)
+
+
+def stack_bays(bay: Structure, n_bays: int) -> Structure:
+    """A chain of ``n_bays`` copies of ``bay`` stacked top plane to base (Lacy Fig. 6.1).
+
+    Nodes: the three base nodes, then six per bay (midplane N4–N6, top N7–N9) with ids
+    ``N4.k`` … ``N9.k`` (k = 1…n); members ``<id>.k``; active members carry the bay's data.
+    Each bay is placed with :func:`triangle_frame` of the previous top plane, so a bay that is
+    not at a symmetric position stacks as its rigid copy.
+    """
+    if n_bays < 1:
+        raise AnalysisError("n_bays", f"must be at least 1, got {n_bays}")
+    x = bay.coords
+    o_b, R_b = triangle_frame(x[:3])
+    local = (x - o_b) @ R_b                                       # template in its base frame
+    coords = [x[:3]]
+    node_ids = list(bay.node_ids[:3])
+    base_idx = np.array([0, 1, 2])
+    conn, mids = [], []
+    for k in range(1, n_bays + 1):
+        o, R = triangle_frame(np.vstack(coords)[base_idx])
+        new = o + local[3:] @ R.T
+        start = sum(c.shape[0] for c in coords)
+        coords.append(new)
+        node_ids += [f"{nid}.{k}" for nid in bay.node_ids[3:]]
+        idx = np.concatenate([base_idx, start + np.arange(6)])
+        conn.append(idx[bay.connectivity])
+        mids += [f"{mid}.{k}" for mid in bay.member_ids]
+        base_idx = idx[list(TOP_AS_NEXT_BASE)]
+    X = np.vstack(coords)
+    s = build_structure(X, np.vstack(conn), section=bay.sections[0], material=bay.materials[0],
+                        supports={i: "xyz" for i in range(3)}, node_ids=node_ids,
+                        member_ids=mids, name=f"{n_bays}-bay chain of {bay.name}")
+    m = bay.n_members
+    s.extensions["active_members"] = [
+        ActiveMember(member=a.member + k * m, base_mass=a.base_mass, base_length=a.base_length,
+                     base_cg=a.base_cg, base_inertia=a.base_inertia, tube_length=a.tube_length)
+        for k in range(n_bays) for a in active_members(bay)]
+    return s
+
+
+def chain_kinematics(bay: Structure, lengths: np.ndarray, rates: np.ndarray,
+                     accs: np.ndarray) -> ChainKinematics:
+    """Kinematics of a stacked chain, bay by bay in bay-fixed frames (Lacy eqs. 6.1–6.13).
+
+    Parameters
+    ----------
+    bay : Structure
+        The bay template (as passed to :func:`stack_bays`).
+    lengths, rates, accs : ndarray, shape (nt, n_bays, n_active)
+        Active lengths and rates of every bay (columns in the bay's active-member order).
+
+    Returns
+    -------
+    ChainKinematics
+        Nodes in the numbering of :func:`stack_bays`.
+    """
+    nt, nb, _ = lengths.shape
+    o_b, R_b = triangle_frame(bay.coords[:3])
+    n = 3 + 6 * nb
+    X = np.empty((nt, n, 3))
+    V = np.empty((nt, n, 3))
+    A = np.empty((nt, n, 3))
+    X[:, :3] = bay.coords[:3]
+    V[:, :3] = 0.0
+    A[:, :3] = 0.0
+    fr = {k: np.empty((nt, nb, 3)) for k in ("o", "vo", "ao", "w", "al")}
+    rot = np.empty((nt, nb, 3, 3))
+    base_idx = np.array([0, 1, 2])
+    x0 = bay.coords
+    for k in range(nb):
+        p, pd, pdd = bay_kinematics(bay, lengths[:, k], rates[:, k], accs[:, k], x0,
+                                    item=f"bay {k + 1}")
+        # Bay-local coordinates relative to the template's base frame.
+        p = (p - o_b) @ R_b
+        pd = pd @ R_b
+        pdd = pdd @ R_b
+        xb, vb, ab = X[:, base_idx], V[:, base_idx], A[:, base_idx]
+        o, R = triangle_frame(xb)                                    # eqs. 6.2, 6.6
+        vo, ao, w, al = rigid_rates(xb, vb, ab)                      # eqs. 6.8, 6.13
+        r = np.einsum("tij,tnj->tni", R, p[:, 3:])                   # R p, (nt, 6, 3)
+        rv = np.einsum("tij,tnj->tni", R, pd[:, 3:])
+        ra = np.einsum("tij,tnj->tni", R, pdd[:, 3:])
+        wn = w[:, None, :]
+        sl = slice(3 + 6 * k, 9 + 6 * k)
+        X[:, sl] = o[:, None, :] + r                                 # eq. 6.3
+        V[:, sl] = vo[:, None, :] + np.cross(wn, r) + rv            # eq. 6.7
+        A[:, sl] = (ao[:, None, :] + np.cross(al[:, None, :], r)    # eq. 6.11
+                    + np.cross(wn, np.cross(wn, r)) + 2 * np.cross(wn, rv) + ra)
+        fr["o"][:, k], fr["vo"][:, k], fr["ao"][:, k] = o, vo, ao
+        fr["w"][:, k], fr["al"][:, k] = w, al
+        rot[:, k] = R
+        top = np.array([3 + 6 * k + j - 3 for j in TOP_AS_NEXT_BASE])
+        base_idx = top
+        x0 = None
+    frames = BayFrames(origin=fr["o"], origin_velocity=fr["vo"], origin_acceleration=fr["ao"],
+                       rotation=rot, omega=fr["w"], alpha=fr["al"])
+    return ChainKinematics(coords=X, velocity=V, acceleration=A, frames=frames)
+
+
+def thesis_angular_acceleration(frames: BayFrames) -> np.ndarray:
+    """Angular acceleration of every bay frame by Lacy's eq. 6.14 (sum of relative ones).
+
+    The relative angular velocity of bay n's frame with respect to bay n−1's is
+    ``ω_n − ω_{n−1}`` (eq. 6.9 is exact); its rate seen from frame n−1 is
+    ``α_n − α_{n−1} − ω_{n−1} × (ω_n − ω_{n−1})``.  Summing these rates as eq. 6.14 does gives
+    ``α_n − Σ_j ω_{j−1} × (ω_j − ω_{j−1})``: the returned array, (nt, nb, 3), differs from the
+    true ``frames.alpha`` by that sum.
+    """
+    w, al = frames.omega, frames.alpha
+    wprev = np.concatenate([np.zeros_like(w[:, :1]), w[:, :-1]], axis=1)
+    alprev = np.concatenate([np.zeros_like(al[:, :1]), al[:, :-1]], axis=1)
+    rel_rate = al - alprev - np.cross(wprev, w - wprev)
+    return np.cumsum(rel_rate, axis=1)
+
+
+def kinematics_from_nodes(structure: Structure, time: np.ndarray, X: np.ndarray, V: np.ndarray,
+                          A: np.ndarray, length_rate: np.ndarray, length_acc: np.ndarray):
+    """Member kinematics (unit vectors, their rates, ω, α) from node fields (nt, n, 3).
+
+    The node fields may include moving supports (a bay's base inside a chain): ``ė = (v_b − v_a
+    − L̇ e)/L``, ``ë = (a_b − a_a − L̈ e)/L − 2 L̇ ė / L``, ``ω = e × ė``, ``α = e × ë``.
+    """
+    from .kinematics import Kinematics
+
+    conn = structure.connectivity
+    d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
+    L = np.linalg.norm(d, axis=2)
+    e = d / L[..., None]
+    vrel = V[:, conn[:, 1]] - V[:, conn[:, 0]]
+    arel = A[:, conn[:, 1]] - A[:, conn[:, 0]]
+    Ld, Ldd = length_rate[..., None], length_acc[..., None]
+    ed = (vrel - Ld * e) / L[..., None]
+    edd = (arel - Ldd * e) / L[..., None] - 2 * Ld * ed / L[..., None]
+    return Kinematics(time=np.asarray(time, dtype=float), coords=X, velocity=V, acceleration=A,
+                      length=L, length_rate=length_rate, length_acc=length_acc, unit=e,
+                      unit_rate=ed, unit_acc=edd, omega=np.cross(e, ed), alpha=np.cross(e, edd),
+                      scheme="exact")
+
+
+@dataclass
+class ChainForces:
+    """Forces of a chain found bay by bay.
+
+    Attributes
+    ----------
+    tension_end : ndarray, shape (nt, n_bays * 18)
+        Axial force at each member's end node (positive in tension), chain member order.
+    base_reactions : ndarray, shape (nt, n_bays, 3 nodes, 3)
+        Reaction on the base nodes of every bay (the force its base plane receives).
+    """
+
+    tension_end: np.ndarray
+    base_reactions: np.ndarray
+
+
+def chain_forces(bay: Structure, time: np.ndarray, lengths: np.ndarray, rates: np.ndarray,
+                 accs: np.ndarray, top_loads: np.ndarray | None = None) -> ChainForces:
+    """Nodal forces of a chain by Lacy's bay-by-bay method (chapter 6): top bay first, each
+    bay's base reactions applied, reversed, to the top plane of the bay below.
+
+    Parameters
+    ----------
+    bay : Structure
+        Bay template (its gravity is used; its loads and masses are ignored).
+    time : ndarray, shape (nt,)
+    lengths, rates, accs : ndarray, shape (nt, n_bays, n_active)
+    top_loads : ndarray, shape (3, 3), optional
+        External forces on the top bay's N7, N8, N9, N.
+
+    Returns
+    -------
+    ChainForces
+    """
+    from .forces import nodal_forces
+
+    ck = chain_kinematics(bay, lengths, rates, accs)
+    nt, nb, _ = lengths.shape
+    acts = np.array([a.member for a in active_members(bay)], dtype=np.int64)
+    m = bay.n_members
+    template = bay.copy()
+    template.masses = np.zeros_like(template.masses)
+    tension = np.empty((nt, nb * m))
+    react = np.empty((nt, nb, 3, 3))
+    idx_of = []
+    base_idx = np.array([0, 1, 2])
+    for k in range(nb):
+        idx = np.concatenate([base_idx, 3 + 6 * k + np.arange(6)])
+        idx_of.append(idx)
+        base_idx = idx[list(TOP_AS_NEXT_BASE)]
+    below = np.zeros((nt, 3, 3)) if top_loads is None else \
+        np.broadcast_to(np.asarray(top_loads, dtype=float), (nt, 3, 3)).copy()
+    for k in range(nb - 1, -1, -1):
+        idx = idx_of[k]
+        Ld = np.zeros((nt, m))
+        Ldd = np.zeros((nt, m))
+        Ld[:, acts] = rates[:, k]
+        Ldd[:, acts] = accs[:, k]
+        kin = kinematics_from_nodes(template, time, ck.coords[:, idx], ck.velocity[:, idx],
+                                    ck.acceleration[:, idx], Ld, Ldd)
+        for t in range(nt):             # loads change with time: one step at a time
+            s = template.with_coords(ck.coords[t, idx])
+            s.loads = np.zeros_like(s.loads)
+            s.loads[6:9, :3] = below[t]
+            kt = _step(kin, t)
+            f = nodal_forces(s, kt)
+            tension[t, k * m:(k + 1) * m] = f.tension_end[0]
+            react[t, k] = f.reactions[0, :3, :3]
+        # The bay below carries this bay's base: minus the reactions, on its N7, N9, N8.
+        below = np.zeros((nt, 3, 3))
+        below[:, [0, 2, 1]] = -react[:, k]
+    return ChainForces(tension_end=tension, base_reactions=react)
+
+
+def _step(kin, t: int):
+    """The kinematics of time step ``t`` alone."""
+    from dataclasses import fields, replace
+
+    arrays = {f.name: getattr(kin, f.name)[t:t + 1] for f in fields(kin)
+              if isinstance(getattr(kin, f.name), np.ndarray)}
+    return replace(kin, **arrays)

@@ -1,0 +1,240 @@
+# SPDX-License-Identifier: MIT
+"""Reading validation case files (TOML) into :class:`Case` objects, with input checks."""
+from __future__ import annotations
+
+import math
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from ..errors import InputError
+from ..io.model_file import _suggest
+
+CASE_KEYS = ("id", "title", "model", "catalogue", "parameters", "analysis", "python",
+             "options", "notes", "tags", "plot")
+QUANTITY_KEYS = ("name", "path", "reference", "source", "thesis_matlab", "thesis_mscpal",
+                 "rtol", "atol", "expect", "note")
+EXPECT = ("agree", "differ")
+
+
+@dataclass
+class Quantity:
+    """One compared number of a case.
+
+    Attributes
+    ----------
+    name : str
+        What it is, for the report.
+    path : str
+        Where it is in the result dict, e.g. ``nodes.N1.reaction[0]``.
+    reference : float
+        The value compared against.
+    source : str
+        Where the reference comes from (table and column, formula, other solver).
+    thesis_matlab, thesis_mscpal : float or None
+        Printed values shown beside it.
+    rtol, atol : float
+        Pass when ``|value − reference| ≤ atol + rtol·|reference|``.
+    expect : {"agree", "differ"}
+        ``differ`` marks a documented deviation: shown, never failed.
+    note : str
+        Short remark shown in the table.
+    """
+
+    name: str
+    path: str
+    reference: float
+    source: str = ""
+    thesis_matlab: float | None = None
+    thesis_mscpal: float | None = None
+    rtol: float = 0.0
+    atol: float = 0.0
+    expect: str = "agree"
+    note: str = ""
+
+
+@dataclass
+class Case:
+    """A validation case read from ``file``."""
+
+    id: str
+    title: str
+    file: Path
+    quantities: list[Quantity]
+    model: Path | None = None
+    catalogue: str | None = None
+    parameters: dict[str, Any] = field(default_factory=dict)
+    analysis: str | None = None
+    python: str | None = None
+    options: dict[str, Any] = field(default_factory=dict)
+    notes: str = ""
+    tags: list[str] = field(default_factory=list)
+    plot: str | None = None
+
+
+def _num(value: Any, item: str, *, nonneg: bool = False) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise InputError(item, f"expected a number, got {value!r}")
+    x = float(value)
+    if not math.isfinite(x) or (nonneg and x < 0):
+        raise InputError(item, f"expected a finite{' non-negative' if nonneg else ''} number, "
+                               f"got {value!r}")
+    return x
+
+
+def _str(value: Any, item: str) -> str:
+    if not isinstance(value, str):
+        raise InputError(item, f"expected a string, got {value!r}")
+    return value
+
+
+def _quantity(raw: Any, item: str) -> Quantity:
+    if not isinstance(raw, dict):
+        raise InputError(item, "expected a table [[quantities]]")
+    for key in raw:
+        if key not in QUANTITY_KEYS:
+            raise InputError(f"{item}.{key}", f"unknown key '{key}'{_suggest(key, QUANTITY_KEYS)}")
+    for key in ("name", "path", "reference"):
+        if key not in raw:
+            raise InputError(item, f"missing '{key}'")
+    q = Quantity(name=_str(raw["name"], f"{item}.name"), path=_str(raw["path"], f"{item}.path"),
+                 reference=_num(raw["reference"], f"{item}.reference"),
+                 source=_str(raw.get("source", ""), f"{item}.source"),
+                 note=_str(raw.get("note", ""), f"{item}.note"))
+    for key in ("thesis_matlab", "thesis_mscpal"):
+        if key in raw:
+            setattr(q, key, _num(raw[key], f"{item}.{key}"))
+    if "rtol" not in raw and "atol" not in raw:
+        raise InputError(item, "give a tolerance: rtol and/or atol")
+    q.rtol = _num(raw.get("rtol", 0.0), f"{item}.rtol", nonneg=True)
+    q.atol = _num(raw.get("atol", 0.0), f"{item}.atol", nonneg=True)
+    q.expect = _str(raw.get("expect", "agree"), f"{item}.expect")
+    if q.expect not in EXPECT:
+        raise InputError(f"{item}.expect", f"must be 'agree' or 'differ'{_suggest(q.expect, EXPECT)}")
+    return q
+
+
+def analysis_names() -> list[str]:
+    """Commands with an ``analyse(model_path, **options)`` entry point usable by a case."""
+    import importlib
+    import pkgutil
+
+    from .. import cli
+    out = []
+    for info in pkgutil.iter_modules(cli.__path__):
+        if info.name.startswith("cmd_") and info.name != "cmd_validate":
+            module = importlib.import_module(f"{cli.__name__}.{info.name}")
+            if callable(getattr(module, "analyse", None)):
+                out.append(info.name[4:])
+    return sorted(out)
+
+
+def load_case(path: str | Path) -> Case:
+    """Read one case file.
+
+    Raises
+    ------
+    InputError
+        Naming the file and the item at fault.
+    """
+    path = Path(path)
+    try:
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise InputError(str(path), "case file not found") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise InputError(str(path), f"cannot read file: {exc}") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(str(path), f"malformed TOML: {exc}") from None
+    try:
+        return _parse(data, path)
+    except InputError as err:
+        raise err.with_file(str(path)) from None
+
+
+def _parse(data: dict, path: Path) -> Case:
+    for key in data:
+        if key not in ("case", "quantities"):
+            raise InputError(f"[{key}]", f"unknown table{_suggest(key, ('case', 'quantities'))}")
+    raw = data.get("case")
+    if not isinstance(raw, dict):
+        raise InputError("[case]", "table is missing")
+    for key in raw:
+        if key not in CASE_KEYS:
+            raise InputError(f"case.{key}", f"unknown key '{key}'{_suggest(key, CASE_KEYS)}")
+    if "id" not in raw:
+        raise InputError("case", "missing 'id'")
+    case = Case(id=_str(raw["id"], "case.id"), title=_str(raw.get("title", raw["id"]), "case.title"),
+                file=path, quantities=[], notes=_str(raw.get("notes", ""), "case.notes"))
+    if ("analysis" in raw) == ("python" in raw):
+        raise InputError("case", "give exactly one of 'analysis' (a trussfe command) or "
+                                 "'python' (\"module:function\")")
+    if "python" in raw:
+        case.python = _str(raw["python"], "case.python")
+        if ":" not in case.python:
+            raise InputError("case.python", "expected \"module:function\"")
+    else:
+        case.analysis = _str(raw["analysis"], "case.analysis")
+        names = analysis_names()
+        if case.analysis not in names:
+            raise InputError("case.analysis", f"unknown analysis '{case.analysis}'"
+                                              f"{_suggest(case.analysis, names)}")
+        if ("model" in raw) == ("catalogue" in raw):
+            raise InputError("case", "an analysis case needs exactly one of 'model' (a file) "
+                                     "or 'catalogue' (a trussfe.models function)")
+    if "model" in raw:
+        case.model = (path.parent / _str(raw["model"], "case.model")).resolve()
+    if "catalogue" in raw:
+        case.catalogue = _str(raw["catalogue"], "case.catalogue")
+        from .. import models
+        if case.catalogue not in models.__all__ or not callable(getattr(models, case.catalogue)):
+            funcs = [n for n in models.__all__ if callable(getattr(models, n))]
+            raise InputError("case.catalogue", f"unknown catalogue model '{case.catalogue}'"
+                                               f"{_suggest(case.catalogue, funcs)}")
+    for key in ("parameters", "options"):
+        if key in raw:
+            if not isinstance(raw[key], dict):
+                raise InputError(f"case.{key}", "expected a table")
+            setattr(case, key, dict(raw[key]))
+    if "parameters" in raw and case.catalogue is None:
+        raise InputError("case.parameters", "parameters apply to a 'catalogue' model only")
+    if "plot" in raw:
+        if case.analysis is None:
+            raise InputError("case.plot", "plot draws the model of an 'analysis' case; a "
+                                          "python case returns its own figures")
+        case.plot = _str(raw["plot"], "case.plot")
+    tags = raw.get("tags", [])
+    if not isinstance(tags, list) or not all(isinstance(t, str) for t in tags):
+        raise InputError("case.tags", "expected a list of strings")
+    case.tags = tags
+    qs = data.get("quantities", [])
+    if not isinstance(qs, list) or not qs:
+        raise InputError("[[quantities]]", "a case needs at least one quantity")
+    case.quantities = [_quantity(q, f"quantities[{i}]") for i, q in enumerate(qs)]
+    return case
+
+
+def load_cases(folder: str | Path, ids: list[str] | None = None) -> list[Case]:
+    """All cases ``*.toml`` in ``folder`` (sorted by file name), or only those with ``ids``.
+
+    Raises
+    ------
+    InputError
+        For a bad case file, a duplicate id or an unknown requested id.
+    """
+    folder = Path(folder)
+    if not folder.is_dir():
+        raise InputError(str(folder), "validation case folder not found")
+    cases = [load_case(p) for p in sorted(folder.glob("*.toml"))]
+    seen: dict[str, Path] = {}
+    for c in cases:
+        if c.id in seen:
+            raise InputError(str(c.file), f"case id '{c.id}' is also used by {seen[c.id]}")
+        seen[c.id] = c.file
+    if ids:
+        missing = [i for i in ids if i not in seen]
+        if missing:
+            raise InputError("--case", f"unknown case '{missing[0]}'{_suggest(missing[0], seen)}")
+        cases = [c for c in cases if c.id in ids]
+    return cases

@@ -1,0 +1,269 @@
+# SPDX-License-Identifier: MIT
+"""Running validation cases: build the model, run the analysis, compare the quantities."""
+from __future__ import annotations
+
+import importlib
+import logging
+import math
+import re
+import tempfile
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from ..errors import InputError, TrussfeError
+from .cases import Case, Quantity
+
+log = logging.getLogger(__name__)
+
+_TOKEN = re.compile(r'\s*(?:"([^"]*)"|([^.\[\]"]+)|\[\s*(-?\d+)\s*\])\s*(\.)?')
+
+
+def lookup(result: Any, path: str) -> Any:
+    """The value at ``path`` in a nested dict/list result.
+
+    Path syntax: dot-separated keys, ``[i]`` list indices, keys with dots in double quotes.
+
+    Examples
+    --------
+    >>> lookup({"nodes": {"b1.N4": {"reaction": [1.0, 2.0]}}}, 'nodes."b1.N4".reaction[1]')
+    2.0
+    >>> lookup({"a": [[1, 2], [3, 4]]}, "a[1][-1]")
+    4
+    """
+    obj = result
+    pos = 0
+    text = path.strip()
+    if not text:
+        raise KeyError("empty path")
+    while pos < len(text):
+        m = _TOKEN.match(text, pos)
+        if not m or m.end() == pos:
+            raise KeyError(f"cannot parse path at '{text[pos:]}'")
+        quoted, key, index, _dot = m.groups()
+        if index is not None:
+            if not isinstance(obj, (list, tuple)):
+                raise KeyError(f"[{index}] applied to a {type(obj).__name__}")
+            i = int(index)
+            if not -len(obj) <= i < len(obj):
+                raise KeyError(f"index {i} out of range (length {len(obj)})")
+            obj = obj[i]
+        else:
+            k = quoted if quoted is not None else key.strip()
+            if not isinstance(obj, dict):
+                raise KeyError(f"key '{k}' applied to a {type(obj).__name__}")
+            if k not in obj:
+                raise KeyError(f"no key '{k}' (have: {', '.join(list(map(str, obj))[:8])}"
+                               f"{', ...' if len(obj) > 8 else ''})")
+            obj = obj[k]
+        pos = m.end()
+    return obj
+
+
+@dataclass
+class QuantityResult:
+    """A quantity's outcome: ``status`` is ``pass``, ``fail``, ``differs`` (documented
+    deviation outside tolerance), ``agrees`` (documented deviation that is within tolerance)
+    or ``error`` (no value)."""
+
+    quantity: Quantity
+    value: float | None = None
+    abs_error: float | None = None
+    rel_error: float | None = None
+    status: str = "error"
+    message: str = ""
+
+    @property
+    def failed(self) -> bool:
+        """True when the quantity counts against the suite."""
+        return self.status in ("fail", "error")
+
+
+@dataclass
+class CaseResult:
+    """A case's outcome."""
+
+    case: Case
+    quantities: list[QuantityResult] = field(default_factory=list)
+    error: str = ""
+    figures: dict[str, bytes] = field(default_factory=dict)    # name -> PNG
+    seconds: float = 0.0
+
+    @property
+    def passed(self) -> bool:
+        """No error and no quantity outside its tolerance (documented deviations excepted)."""
+        return not self.error and not any(q.failed for q in self.quantities)
+
+    @property
+    def status(self) -> str:
+        """``pass``, ``fail`` or ``error``."""
+        if self.error:
+            return "error"
+        return "pass" if self.passed else "fail"
+
+
+def compare(q: Quantity, value: Any) -> QuantityResult:
+    """Compare one value with its reference: pass when ``|v − r| ≤ atol + rtol·|r|``."""
+    out = QuantityResult(quantity=q)
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        try:
+            import numpy as np
+            if isinstance(value, np.generic) and np.ndim(value) == 0:
+                value = value.item()
+        except ImportError:  # pragma: no cover
+            pass
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        out.message = f"value at '{q.path}' is not a number: {value!r}"
+        return out
+    v = float(value)
+    if not math.isfinite(v):
+        out.message = f"value at '{q.path}' is not finite ({v})"
+        return out
+    out.value = v
+    out.abs_error = abs(v - q.reference)
+    out.rel_error = out.abs_error / abs(q.reference) if q.reference != 0 else None
+    ok = out.abs_error <= q.atol + q.rtol * abs(q.reference)
+    if q.expect == "differ":
+        out.status = "agrees" if ok else "differs"
+    else:
+        out.status = "pass" if ok else "fail"
+    return out
+
+
+def _call_python(spec: str, options: dict) -> dict:
+    module_name, _, func_name = spec.partition(":")
+    try:
+        module = importlib.import_module(module_name)
+    except ImportError as exc:
+        raise InputError("case.python", f"cannot import '{module_name}': {exc}") from None
+    func = getattr(module, func_name, None)
+    if not callable(func):
+        raise InputError("case.python", f"'{module_name}' has no function '{func_name}'")
+    return func(**options)
+
+
+def _analyse(name: str):
+    try:
+        module = importlib.import_module(f"trussfe.cli.cmd_{name}")
+    except ImportError:
+        import pkgutil
+
+        from .. import cli
+        names = [i.name[4:] for i in pkgutil.iter_modules(cli.__path__)
+                 if i.name.startswith("cmd_")]
+        from ..io.model_file import _suggest
+        raise InputError("case.analysis", f"unknown analysis '{name}'"
+                                          f"{_suggest(name, names)}") from None
+    if not hasattr(module, "analyse"):
+        raise InputError("case.analysis", f"command '{name}' has no analyse() entry point")
+    return module.analyse
+
+
+def _catalogue_model(case: Case, folder: Path) -> Path:
+    """Build a catalogue structure and write it as a model file in ``folder``."""
+    from .. import models
+    from ..io.model_writer import write_model
+
+    func = getattr(models, case.catalogue, None)
+    if not callable(func):
+        from ..io.model_file import _suggest
+        raise InputError("case.catalogue", f"unknown catalogue model '{case.catalogue}'"
+                                           f"{_suggest(case.catalogue, models.__all__)}")
+    try:
+        structure = func(**case.parameters)
+    except TypeError as exc:
+        raise InputError("case.parameters", str(exc)) from None
+    return write_model(structure, folder / f"{case.id}.toml")
+
+
+def evaluate(case: Case) -> tuple[dict, dict[str, bytes]]:
+    """Run a case's analysis; returns (result dict, figures as PNG bytes)."""
+    figures: dict[str, bytes] = {}
+    if case.python:
+        result = _call_python(case.python, case.options)
+    else:
+        analyse = _analyse(case.analysis)
+        with tempfile.TemporaryDirectory(prefix="trussfe-case-") as tmp:
+            model = case.model if case.catalogue is None else _catalogue_model(case, Path(tmp))
+            if not Path(model).is_file():
+                raise InputError("case.model", f"model file '{model}' not found")
+            result = analyse(str(model), **case.options)
+            if case.plot and isinstance(result, dict):
+                figures[case.plot] = _member_plot(model, result, case.plot)
+    if not isinstance(result, dict):
+        raise InputError("case", f"the analysis returned {type(result).__name__}, not a dict")
+    for name, path in (result.get("figures", {}) or {}).items():
+        try:
+            figures[str(name)] = Path(path).read_bytes()
+        except OSError as exc:
+            raise InputError("case", f"figure '{name}' cannot be read: {exc}") from None
+    return result, figures
+
+
+def _member_plot(model: Path, result: dict, field_name: str) -> bytes:
+    """The structure coloured by the member result ``field_name`` (e.g. axial_force)."""
+    import numpy as np
+
+    from ..io.model_file import read_model
+    from .figures import member_field_png
+
+    structure = read_model(model)
+    members = result.get("members", {})
+    values = np.full(structure.n_members, np.nan)
+    for i, mid in enumerate(structure.member_ids):
+        v = members.get(mid, {}).get(field_name)
+        if isinstance(v, (int, float)):
+            values[i] = v
+        elif isinstance(v, list) and v and all(isinstance(x, (int, float)) for x in v):
+            values[i] = v[-1]           # a history: its last value
+    if not np.isfinite(values).any():
+        raise InputError("case.plot", f"the result has no member field '{field_name}'")
+    unit = {"axial_force": " (N)", "axial_stress": " (Pa)", "max_von_mises": " (Pa)"}
+    return member_field_png(structure, values,
+                            field_name.replace("_", " ") + unit.get(field_name, ""),
+                            title=structure.name)
+
+
+def run_case(case: Case) -> CaseResult:
+    """Run one case.  Errors of the analysis are recorded in the result, never raised."""
+    out = CaseResult(case=case)
+    t0 = time.perf_counter()
+    try:
+        result, out.figures = evaluate(case)
+    except TrussfeError as err:
+        out.error = str(err)
+    except Exception as exc:  # a fault in an analysis must not stop the suite
+        log.exception("case %s", case.id)
+        out.error = f"internal error: {type(exc).__name__}: {exc}"
+    else:
+        for q in case.quantities:
+            try:
+                value = lookup(result, q.path)
+            except KeyError as exc:
+                r = QuantityResult(quantity=q, message=f"path '{q.path}': {exc.args[0]}")
+            else:
+                r = compare(q, value)
+            out.quantities.append(r)
+    out.seconds = time.perf_counter() - t0
+    return out
+
+
+def run_cases(cases: list[Case], progress: bool = True) -> list[CaseResult]:
+    """Run every case, with a progress bar on stderr."""
+    try:
+        from tqdm import tqdm
+    except ImportError:  # pragma: no cover - tqdm is a dependency
+        tqdm = None
+    results = []
+    bar = (tqdm(total=len(cases), desc="validate", unit="case", leave=False)
+           if progress and tqdm is not None else None)
+    for case in cases:
+        if bar is not None:
+            bar.set_postfix_str(case.id)
+        results.append(run_case(case))
+        if bar is not None:
+            bar.update()
+    if bar is not None:
+        bar.close()
+    return results

@@ -1,0 +1,225 @@
+# SPDX-License-Identifier: MIT
+"""``report.md`` and a self-contained ``report.html`` (inline CSS, figures as base64 PNG)."""
+from __future__ import annotations
+
+import base64
+import datetime as _dt
+import html
+import re
+from pathlib import Path
+
+from .. import __version__
+from ..io.output import atomic_dir
+from .engine import CaseResult, QuantityResult
+
+_CSS = """
+body{font-family:system-ui,-apple-system,Segoe UI,sans-serif;max-width:75em;margin:2em auto;
+padding:0 1em;color:#222;line-height:1.4}
+table{border-collapse:collapse;margin:.8em 0;font-size:.9em}
+th,td{border:1px solid #ccc;padding:.25em .5em;text-align:right;vertical-align:top}
+th{background:#f0f0f0} td.l,th.l{text-align:left}
+.pass{color:#11691b;font-weight:600} .fail,.error{color:#b00020;font-weight:600}
+.differs,.agrees{color:#8a5a00;font-weight:600}
+section.case{border-top:2px solid #ddd;margin-top:2em}
+.notes{background:#fafafa;border-left:4px solid #ccd;padding:.3em 1em}
+code{background:#f3f3f3;padding:0 .2em} img{max-width:100%}
+"""
+
+STATUS_TEXT = {"pass": "pass", "fail": "FAIL", "error": "ERROR",
+               "differs": "differs (documented)", "agrees": "agrees (documented deviation)"}
+
+
+def _fmt(x: float | None, digits: int = 6) -> str:
+    if x is None:
+        return "–"
+    return f"{x:.{digits}g}"
+
+
+def _tol(r: QuantityResult) -> str:
+    q = r.quantity
+    parts = []
+    if q.rtol:
+        parts.append(f"rtol {q.rtol:g}")
+    if q.atol:
+        parts.append(f"atol {q.atol:g}")
+    return ", ".join(parts)
+
+
+def _rows(res: CaseResult) -> list[list[str]]:
+    rows = []
+    for r in res.quantities:
+        q = r.quantity
+        rows.append([q.name, _fmt(q.thesis_matlab), _fmt(q.thesis_mscpal), _fmt(r.value, 8),
+                     _fmt(q.reference, 8), _fmt(r.rel_error, 3), _tol(r),
+                     STATUS_TEXT[r.status] + (f": {r.message}" if r.message else ""),
+                     q.source + (f" — {q.note}" if q.note else "")])
+    return rows
+
+
+_HEAD = ["quantity", "thesis MATLAB", "thesis MSC/PAL", "trussfe", "reference",
+         "relative error", "tolerance", "result", "source"]
+
+
+def _summary(results: list[CaseResult]) -> tuple[int, int, int]:
+    n_pass = sum(r.passed for r in results)
+    n_dev = sum(q.status in ("differs", "agrees") for r in results for q in r.quantities)
+    return n_pass, len(results) - n_pass, n_dev
+
+
+def _worst(res: CaseResult) -> str:
+    errs = [(q.rel_error, q) for q in res.quantities if q.rel_error is not None]
+    if not errs:
+        return "–"
+    return _fmt(max(e for e, _ in errs), 2)
+
+
+# ------------------------------------------------------------------ markdown
+def markdown_report(results: list[CaseResult], figure_paths: dict[tuple[str, str], str]) -> str:
+    """The Markdown report (figures linked as files in ``figures/``)."""
+    n_pass, n_fail, n_dev = _summary(results)
+    out = [f"# trussfe validation report", "",
+           f"trussfe {__version__}, {_dt.datetime.now(_dt.timezone.utc):%Y-%m-%d %H:%M} UTC. "
+           f"{len(results)} cases: {n_pass} pass, {n_fail} fail; "
+           f"{n_dev} documented deviations shown.", "",
+           "| case | title | result | checks | worst relative error | time (s) |",
+           "|---|---|---|---|---|---|"]
+    for r in results:
+        out.append(f"| [{r.case.id}](#{_anchor(r.case.id)}) | {_md_cell(r.case.title)} | "
+                   f"{r.status.upper() if r.status != 'pass' else 'pass'} | "
+                   f"{len(r.quantities)} | {_worst(r)} | {r.seconds:.2f} |")
+    for r in results:
+        out += ["", f"## {r.case.id}", "", f"**{r.case.title}** — {r.status}", ""]
+        if r.error:
+            out += [f"Error: `{r.error}`", ""]
+        if r.quantities:
+            out.append("| " + " | ".join(_HEAD) + " |")
+            out.append("|" + "---|" * len(_HEAD))
+            out += ["| " + " | ".join(_md_cell(c) for c in row) + " |" for row in _rows(r)]
+            out.append("")
+        if r.case.notes.strip():
+            out += [r.case.notes.strip(), ""]
+        for name in r.figures:
+            rel = figure_paths.get((r.case.id, name))
+            if rel:
+                out += [f"![{name}]({rel})", ""]
+    return "\n".join(out) + "\n"
+
+
+def _md_cell(text: str) -> str:
+    return str(text).replace("|", "\\|").replace("\n", " ")
+
+
+def _anchor(text: str) -> str:
+    return re.sub(r"[^a-z0-9-]", "", text.lower().replace(" ", "-"))
+
+
+# ------------------------------------------------------------------ html
+def _inline(text: str) -> str:
+    """Escape, then the inline Markdown of notes: `code`, **bold**, *em*, [text](url)."""
+    t = html.escape(text, quote=False)
+    t = re.sub(r"`([^`]+)`", r"<code>\1</code>", t)
+    t = re.sub(r"\*\*([^*]+)\*\*", r"<strong>\1</strong>", t)
+    t = re.sub(r"(?<![\w*])\*([^*\s][^*]*)\*(?!\w)", r"<em>\1</em>", t)
+    t = re.sub(r"\[([^\]]+)\]\(([^)\s]+)\)", lambda m: f'<a href="{html.escape(m.group(2))}">'
+               f"{m.group(1)}</a>", t)
+    return t
+
+
+def markdown_to_html(text: str) -> str:
+    """The small Markdown subset used in case notes: paragraphs, ``-`` lists, ``#`` headings,
+    and inline code, emphasis and links.
+
+    Examples
+    --------
+    >>> markdown_to_html("Load **44.498 N**:\\n\\n- a `b`\\n- c")
+    '<p>Load <strong>44.498 N</strong>:</p>\\n<ul><li>a <code>b</code></li><li>c</li></ul>'
+    """
+    blocks = re.split(r"\n\s*\n", text.strip())
+    out = []
+    for block in blocks:
+        lines = block.splitlines()
+        if all(re.match(r"\s*[-*] ", ln) or (i and ln.startswith("  "))
+               for i, ln in enumerate(lines)):
+            items: list[str] = []
+            for ln in lines:
+                if re.match(r"\s*[-*] ", ln):
+                    items.append(re.sub(r"^\s*[-*] ", "", ln))
+                else:
+                    items[-1] += " " + ln.strip()
+            out.append("<ul>" + "".join(f"<li>{_inline(i)}</li>" for i in items) + "</ul>")
+        elif m := re.match(r"(#{1,4})\s+(.*)", block):
+            level = min(len(m.group(1)) + 2, 6)
+            out.append(f"<h{level}>{_inline(m.group(2))}</h{level}>")
+        else:
+            out.append("<p>" + _inline(" ".join(ln.strip() for ln in lines)) + "</p>")
+    return "\n".join(out)
+
+
+def html_report(results: list[CaseResult]) -> str:
+    """One self-contained HTML page."""
+    n_pass, n_fail, n_dev = _summary(results)
+    e = html.escape
+    parts = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
+             "<title>trussfe validation report</title>", f"<style>{_CSS}</style></head><body>",
+             "<h1>trussfe validation report</h1>",
+             f"<p>trussfe {e(__version__)}, "
+             f"{_dt.datetime.now(_dt.timezone.utc):%Y-%m-%d %H:%M} UTC. "
+             f'<span id="summary-counts">{len(results)} cases: {n_pass} pass, {n_fail} fail'
+             f"</span>; {n_dev} documented deviations shown.</p>",
+             '<table id="summary"><thead><tr><th class="l">case</th><th class="l">title</th>'
+             "<th>result</th><th>checks</th><th>worst relative error</th><th>time (s)</th>"
+             "</tr></thead><tbody>"]
+    for r in results:
+        parts.append(f'<tr><td class="l"><a href="#{e(_anchor(r.case.id))}">{e(r.case.id)}</a>'
+                     f'</td><td class="l">{e(r.case.title)}</td>'
+                     f'<td class="{r.status}">{r.status}</td><td>{len(r.quantities)}</td>'
+                     f"<td>{_worst(r)}</td><td>{r.seconds:.2f}</td></tr>")
+    parts.append("</tbody></table>")
+    for r in results:
+        parts.append(f'<section class="case" id="{e(_anchor(r.case.id))}" '
+                     f'data-status="{r.status}"><h2>{e(r.case.id)}</h2>'
+                     f'<p><strong>{e(r.case.title)}</strong> — '
+                     f'<span class="{r.status}">{r.status}</span></p>')
+        if r.error:
+            parts.append(f'<p class="error">Error: {e(r.error)}</p>')
+        if r.quantities:
+            parts.append('<table class="quantities"><thead><tr>' + "".join(
+                f'<th class="{"l" if i in (0, 7, 8) else ""}">{e(h)}</th>'
+                for i, h in enumerate(_HEAD)) + "</tr></thead><tbody>")
+            for row, qr in zip(_rows(r), r.quantities):
+                cells = []
+                for i, c in enumerate(row):
+                    cls = "l" if i in (0, 8) else ""
+                    if i == 7:
+                        cls = f"l {qr.status}"
+                    cells.append(f'<td class="{cls}">{e(c)}</td>')
+                parts.append(f'<tr data-status="{qr.status}">' + "".join(cells) + "</tr>")
+            parts.append("</tbody></table>")
+        if r.case.notes.strip():
+            parts.append(f'<div class="notes">{markdown_to_html(r.case.notes)}</div>')
+        for name, png in r.figures.items():
+            data = base64.b64encode(png).decode("ascii")
+            parts.append(f'<figure><img alt="{e(name)}" src="data:image/png;base64,{data}">'
+                         f"<figcaption>{e(name)}</figcaption></figure>")
+        parts.append("</section>")
+    parts.append("</body></html>")
+    return "\n".join(parts) + "\n"
+
+
+def write_report(results: list[CaseResult], out_dir: str | Path) -> tuple[Path, Path]:
+    """Write ``out_dir/report.md``, ``out_dir/report.html`` and ``out_dir/figures/``
+    atomically; returns the two report paths."""
+    out_dir = Path(out_dir)
+    with atomic_dir(out_dir) as tmp:
+        figure_paths: dict[tuple[str, str], str] = {}
+        for r in results:
+            for name, png in r.figures.items():
+                safe = re.sub(r"[^A-Za-z0-9_.-]", "_", f"{r.case.id}-{name}")
+                if not safe.endswith(".png"):
+                    safe += ".png"
+                (tmp / "figures").mkdir(exist_ok=True)
+                (tmp / "figures" / safe).write_bytes(png)
+                figure_paths[(r.case.id, name)] = f"figures/{safe}"
+        (tmp / "report.md").write_text(markdown_report(results, figure_paths), encoding="utf-8")
+        (tmp / "report.html").write_text(html_report(results), encoding="utf-8")
+    return out_dir / "report.md", out_dir / "report.html"
