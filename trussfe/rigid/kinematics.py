@@ -223,7 +223,7 @@ def _batched_newton(structure, pattern, L, X, tolerance=1e-12, iterations=30):
         r = np.linalg.norm(d, axis=2)[:, pattern.loaded_idx] - Lk
         if np.abs(r).max() <= tolerance * scale:
             break
-        dx = solver.solve(-r)
+        dx = solver.solve(-r, approximate=True)
         if not np.all(np.isfinite(dx)):
             return X, np.zeros(nt, dtype=bool)
         flat[:, pattern.free_flat] += dx
