@@ -12,7 +12,6 @@ plots), :mod:`~trussfe.rigid.lacy` (Lacy's literal systems), :mod:`~trussfe.rigi
 """
 from .active import ActiveMember, active_members
 from .motion import Motion, load_motion, third_order_motion
-from .simulate import SimulationResult, simulate
 
-__all__ = ["ActiveMember", "Motion", "SimulationResult", "active_members", "load_motion",
-           "simulate", "third_order_motion"]
+# ``simulate`` is not re-exported: the name is the module trussfe.rigid.simulate.
+__all__ = ["ActiveMember", "Motion", "active_members", "load_motion", "third_order_motion"]
