@@ -14,7 +14,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 #: Largest system solved as a dense stack.
-DENSE_LIMIT = 120
+DENSE_LIMIT = 36
 #: Steps per anchor factorisation of large systems (:class:`CompatSolver`).
 ANCHOR_SPACING = 8
 #: Refinement sweeps allowed before a step counts as singular.
