@@ -150,3 +150,28 @@ def test_cli_thesis_scheme_reproduces_base_simulation():
     summ = d["summary"]["members"]
     assert_allclose(summ["follower"]["max_von_mises"], 4.3393e6, rtol=5e-5)
     assert_allclose(summ["active"]["max_von_mises"], 2.6256e7, rtol=5e-5)
+
+
+def test_singular_position_detected_on_the_sparse_path(monkeypatch):
+    """The same flat triangle through the sparse (anchored SuperLU) solver path."""
+    import trussfe.rigid.linalg as la
+    monkeypatch.setattr(la, "DENSE_LIMIT", 0)
+    s = triangular_truss()
+    L = np.array([[3.9], [3.99], [4.0]])
+    m = Motion([0, 1, 2], [1], L, np.ones_like(L), np.zeros_like(L))
+    with pytest.raises(AnalysisError, match="singular"):
+        simulate(s, m)
+
+
+def test_sparse_and_dense_paths_agree(monkeypatch):
+    """Base Simulation through both solver paths: identical to round-off (rtol 1e-10)."""
+    import trussfe.rigid.linalg as la
+    s = triangular_truss()
+    m = load_motion(_mesh("triangular_truss_motion_3s.toml"), s)
+    dense = simulate(s, m)
+    monkeypatch.setattr(la, "DENSE_LIMIT", 0)
+    sparse = simulate(s, m)
+    assert_allclose(sparse.forces.end_force, dense.forces.end_force, rtol=0,
+                    atol=1e-10 * np.abs(dense.forces.end_force).max())
+    assert_allclose(sparse.kinematics.acceleration, dense.kinematics.acceleration, rtol=0,
+                    atol=1e-10 * np.abs(dense.kinematics.acceleration).max())

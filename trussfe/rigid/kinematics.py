@@ -270,7 +270,13 @@ def _solve_compat(structure: Structure, pattern: _Pattern, solver: CompatSolver,
     """Solve B x = rhs (nt, m) for the free node coordinates; returns (nt, n, dim)."""
     nt = rhs.shape[0]
     out = np.zeros((nt, structure.n_nodes * structure.dim))
-    out[:, pattern.free_flat] = solver.solve(rhs[:, pattern.loaded_idx])
+    try:
+        out[:, pattern.free_flat] = solver.solve(rhs[:, pattern.loaded_idx])
+    except SingularStep as s:
+        raise AnalysisError(f"motion: step {s.step}", "the assembly is at a singular position "
+                            "(its compatibility matrix is rank deficient): its velocities and "
+                            "accelerations are not determined there; choose a motion that "
+                            "avoids it") from None
     return out.reshape(nt, structure.n_nodes, structure.dim)
 
 

@@ -18,7 +18,7 @@ DENSE_LIMIT = 36
 #: Steps per anchor factorisation of large systems (:class:`CompatSolver`).
 ANCHOR_SPACING = 8
 #: Refinement sweeps allowed before a step counts as singular.
-REFINEMENT_SWEEPS = 60
+REFINEMENT_SWEEPS = 200
 #: Reciprocal condition number below which a step counts as singular.  The positions are
 #: solved to 1e-12 of the truss size, so a singular (flat) position is only resolved to an
 #: angle of about 1e-6: below 1e-5 the forces would be round-off magnified by 1e5 and more.
@@ -244,7 +244,7 @@ class CompatSolver:
             tol = 1e-13 * (np.abs(rhs).max(axis=1) + 4.0 * bmax * np.abs(x).max(axis=1)) + 1e-300
             if np.all(err <= tol):
                 return x
-            stalled = (err > tol) & (err >= 0.5 * prev)
+            stalled = (err > tol) & (err >= 0.95 * prev)
             if np.any(stalled):
                 # No contraction: B_k is (nearly) singular or far from its anchor.
                 raise SingularStep(int(np.flatnonzero(stalled)[0]))
