@@ -1,6 +1,5 @@
 """The ``mechanism`` and ``trace`` commands on the shipped models (CONTRACT.md §2–4)."""
 import json
-import tomllib
 import xml.etree.ElementTree as ET
 
 import meshio

@@ -127,3 +127,28 @@ def test_bad_step_values():
         trace_mechanism(e.coords, e.bars, e.free, drives=[3], step=0.0, steps=3)
     with pytest.raises(InputError):
         trace_mechanism(e.coords, e.bars, e.free, drives=[3], step=0.1, steps=0)
+
+
+def test_section9_branch_switch():
+    """At the four-bar's change point (crank and rocker both at 180°) the traced path (crank
+    on, rocker back) meets the other branch (crank and rocker turning together).  branch=1 and
+    branch=2 leave for that branch in its two directions; bars keep their lengths (1e-9)."""
+    e = CATALOGUE["mech_sec9_space"]
+    L0 = _lengths(e.coords, e.bars)
+
+    def angles(r):
+        crank = np.degrees(np.arctan2(r.coords[:, 0, 1], r.coords[:, 0, 0])) % 360
+        rocker = np.degrees(np.arctan2(r.coords[:, 1, 1], r.coords[:, 1, 0] - 3.0)) % 360
+        return crank[-1] - 180.0, rocker[-1] - 180.0
+
+    out = {}
+    for br in (0, 1, 2):
+        _, r = _trace("mech_sec9_space", steps=20, branch=br)
+        assert np.max(np.abs(_lengths(r.coords, e.bars) - L0)) < 1e-9
+        out[br] = angles(r)
+    c0, r0 = out[0]
+    assert c0 > 5 and r0 < -5                              # traced path: opposite senses
+    for br in (1, 2):
+        c, r = out[br]
+        assert abs(c) > 5 and np.sign(c) == np.sign(r)     # other branch: same sense
+    assert np.sign(out[1][0]) != np.sign(out[2][0])        # the two directions

@@ -16,20 +16,20 @@ CASES = sorted((ROOT / "validation" / "cases").glob("modal_*.toml")) + \
     sorted((ROOT / "validation" / "cases").glob("buckling_*.toml"))
 
 
-def _compute(case: dict) -> dict:
+def _compute(case: dict, path) -> dict:
     c = case["case"]
     if "python" in c:
         mod, fn = c["python"].split(":")
         return getattr(importlib.import_module(mod), fn)()
     cmd = importlib.import_module(f"trussfe.cli.cmd_{c['analysis']}")
-    return cmd.analyse(ROOT / c["model"], **c.get("options", {}))
+    return cmd.analyse((path.parent / c["model"]).resolve(), **c.get("options", {}))
 
 
 @pytest.mark.parametrize("path", CASES, ids=[p.stem for p in CASES])
 def test_case(path):
     case = tomllib.loads(path.read_text())
     assert case["case"]["id"] == path.stem
-    values = _compute(case)
+    values = _compute(case, path)
     for q in case["quantities"]:
         got = values[q["path"]]
         ref = q["reference"]

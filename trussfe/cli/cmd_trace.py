@@ -90,7 +90,11 @@ def _plot(path: str, s, r) -> None:
 
     X = r.coords                                            # (state, node, dim)
     moving = np.flatnonzero(np.ptp(X, axis=0).max(axis=1) > 1e-12)
-    ax2 = (0, 1) if s.dim == 2 else (0, 2)
+    if s.dim == 2:
+        ax2 = (0, 1)
+    else:                                                   # the plane the joints move most in
+        spread = np.ptp(X[:, moving], axis=0).max(axis=0) if moving.size else np.ones(3)
+        ax2 = tuple(sorted(np.argsort(-spread)[:2].tolist()))
     fig, ax = plt.subplots(figsize=(6, 5))
     for x, style in ((X[0], "k-"), (X[-1], "k:")):
         for a, b in s.connectivity:
@@ -101,8 +105,8 @@ def _plot(path: str, s, r) -> None:
     for k in ev:
         ax.plot(X[k, moving, ax2[0]], X[k, moving, ax2[1]], "rx")
     ax.set_aspect("equal")
-    ax.set_xlabel("x (m)")
-    ax.set_ylabel("y (m)" if s.dim == 2 else "z (m)")
+    ax.set_xlabel(f"{'xyz'[ax2[0]]} (m)")
+    ax.set_ylabel(f"{'xyz'[ax2[1]]} (m)")
     ax.set_title(f"{s.name}: node trajectories" + (" (x = bifurcation)" if ev else ""))
     if len(moving) <= 10:
         ax.legend(fontsize=7)
@@ -117,6 +121,6 @@ def _run(args: argparse.Namespace) -> int:
                   vtk=args.vtk, plot=args.plot)
     if args.json:
         write_json(args.json, doc)
-    ev = ", ".join(f"{e['kind']} after step {e['step']}" for e in doc["events"]) or "none"
+    ev = ", ".join(f"{e['kind']} at state {e['step']}" for e in doc["events"]) or "none"
     sys.stdout.write(f"{doc['model']}: traced {len(doc['path']) - 1} steps; events: {ev}\n")
     return 0

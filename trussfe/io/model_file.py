@@ -42,6 +42,19 @@ def register_table(name: str, parser: Callable[[Any, Structure, Path], Any]) -> 
     _EXTENSIONS[name] = parser
 
 
+#: Modules that register extension tables; imported before a model is parsed so that any
+#: entry point (CLI command, Python API, validation case) reads every table.
+_EXTENSION_MODULES = ("trussfe.rigid.active", "trussfe.rigid.actuator",
+                      "trussfe.nonlinear.analysis")
+
+
+def _load_extensions() -> None:
+    import importlib
+
+    for name in _EXTENSION_MODULES:
+        importlib.import_module(name)
+
+
 def _suggest(word: str, choices) -> str:
     close = difflib.get_close_matches(str(word), list(choices), n=1, cutoff=0.5)
     return f"; did you mean '{close[0]}'?" if close else f"; valid: {', '.join(choices)}"
@@ -214,6 +227,7 @@ def parse_model(data: dict, base_dir: Path | str = ".", source: str = "") -> Str
         Naming the table and item at fault.
     """
     base_dir = Path(base_dir)
+    _load_extensions()
     allowed = CORE_TABLES + tuple(_EXTENSIONS)
     for key in data:
         if key not in allowed:

@@ -44,7 +44,7 @@ from .compatibility import compatibility_matrix
 log = logging.getLogger(__name__)
 
 #: Largest number of free coordinates for which the rank is computed by dense SVD each step.
-DENSE_LIMIT = 600
+DENSE_LIMIT = 200
 
 DIVERGENCE_MESSAGE = ("the prescribed increment leaves the motion region, or the assembly is "
                       "not a finite mechanism")
@@ -364,6 +364,45 @@ def _chord_corrector(x0, conn, L, fidx, pred, lu, p, tol, max_iterations) -> Ste
                       converged=bool(res <= tol))
 
 
+def _switch_branch(x_prev, x, conn, L, free, tau, h, branch, tolerance, max_iterations):
+    """Leave the traced path at a bifurcation found between ``x_prev`` and ``x``.
+
+    The bifurcation point is approximated (not located to machine precision) by interpolating
+    the signed smallest singular value of ``[B; τᵀ]`` between the two states and correcting
+    there; the other branch's tangent is the part of B's two-dimensional near-null space
+    orthogonal to the traced tangent.  Odd ``branch`` steps along it, even ``branch`` against.
+    Returns ``(x_b, prediction, independent)`` or None.
+    """
+    fidx = np.flatnonzero(free.ravel())
+    n, dim = x.shape
+
+    def smin(xx):
+        A = np.vstack([compatibility_matrix(xx, conn, free).toarray(), tau])
+        sv = np.linalg.svd(A, compute_uv=False)
+        return sv[-1] * np.sign(np.linalg.slogdet(A)[0])
+
+    s0, s1 = smin(x_prev), smin(x)
+    theta = s0 / (s0 - s1) if s0 != s1 else 0.5
+    d = (x - x_prev).ravel()[fidx] * theta
+    p = int(np.argmax(np.abs(d)))
+    res = hortobagyi_step(x_prev, conn, L, free, [p], d, tolerance=tolerance,
+                          max_iterations=max_iterations)
+    if not res.converged:
+        return None
+    xb = x_prev.copy().ravel()
+    xb[fidx] += res.increments
+    xb = xb.reshape(n, dim)
+    _, _, vt = np.linalg.svd(compatibility_matrix(xb, conn, free).toarray(), full_matrices=True)
+    V2 = vt[-2:].T                                         # near-null space, (f, 2)
+    u = V2 @ (V2.T @ tau)
+    w = V2[:, 0] if abs(V2[:, 0] @ u) < abs(V2[:, 1] @ u) else V2[:, 1]
+    w = w - (w @ tau) * tau / (tau @ tau)
+    w /= np.linalg.norm(w)
+    q = int(np.argmax(np.abs(w)))
+    sgn = 1.0 if branch % 2 else -1.0
+    return xb, sgn * h * w / abs(w[q]), q
+
+
 def _dense_null(B: sp.csr_matrix, rtol: float):
     A = B.toarray()
     if A.shape[0] == 0:
@@ -402,6 +441,9 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
         drives), take branch ``branch``: the candidate independent coordinates are found by
         pivoting the null space; branch 0 prescribes the drive coordinate, branch k the k-th
         other candidate, the other candidates kept at zero in the prediction (section 4).
+        At the first bifurcation found during the motion (sign change of det [B; τ]; dense
+        path), ``branch`` ≥ 1 leaves the path for the other branch (odd: one way along it,
+        even: the other way); 0 keeps the path.
     tolerance : float
         Relative bar-length tolerance of the corrector (eq. 7).
     max_iterations : int
@@ -490,6 +532,7 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
     param = [0.0]
     ranks, iters, resid, indeps, events = [], [], [0.0], [], []
     prev_tau = None
+    switched = False
     prev_sign = 0
     prev_drive_dir = None
     s_acc = 0.0
@@ -611,13 +654,36 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
                 pred = S[0] * tau / tau[p]
                 tau = pred / np.linalg.norm(pred)
             else:
+                switch = None
                 if prev_sign and sign and sign != prev_sign:
-                    events.append({"step": k - 1, "kind": "bifurcation",
-                                   "detected_by": "sign change of det [B; tangent]"})
-                p = int(np.argmax(np.abs(tau)))            # largest velocity (section 5)
-                if chord is not None:
-                    p = chord[1]
-                pred = h * tau / abs(tau[p])               # forward along the oriented tangent
+                    ev = {"step": k - 1, "kind": "bifurcation",
+                          "detected_by": "sign change of det [B; tangent]"}
+                    if branch > 0 and not switched and dense and len(path) > 1:
+                        switch = _switch_branch(path[-2], x, conn, L, free, prev_tau, h,
+                                                branch, tolerance, max_iterations)
+                        if switch is None:
+                            raise AnalysisError(item, "could not leave the traced path at the "
+                                                      "bifurcation for another branch")
+                        switched = True
+                        ev["branch"] = int(branch)
+                    events.append(ev)
+                if switch is not None:
+                    # continue from the approximate bifurcation point along the other branch
+                    x_b, pred, p = switch
+                    path.append(x_b.copy())
+                    s_acc += float(np.max(np.abs((x_b - x)[free])))
+                    param.append(s_acc)
+                    iters.append(0)
+                    resid.append(0.0)
+                    indeps.append(p)
+                    ranks.append(_dense_null(compatibility_matrix(x_b, conn, free), rtol)[0])
+                    x = x_b
+                    sign = 0
+                else:
+                    p = int(np.argmax(np.abs(tau)))        # largest velocity (section 5)
+                    if chord is not None:
+                        p = chord[1]
+                    pred = h * tau / abs(tau[p])           # forward along the oriented tangent
             prev_sign = sign
             indep = np.array([p])
 

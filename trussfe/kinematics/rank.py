@@ -23,7 +23,7 @@ geometry itself is only known to an accuracy δ (e.g. positions from a continuat
 a bar-length misfit δ·L), pass ``tolerance ≥ δ``: a rank decided below the geometric accuracy is
 noise (the Bricard octahedron is the standard trap).
 
-Large assemblies (more than ``dense_limit`` coordinates or twice as many bars) use a sparse
+Large assemblies (more than ``dense_limit`` coordinates or bars) use a sparse
 path: the nullity of ``K = BᵀB`` is the number of its eigenvalues σ² below the tolerance, counted
 exactly by Sylvester's law of inertia from one symmetric sparse factorisation of
 ``K − σ_tol² I`` (null vectors by inverse iteration with that factorisation).  The relative
@@ -224,7 +224,7 @@ def rank_analysis(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarray
     B = compatibility_matrix(x, conn, free)
     b, f = B.shape
     rigid = _free_rigid_modes(x, free)
-    if f <= dense_limit and b <= 2 * dense_limit:
+    if f <= dense_limit and b <= dense_limit:
         return _dense_rank(B, rigid, free, tolerance)
     return _sparse_rank(B, rigid, free, tolerance)
 

@@ -304,3 +304,52 @@ def slider_crank_closed_form(samples: int = 12, omega: float = 2.0, step: float 
                cycle_velocity_max_error=float(cv), cycle_acceleration_max_error=float(ca),
                slider_travel=float(res.coords[:, 2, 0].max() - res.coords[:, 2, 0].min()))
     return out
+
+
+# --------------------------------------------------------------------------- sections 6, 8, 9
+def hortobagyi_constructions() -> dict:
+    """Rank counts and motion of the constructed assemblies of sections 6, 8, 9 and Bricard's
+    octahedron (catalogue :mod:`trussfe.models.mechanisms`).
+
+    Returns
+    -------
+    dict
+        Per entry ``rank``, ``infinitesimal`` (μ·j − ρ(B)), ``self_stress``; for section 8 the
+        ranks before and after a downward step and whether an upward step was refused; for
+        section 9 the number of bifurcations detected while the crank passes 180°; for Bricard
+        the bar-length misfit after 60 steps.
+    """
+    from ..errors import AnalysisError
+    from ..models.mechanisms import CATALOGUE
+    out: dict = {}
+    for name in ("mech_sec6_foldable", "mech_sec6_foldable_minus1", "mech_sec6_foldable_minus3",
+                 "mech_sec8_compound", "mech_sec9_space", "mech_bricard"):
+        e = CATALOGUE[name]
+        r = rank_analysis(e.coords, e.bars, e.free)
+        out[name] = {"rank": r.rank, "infinitesimal": r.infinitesimal_motions,
+                     "self_stress": r.self_stress_states, "joints": int(e.free.any(axis=1).sum()),
+                     "bars": len(e.bars)}
+    e = CATALOGUE["mech_sec8_compound"]
+    t = trace_mechanism(e.coords, e.bars, e.free, [e.drive_index()], e.step, 20)
+    out["mech_sec8_compound"].update(rank_after=int(t.rank[-1]),
+                                     y_left_after=float(t.coords[-1, 4, 1]),
+                                     y_right_after=float(t.coords[-1, 10, 1]))
+    try:
+        trace_mechanism(e.coords, e.bars, e.free, [e.drive_index()], -e.step, 20)
+        refused = 0
+    except AnalysisError:
+        refused = 1
+    out["mech_sec8_compound"]["upward_refused"] = refused
+    e = CATALOGUE["mech_sec9_space"]
+    t = trace_mechanism(e.coords, e.bars, e.free, [e.drive_index()], e.step, 30)
+    ang = np.degrees(np.arctan2(t.coords[:, 0, 1], t.coords[:, 0, 0])) % 360
+    out["mech_sec9_space"].update(
+        bifurcations=sum(ev["kind"] == "bifurcation" for ev in t.events),
+        crank_angle_start=float(ang[0]), crank_angle_end=float(ang[-1]))
+    e = CATALOGUE["mech_bricard"]
+    t = trace_mechanism(e.coords, e.bars, e.free, [e.drive_index()], e.step, 60)
+    L0 = np.linalg.norm(e.coords[e.bars[:, 1]] - e.coords[e.bars[:, 0]], axis=1)
+    L = np.linalg.norm(t.coords[:, e.bars[:, 1]] - t.coords[:, e.bars[:, 0]], axis=2)
+    out["mech_bricard"].update(misfit=float(np.max(np.abs(L - L0))),
+                               rank_min=int(t.rank.min()), rank_max=int(t.rank.max()))
+    return out

@@ -326,7 +326,8 @@ def cycle_kinematics(eq: EquivalentAssembly, drive_edge: int, omega: float,
     -----
     Unknowns: ω of every bar and plate edge, L̇ of every slider edge (ground edges do not move).
     Velocity equations: ``Σ_j B_f[i, j] (L̇_j e_j + ω_j L_j e_j^⊥) = 0`` (two per cycle);
-    accelerations: ``Σ_j B_f[i, j] (L̈_j e_j + α_j L_j e_j^⊥ + 2 L̇_j ω_j e_j^⊥ − ω_j² L_j e_j) = 0``.
+    accelerations:
+    ``Σ_j B_f[i, j] (L̈_j e_j + α_j L_j e_j^⊥ + 2 L̇_j ω_j e_j^⊥ − ω_j² L_j e_j) = 0``.
     Joint velocities follow along the tree from the ground: ``−A_tᵀ V = U̇_t``.
     """
     x = eq.coords

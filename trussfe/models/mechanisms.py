@@ -80,8 +80,8 @@ class MechanismEntry:
 
     def structure(self):
         """The entry as a :class:`~trussfe.model.Structure` (aluminium tube members)."""
-        from ..model.sections import Material, Section
-        from ..model.structure import build_structure
+        from trussfe.model.sections import Material, Section
+        from trussfe.model.structure import build_structure
         return build_structure(self.coords, self.bars, section=Section.tube("tube", 0.02, 0.016),
                                material=Material("aluminium", E=70e9, G=26e9, density=2700.0),
                                supports={i: list(a) for i, a in self.supports.items()},
@@ -110,7 +110,7 @@ def hortobagyi_section4() -> MechanismEntry:
 
 def fourbar(theta: float = 0.1) -> MechanismEntry:
     """Crank-rocker four-bar: ground 3, crank 1, coupler 3.2, rocker 2.6 (Grashof)."""
-    from ..kinematics.reproductions import fourbar_position
+    from trussfe.kinematics.reproductions import fourbar_position
     B, C = fourbar_position(theta)
     return _entry("mech_fourbar", "Four-bar linkage (crank-rocker)",
                   [[0, 0], B, C, [3, 0]], [[0, 1], [1, 2], [3, 2]], {0: "xy", 3: "xy"},
@@ -227,7 +227,8 @@ def section9_space(seed: int = 3) -> MechanismEntry:
     built from bars: each of its two moving joints P, Q is tied to two ground joints on the
     pivot's axis (z = ±1), so it moves on a circle, and P–Q is the coupler — 2 joints, 5 bars.
     Fifteen more joints follow, each tied by three bars to joints of the crank or the rocker
-    body (Henneberg steps, full row rank): 17 joints, 5 + 45 = 50 bars, μ·j − ρ(B) = 51 − 50 = 1.  At the four-bar's
+    body (Henneberg steps, full row rank): 17 joints, 5 + 45 = 50 bars,
+    μ·j − ρ(B) = 51 − 50 = 1.  At the four-bar's
     flat position all bars meeting at P (and at Q) are coplanar — the bifurcation the text
     describes; the start state is the four-bar at crank angle 150°.
     """
@@ -315,7 +316,8 @@ def to_toml(entry: MechanismEntry) -> str:
     if entry.supports:
         lines += ["", "[supports]"]
         for i, axes in entry.supports.items():
-            lines.append(f'"{i + 1}" = [{", ".join(repr(a).replace(chr(39), chr(34)) for a in axes)}]')
+            quoted = ", ".join(f'"{a}"' for a in axes)
+            lines.append(f'"{i + 1}" = [{quoted}]')
     return "\n".join(lines) + "\n"
 
 

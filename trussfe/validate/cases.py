@@ -167,9 +167,10 @@ def _parse(data: dict, path: Path) -> Case:
         raise InputError("case", "missing 'id'")
     case = Case(id=_str(raw["id"], "case.id"), title=_str(raw.get("title", raw["id"]), "case.title"),
                 file=path, quantities=[], notes=_str(raw.get("notes", ""), "case.notes"))
-    if ("analysis" in raw) == ("python" in raw):
-        raise InputError("case", "give exactly one of 'analysis' (a trussfe command) or "
-                                 "'python' (\"module:function\")")
+    if "analysis" not in raw and "python" not in raw:
+        raise InputError("case", "give 'analysis' (a trussfe command) or 'python' "
+                                 "(\"module:function\")")
+    # With 'python', an 'analysis' key only says which kind of analysis the function runs.
     if "python" in raw:
         case.python = _str(raw["python"], "case.python")
         if ":" not in case.python:

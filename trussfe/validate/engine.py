@@ -31,6 +31,8 @@ def lookup(result: Any, path: str) -> Any:
     2.0
     >>> lookup({"a": [[1, 2], [3, 4]]}, "a[1][-1]")
     4
+    >>> lookup({"thesis.T3": {"v": 1.25}}, "thesis.T3.v")
+    1.25
     """
     obj = result
     pos = 0
@@ -38,6 +40,16 @@ def lookup(result: Any, path: str) -> Any:
     if not text:
         raise KeyError("empty path")
     while pos < len(text):
+        if isinstance(obj, dict):
+            # A flat result may use dotted keys ("thesis.M8_force"): the longest key that
+            # matches the rest of the path wins over splitting it at the dots.
+            rest = text[pos:]
+            cuts = [i for i, ch in enumerate(rest) if ch in ".["] + [len(rest)]
+            hit = next((c for c in reversed(cuts) if "." in rest[:c] and rest[:c] in obj), None)
+            if hit is not None:
+                obj = obj[rest[:hit]]
+                pos += hit + (1 if rest[hit:hit + 1] == "." else 0)
+                continue
         m = _TOKEN.match(text, pos)
         if not m or m.end() == pos:
             raise KeyError(f"cannot parse path at '{text[pos:]}'")
