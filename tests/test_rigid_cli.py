@@ -175,3 +175,19 @@ def test_sparse_and_dense_paths_agree(monkeypatch):
                     atol=1e-10 * np.abs(dense.forces.end_force).max())
     assert_allclose(sparse.kinematics.acceleration, dense.kinematics.acceleration, rtol=0,
                     atol=1e-10 * np.abs(dense.kinematics.acceleration).max())
+
+
+def test_batched_positions_dense_and_sparse_agree(monkeypatch):
+    """A 500-step slew (coarse continuation + chord Newton over all steps) through both
+    solver paths: positions to 1e-11 m, forces to 1e-10 relative."""
+    import trussfe.rigid.linalg as la
+    from trussfe.rigid.motion import third_order_motion
+    from trussfe.rigid.reproductions import double_octahedron
+    s = double_octahedron((1.2289, 1.1079, 1.1079), gravity=-9.81, top_load=46.0)
+    m = third_order_motion(s, [1.2289, 1.1079, 1.1079], [1.1079, 1.2289, 1.2289], 2.0, 500)
+    a = simulate(s, m)
+    monkeypatch.setattr(la, "DENSE_LIMIT", 0)
+    b = simulate(s, m)
+    assert_allclose(b.kinematics.coords, a.kinematics.coords, rtol=0, atol=1e-11)
+    assert_allclose(b.forces.end_force, a.forces.end_force, rtol=0,
+                    atol=1e-10 * np.abs(a.forces.end_force).max())
