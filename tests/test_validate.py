@@ -61,7 +61,10 @@ def parse_report(path):
 
 
 def test_lookup_paths():
-    d = {"nodes": {"N1": {"reaction": [1.0, -2.0, 3.0]}, "b1.N4": {"x": [[5]]}}}
+    d = {"nodes": {"N1": {"reaction": [1.0, -2.0, 3.0]}, "b1.N4": {"x": [[5]]}},
+         "t.a": {"b.c": 7}, "t": {"z": 8}}
+    assert lookup(d, "t.a.b.c") == 7 and lookup(d, "t.z") == 8     # flat dotted keys
+    assert lookup(d, "nodes.N1.reaction.2") == 3.0
     assert lookup(d, "nodes.N1.reaction[1]") == -2.0
     assert lookup(d, "nodes.N1.reaction[-1]") == 3.0
     assert lookup(d, 'nodes."b1.N4".x[0][0]') == 5
@@ -71,9 +74,11 @@ def test_lookup_paths():
 
 
 def test_builtin_cases_pass_and_report(tmp_path):
-    """Every built-in case passes (the thesis tables reproduced within 0.01 % / 0.02 %), and
-    the HTML report lists each case with its status and quantity rows."""
-    cases = load_cases(default_cases_dir())
+    """The static thesis cases pass (Tables 3.2, 5.2–5.4 within 0.01 % / 0.02 %), and the HTML
+    report lists each case with its status and quantity rows."""
+    every = load_cases(default_cases_dir())          # every shipped case file reads
+    # run the static thesis cases here; the other analyses' cases are run by their own tests
+    cases = [c for c in every if c.file.name.startswith(("lacy_", "chain_"))]
     ids = {c.id for c in cases}
     assert {"lacy-table-3-2", "lacy-table-5-2", "lacy-table-5-3", "lacy-table-5-4"} <= ids
     results = run_cases(cases, progress=False)
@@ -89,9 +94,10 @@ def test_builtin_cases_pass_and_report(tmp_path):
     assert len(rep.quantity_rows) == n_quantities
     # cases with `plot` get a figure of the structure coloured by the member result
     n_plots = sum(c.plot is not None for c in cases)
-    assert n_plots >= 4 and len(rep.images) == n_plots
+    n_figures = sum(len(r.figures) for r in results)     # plots + figures python cases return
+    assert n_plots >= 4 and len(rep.images) == n_figures >= n_plots
     assert all(src.startswith("data:image/png;base64,iVBOR") for src in rep.images)
-    assert len(list((tmp_path / "out" / "figures").glob("*.png"))) == n_plots
+    assert len(list((tmp_path / "out" / "figures").glob("*.png"))) == n_figures
     # the documented deviations are shown as such (46.0 N: all 7 values 3.4 % high)
     stated = next(r for r in results if r.case.id == "lacy-table-5-2-stated-load")
     assert all(q.status == "differs" for q in stated.quantities)
@@ -171,8 +177,10 @@ def test_exit_status_and_figures(tmp_path):
 @pytest.mark.parametrize("body,item", [
     ("[case\nid = 1", "malformed TOML"),
     ('[case]\nid = "a"\nanalysis = "static"\nmodel = "x.toml"\n', "at least one quantity"),
-    ('[case]\nid = "a"\n[[quantities]]\nname="x"\n'
-     'path="x"\nreference=1\nrtol=1e-3\n', "give 'analysis'"),
+    ('[case]\nid = "a"\n[[quantities]]\nname="x"\npath="x"\nreference=1\nrtol=1e-3\n',
+     "give 'analysis'"),
+    ('[case]\nid = "a"\npython = "m:f"\nmodel = "m.toml"\n[[quantities]]\nname="x"\n'
+     'path="x"\nreference=1\nrtol=1e-3\n', "python case builds its own model"),
     ('[case]\nid = "a"\npython = "m:f"\n[[quantities]]\nname="x"\npath="x"\nreference=1\n',
      "tolerance"),
     ('[case]\nid = "a"\npython = "m:f"\n[[quantities]]\nname="x"\npath="x"\nreference=1\n'
@@ -251,3 +259,23 @@ def test_fuzz_case_reader(data):
         assert "\n" not in str(err)
     else:
         assert case.quantities and case.id
+
+
+def test_compare_semantics():
+    """|v − r| ≤ atol + rtol·|r|; documented deviations are never failures."""
+    from trussfe.validate.cases import Quantity
+    from trussfe.validate.engine import compare
+
+    q = Quantity(name="q", path="x", reference=100.0, rtol=1e-3)
+    assert compare(q, np.float64(100.1)).status == "pass"        # exactly at the bound
+    assert compare(q, 100.2).status == "fail"
+    assert compare(q, 100.2).rel_error == pytest.approx(2e-3)
+    assert compare(q, float("nan")).status == "error"
+    assert compare(q, "100").status == "error"
+    assert compare(q, True).status == "error"
+    z = Quantity(name="z", path="x", reference=0.0, atol=1e-9)
+    r = compare(z, 5e-10)
+    assert r.status == "pass" and r.rel_error is None
+    d = Quantity(name="d", path="x", reference=100.0, rtol=1e-3, expect="differ")
+    assert compare(d, 103.4).status == "differs" and not compare(d, 103.4).failed
+    assert compare(d, 100.0).status == "agrees" and not compare(d, 100.0).failed

@@ -46,6 +46,7 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 from scipy.sparse.csgraph import reverse_cuthill_mckee
+from threadpoolctl import threadpool_limits
 
 from ..errors import AnalysisError, InputError
 from ..model.structure import Structure
@@ -103,7 +104,9 @@ class BandedCholesky:
         ab = np.zeros((bw + 1, n))
         np.add.at(ab, (bw + P.row[upper] - P.col[upper], P.col[upper]), P.data[upper])
         try:
-            c = sla.cholesky_banded(ab, lower=False, check_finite=False)
+            # pbtrf works on tiny blocks: BLAS threads only add overhead (3-7x slower)
+            with threadpool_limits(limits=1, user_api="blas"):
+                c = sla.cholesky_banded(ab, lower=False, check_finite=False)
         except np.linalg.LinAlgError:          # not positive definite (singular K)
             return None
         d = np.abs(c[bw])
@@ -113,8 +116,9 @@ class BandedCholesky:
 
     def solve(self, b: np.ndarray) -> np.ndarray:
         """Solve A x = b."""
-        x = sla.cho_solve_banded((self.factor, False), np.asarray(b)[self.perm],
-                                 check_finite=False)
+        with threadpool_limits(limits=1, user_api="blas"):
+            x = sla.cho_solve_banded((self.factor, False), np.asarray(b)[self.perm],
+                                     check_finite=False)
         return x[self.inverse]
 
 

@@ -120,7 +120,15 @@ class Structure:
 
     # ------------------------------------------------------------------ member properties
     def _prop(self, objs: list, attr: str) -> np.ndarray:
-        return np.array([getattr(o, attr) for o in objs], dtype=float)
+        # Members share few section/material objects: look each distinct object up once.
+        cache = self.__dict__.setdefault("_prop_cache", {})
+        key = ("_groups", id(objs), len(objs))
+        if key not in cache:
+            ids = np.fromiter((id(o) for o in objs), dtype=np.int64, count=len(objs))
+            cache[key] = np.unique(ids, return_index=True, return_inverse=True)[1:]
+        first, inverse = cache[key]
+        values = np.array([getattr(objs[i], attr) for i in first], dtype=float)
+        return values[inverse] if len(objs) else np.zeros(0)
 
     @property
     def area(self) -> np.ndarray:

@@ -28,7 +28,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from ..errors import InputError
+from ..errors import AnalysisError, InputError
 from ..kinematics.assembly import solve_positions
 from ..model.structure import Structure
 from .materials import ALUMINIUM, octahedral_tube
@@ -121,7 +121,8 @@ def _equilibrium_coords(base_side: float, longeron: float, length: float) -> np.
     h = base_side / (2.0 * np.sqrt(3.0))
     guess[:3] = [[-base_side / 2, -h, 0.0], [base_side / 2, -h, 0.0], [0.0, 2 * h, 0.0]]
     return solve_positions(guess, _CONN, _bay_lengths(np.full(3, length), base_side, longeron),
-                           fixed, member_ids=_MEMBER_IDS, item="double_octahedron").coords
+                           fixed, member_ids=_MEMBER_IDS, item="double_octahedron",
+                             tolerance=1e-14).coords
 
 
 def double_octahedron(active_lengths: Sequence[float] = (EQUILIBRIUM_LENGTH,) * 3,
@@ -182,7 +183,8 @@ def double_octahedron(active_lengths: Sequence[float] = (EQUILIBRIUM_LENGTH,) * 
     fixed = np.zeros((9, 3), dtype=bool)
     fixed[:3] = True
     coords = solve_positions(x0, _CONN, _bay_lengths(active, base_side, longeron), fixed,
-                             member_ids=_MEMBER_IDS, item="double_octahedron").coords
+                             member_ids=_MEMBER_IDS, item="double_octahedron",
+                             tolerance=1e-14).coords
     section = octahedral_tube() if inner_diameter is None else octahedral_tube(inner_diameter)
     m = len(_MEMBER_IDS)
     supports = np.zeros((9, 6), dtype=bool)
@@ -202,6 +204,86 @@ def double_octahedron(active_lengths: Sequence[float] = (EQUILIBRIUM_LENGTH,) * 
         gravity=np.zeros(3) if gravity is None else np.asarray(gravity, float).reshape(3))
 
 
+def _bays_local(act: np.ndarray, bay0: np.ndarray, base_side: float,
+                longeron: float, tolerance: float = 1e-14,
+                max_iterations: int = 50) -> np.ndarray:
+    """Geometry of each bay on the fixed reference base, from its active lengths.
+
+    Newton's method on the 18 bar-length equations of every bay at once (batched dense
+    18 × 18 solves; the Jacobian is the bay's compatibility matrix, as in
+    :func:`~trussfe.kinematics.solve_positions`), started from the equilibrium bay.
+
+    Returns
+    -------
+    ndarray, shape (bays, 9, 3)
+    """
+    nb = act.shape[0]
+    lengths = np.tile(_bay_lengths(np.zeros(3), base_side, longeron), (nb, 1))
+    lengths[:, _ACTIVE_IDX] = act
+    x = np.broadcast_to(bay0, (nb, 9, 3)).copy()                    # (bay, node, xyz)
+    a, b = _CONN[:, 0], _CONN[:, 1]
+    rows = np.arange(18)
+    scale = float(lengths.max())
+    for _ in range(max_iterations):
+        vec = x[:, b] - x[:, a]                                     # (bay, member, xyz)
+        cur = np.linalg.norm(vec, axis=2)
+        r = cur - lengths
+        bad = np.max(np.abs(r), axis=1) > tolerance * scale
+        if not bad.any():
+            return x
+        unit = vec[bad] / cur[bad][:, :, None]
+        jac = np.zeros((int(bad.sum()), 18, 9, 3))                  # (bay, member, node, xyz)
+        jac[:, rows, b] += unit
+        jac[:, rows, a] -= unit
+        jac = jac[:, :, 3:, :].reshape(-1, 18, 18)                  # free nodes N4..N9
+        try:
+            dx = np.linalg.solve(jac, -r[bad][:, :, None])[:, :, 0]
+        except np.linalg.LinAlgError:
+            raise AnalysisError("double_octahedral_chain", "a bay is at a singular position "
+                                "for these active lengths") from None
+        step = np.max(np.abs(dx), axis=1, keepdims=True)
+        dx *= np.minimum(1.0, 0.1 * scale / np.maximum(step, 1e-300))
+        x[np.flatnonzero(bad), 3:, :] += dx.reshape(-1, 6, 3)
+    worst = int(np.argmax(np.max(np.abs(np.linalg.norm(x[:, b] - x[:, a], axis=2) - lengths),
+                                 axis=1)))
+    raise AnalysisError("double_octahedral_chain", f"no assembly exists for the active "
+                                                   f"lengths of bay {worst + 1}: "
+                                                   f"{act[worst].tolist()}")
+
+
+def _frame(p: np.ndarray) -> np.ndarray:
+    """Orthonormal frames of triangles p (…, 3 points, xyz) as columns (…, xyz, 3)."""
+    e1 = p[..., 1, :] - p[..., 0, :]
+    e1 /= np.linalg.norm(e1, axis=-1, keepdims=True)
+    e3 = np.cross(e1, p[..., 2, :] - p[..., 0, :])
+    e3 /= np.linalg.norm(e3, axis=-1, keepdims=True)
+    return np.stack([e1, np.cross(e3, e1), e3], axis=-1)
+
+
+def _stack_bays(local: np.ndarray) -> np.ndarray:
+    """Global node coordinates of a chain from each bay's geometry on the reference base.
+
+    Bay k+1 sits on bay k's top triangle (N7, N9, N8 over N1, N2, N3): the rigid motion
+    taking the reference base to bay k's top (rotation R_k, translation t_k) is composed up
+    the chain, G_{k+1} = G_k ∘ T_k (Lacy ch. 6: each bay's kinematics in the frame of the
+    bay below).
+    """
+    nb = local.shape[0]
+    base = local[0, :3]
+    top = local[:, [6, 8, 7]]                                       # (bay, 3, xyz)
+    rot = _frame(top) @ _frame(base).T                              # (bay, 3, 3)
+    trans = top[:, 0] - rot @ base[0]                               # (bay, 3)
+    # Compose G_k = G_{k-1} ∘ T_{k-1}: one 3 × 3 product per bay (not per member).
+    A = np.empty((nb, 3, 3))
+    c = np.empty((nb, 3))
+    A[0], c[0] = np.eye(3), 0.0
+    for k in range(1, nb):
+        A[k] = A[k - 1] @ rot[k - 1]
+        c[k] = A[k - 1] @ trans[k - 1] + c[k - 1]
+    own = np.einsum("kij,knj->kni", A, local[:, 3:]) + c[:, None, :]    # (bay, 6, xyz)
+    return np.vstack([base, own.reshape(-1, 3)])
+
+
 def double_octahedral_chain(n_bays: int, active_lengths: np.ndarray | None = None,
                             tip_load: float = STATED_LOAD, *, base_side: float = BASE_SIDE,
                             longeron: float = LONGERON, inner_diameter: float | None = None,
@@ -216,9 +298,9 @@ def double_octahedral_chain(n_bays: int, active_lengths: np.ndarray | None = Non
         Number of bays (≥ 1).  Built with array operations only, so 10⁵ bays take well under a
         second.
     active_lengths : array, shape (n_bays, 3), optional
-        Active lengths (M7/8, M9/10, M11/12) of every bay; default all at 1.1684 m.  Other
-        than the default, the whole chain is assembled by the forward-position solver from the
-        stacked equilibrium geometry.
+        Active lengths (M7/8, M9/10, M11/12) of every bay; default all at 1.1684 m.  Each bay
+        is assembled on the reference base by Newton's method on its bar lengths (all bays at
+        once), and the bays are stacked by composing the rigid motions base → top up the chain.
     tip_load : float
         Force in +z on each top node of the last bay, N.
     base_side, longeron, inner_diameter, gravity, name
@@ -264,12 +346,7 @@ def double_octahedral_chain(n_bays: int, active_lengths: np.ndarray | None = Non
             raise InputError("double_octahedral_chain.active_lengths",
                              f"expected shape ({n_bays}, 3), got {act.shape}")
         _check_lengths(act, "double_octahedral_chain.active_lengths")
-        lengths = np.tile(_bay_lengths(np.zeros(3), base_side, longeron), n_bays)
-        lengths.reshape(n_bays, 18)[:, _ACTIVE_IDX] = act
-        fixed = np.zeros((n, 3), dtype=bool)
-        fixed[:3] = True
-        coords = solve_positions(coords, conn, lengths, fixed,
-                                 item="double_octahedral_chain").coords
+        coords = _stack_bays(_bays_local(act, bay, base_side, longeron))
     # Ids: one prefix string per bay, concatenated (twice as fast as formatting each id).
     prefixes = [f"b{i}." for i in range(1, n_bays + 1)]
     node_ids = ["b1.N1", "b1.N2", "b1.N3"] + [p + j for p in prefixes for j in _OWN_NODES]

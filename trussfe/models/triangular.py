@@ -91,7 +91,8 @@ def triangular_truss(x: float = 0.0, lumped_mass: float = 10.0, member_weight: b
     conn = np.array([[1, 2], [0, 1]])
     fixed = np.array([[True, True], [False, False], [True, True]])
     pos = solve_positions(guess, conn, np.array([FOLLOWER_LENGTH, active]), fixed,
-                          member_ids=["follower", "active"], item="triangular_truss").coords
+                          member_ids=["follower", "active"], item="triangular_truss",
+                          tolerance=1e-14).coords
     f_b = np.zeros(2) if load is None else np.asarray(load, dtype=float).ravel()
     if f_b.shape != (2,) or not np.all(np.isfinite(f_b)):
         raise InputError("triangular_truss.load", f"expected a finite force (Fx, Fy), got "

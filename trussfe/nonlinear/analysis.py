@@ -8,6 +8,7 @@ options override them)::
     control = "arc-length"        # "load" | "displacement" | "arc-length"
     steps = 200
     step = 0.002                  # first increment (Δλ, Δu or Δs; see follow_path)
+    max_step = 0.01               # largest increment the step control may grow to
     max_load_factor = 5.0
     monitor = "3:y"               # node:axis of the displacement plotted and controlled
     bar_model = "truss"           # "truss" | "pinned-beam"
@@ -18,6 +19,7 @@ options override them)::
 """
 from __future__ import annotations
 
+import logging
 import math
 from pathlib import Path
 from typing import Any
@@ -34,8 +36,9 @@ from .path import CONTROLS, PathResult, follow_path
 
 SETTINGS = {"control": str, "steps": int, "step": float, "max_load_factor": float,
             "monitor": str, "bar_model": str, "subdivisions": int, "imperfection": float,
-            "branch": bool, "max_displacement": float}
+            "branch": bool, "max_displacement": float, "max_step": float}
 AXES = "xyz"
+log = logging.getLogger(__name__)
 
 
 def parse_settings(raw: Any, structure: Structure | None = None, base_dir=None) -> dict:
@@ -52,7 +55,7 @@ def parse_settings(raw: Any, structure: Structure | None = None, base_dir=None) 
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
                 raise InputError(item, f"expected a finite number, got {v!r}")
             v = float(v)
-            if k in ("step", "max_load_factor", "max_displacement") and v <= 0:
+            if k in ("step", "max_load_factor", "max_displacement", "max_step") and v <= 0:
                 raise InputError(item, f"must be positive, got {v}")
             if k == "imperfection" and v < 0:
                 raise InputError(item, f"must not be negative, got {v}")
@@ -102,10 +105,14 @@ def run_postcritical(structure: Structure, **options) -> PathResult:
     given = {k: v for k, v in options.items() if v is not None}
     if "control" in given and given["control"] != opts.get("control", "arc-length") \
             and "step" not in given:
-        # the file's first increment belongs to its own control (Δλ, Δu and Δs differ)
+        # the file's increments belong to its own control (Δλ, Δu and Δs differ)
         opts.pop("step", None)
+        opts.pop("max_step", None)
     opts.update(given)
     laws = structure.extensions.get("failure") or FailureLaws.none(structure.n_members)
+    if np.any(structure.gravity != 0):
+        log.warning("%s: gravity is not part of the post-critical load pattern; only [loads] "
+                    "is scaled by the load factor", structure.source or structure.name)
     model = NonlinearModel(structure, bar_model=opts.pop("bar_model", "truss"),
                            subdivisions=opts.pop("subdivisions", 8), laws=laws)
     imperfection = opts.pop("imperfection", 0.0)

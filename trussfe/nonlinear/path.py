@@ -139,8 +139,15 @@ class _Stepper:
         K = res["tangent"][self.free][:, self.free] if tangent else None
         return res, res["internal"][self.free], K
 
-    def step(self, uf0, lam0, fac0, ds, direction, du_prev, mode=None):
-        """One step of size ``ds``; returns (uf, lam, res, iterations) or None."""
+    def step(self, uf0, lam0, fac0, ds, direction, du_prev, mode=None, fac_iter=None,
+             refactor_ratio=0.5):
+        """One step of size ``ds`` from a converged state.
+
+        ``fac0`` is the tangent factor at the start (predictor); ``fac_iter``, if given, a
+        factor nearer the expected solution for the modified-Newton corrections, which
+        refactorise when the residual falls by less than ``refactor_ratio``.  Returns
+        ``(uf, lam, res, iterations, fresh factor or None)`` or None.
+        """
         mode = mode or self.control
         f = self.f
         try:
@@ -177,7 +184,9 @@ class _Stepper:
         # refactorised only when the residual stops falling fast (ratio > 0.5)
         modified = len(uf0) > self.full_newton_size
         fac, dt_fac, rprev, fresh = fac0, ut, np.inf, None
-        for it in range(1, self.max_iter + 1):
+        if fac_iter is not None and modified:
+            fac, dt_fac = fac_iter, fac_iter.solve(f)
+        for it in range(1, (self.max_iter if refactor_ratio <= 0.5 else 2 * self.max_iter) + 1):
             uf = uf0 + du
             lam = lam0 + dlam
             res, fint, K = self.eval(uf, tangent=not modified)
@@ -191,7 +200,7 @@ class _Stepper:
                     return None
                 return uf, lam, res, it, fresh
             try:
-                if not modified or rn > 0.5 * rprev:
+                if not modified or rn > refactor_ratio * rprev:
                     if K is None:
                         K = self.eval(uf)[2]
                     fac = factorize(K)
@@ -229,11 +238,14 @@ class _Stepper:
 
 
 def _mech_free(model: NonlinearModel) -> np.ndarray:
+    """Free joint coordinates for the rank check, shape (node, dim): joints still reached by a
+    live member, or loaded (a loaded joint left without members is a mechanism)."""
     s = model.structure
     return ~s.supports[:, : s.dim] & _touched(model)
 
 
 def _touched(model):
+    """Joint coordinates that take part in the assembly (member, support or load)."""
     s = model.structure
     t = np.zeros(s.n_nodes, dtype=bool)
     t[s.connectivity[model.alive].ravel()] = True
@@ -249,7 +261,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                 handover: bool = True, max_cuts: int = 12,
                 branch_step: float = 0.01,
                 max_displacement: float | None = None,
-                max_failures: int | None = None) -> PathResult:
+                max_failures: int | None = None,
+                max_step: float | None = None) -> PathResult:
     """Follow the equilibrium path of a structure under ``λ f``.
 
     Parameters
@@ -288,6 +301,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
         Stop when the monitored displacement exceeds this magnitude, m.
     max_failures : int, optional
         Stop after this many member failure events.
+    max_step : float, optional
+        Largest increment the step control may grow to (default 32 × the first one).
 
     Returns
     -------
@@ -362,6 +377,10 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
     ds = float(step)
     size = float(np.ptp(m.X, axis=0).max())
     ds_max = abs(ds) if control == "load" else 32.0 * abs(ds)
+    if max_step is not None:
+        if not (np.isfinite(max_step) and max_step > 0):
+            raise InputError("max_step", f"must be a positive number, got {max_step}")
+        ds_max = float(max_step)
     du_prev = None
     branch_dir = None
     neg = fac.negative
@@ -509,20 +528,29 @@ def _locate_failure(st, m, uf, lam, fac, dss, direction, du_prev, mode, mg0, uf1
     best = (uf1, lam1, res1, fac1)
     side = 0
     hist = [(a, ga), (b, gb)]
+    near = fac1                      # latest factor near the event, for the corrections
     for _ in range(60):
         (c0, g0), (c1, g1) = hist[-2], hist[-1]
         c = c1 - g1 * (c1 - c0) / (g1 - g0) if g1 != g0 else 0.5 * (a + b)
-        if not a < c < b or len(hist) == 2:
+        if len(hist) == 2:
+            # first guess: the earliest of the members' own linear crossing estimates (the
+            # maximum margin at θ = 1 is inflated by members that cross later in the step)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                th = -mg0[cand] / (mg1[cand] - mg0[cand])
+            c = float(np.nanmin(th)) if th.size else 0.5
+        if not a < c < b:
             c = b - gb * (b - a) / (gb - ga) if gb != ga else 0.5 * (a + b)
         if not a < c < b:
             c = 0.5 * (a + b)
-        new = st.step(uf, lam, fac, dss * c, direction, du_prev, mode)
+        new = st.step(uf, lam, fac, dss * c, direction, du_prev, mode, fac_iter=near,
+                      refactor_ratio=0.9)
         if new is None:
             c = 0.5 * (a + b)
             new = st.step(uf, lam, fac, dss * c, direction, du_prev, mode)
             if new is None:
                 break
         u2, l2, r2, _, f2 = new
+        near = f2 if f2 is not None else near
         gc = g(m.margins(r2))
         hist.append((c, gc))
         log.debug("locate: theta %.12g margin %.3e", c, gc)
@@ -693,16 +721,24 @@ def _release(st, uf0, lam, event_tolerance=1e-6, min_increment=1.0 / 4096):
         return uf0, m.evaluate(st.full(uf0)), False
     mg_start = m.margins(res)
 
+    modified = len(uf0) > st.full_newton_size
+    held = {"fac": None}            # modified Newton on large models: factor kept across solves
+
     def solve(u, target):
-        for _ in range(st.max_iter):
-            r, fi, K = st.eval(u)
+        rprev = np.inf
+        for _ in range(2 * st.max_iter if modified else st.max_iter):
+            r, fi, K = st.eval(u, tangent=not modified)
             R = fi - lam * st.f - target * r0
-            if np.linalg.norm(R) <= st.tol * scale:
+            rn = np.linalg.norm(R)
+            if rn <= st.tol * scale:
                 return u, r
             try:
-                u = u - factorize(K).solve(R)
+                if not modified or held["fac"] is None or rn > 0.5 * rprev:
+                    held["fac"] = factorize(K if K is not None else st.eval(u)[2])
+                u = u - held["fac"].solve(R)
             except SingularTangent:
                 return None
+            rprev = rn
             if not np.all(np.isfinite(u)):
                 return None
         return None

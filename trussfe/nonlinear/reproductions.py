@@ -97,7 +97,17 @@ def elastica_load_ratio(deflection_ratio: float) -> float:
 
 
 # ------------------------------------------------------------------------- studies
-def von_mises_truss(steps: int = 400, step: float = 0.002) -> dict:
+def _figure(result, name: str) -> dict:
+    """The load–displacement plot of a path as a PNG in a temporary folder."""
+    import tempfile
+    from pathlib import Path
+    from ..cli.cmd_postcritical import write_plot
+    path = Path(tempfile.mkdtemp(prefix="trussfe_postcritical_")) / f"{name}.png"
+    write_plot(path, result)
+    return {name: str(path)}
+
+
+def von_mises_truss(steps: int = 400, step: float = 0.002, figures: bool = True) -> dict:
     """Two-bar shallow truss (``meshes/postcritical_von_mises.toml``) against the closed form.
 
     Returns the limit loads found on the path (located by the inertia change of the tangent),
@@ -127,6 +137,7 @@ def von_mises_truss(steps: int = 400, step: float = 0.002) -> dict:
         "path_max_error": float(np.abs(lam - P).max() / Plim),
         "path_points": len(lam),
         "final_deflection": float(v[-1]),
+        **({"figures": _figure(res, "von_mises_path")} if figures else {}),
     }
 
 
@@ -176,7 +187,7 @@ def euler_column(subdivisions: int = 16) -> dict:
     return out
 
 
-def lattice_progressive() -> dict:
+def lattice_progressive(figures: bool = True) -> dict:
     """The lattice dome (``meshes/postcritical_dome.toml``) loses apex bars until it becomes a
     mechanism; checks that every event is justified and that the equilibrium form is the one
     the kinematics predicts.
@@ -225,6 +236,8 @@ def lattice_progressive() -> dict:
         t = mot.tensions
         idx = [list(np.flatnonzero(alive)).index(s.member_index(b)) for b in live_apex]
         out["apex_bars_in_tension"] = float(all(t[i] > 0 for i in idx))
+    if figures:
+        out["figures"] = _figure(res, "lattice_path")
     return out
 
 
@@ -245,6 +258,8 @@ def linear_buckling_agreement(subdivisions: int = 16) -> dict:
         doc = cmd_buckling.analyse(str(mesh_path("postcritical_euler_column.toml")),
                                    bar_model="pinned-beam", subdivisions=subdivisions)
         out["fe_core_load_factor"] = float(doc["load_factors"][0])
+        out["fe_core_relative_difference"] = abs(out["load_factor"] / out[
+            "fe_core_load_factor"] - 1.0)
     except Exception:  # not installed yet: the comparison is skipped, not faked
         pass
     return out

@@ -70,7 +70,7 @@ def factorize(K: sp.spmatrix) -> Factor:
     if n == 0:
         raise SingularTangent("no free degree of freedom")
     try:
-        lu = splu(K, permc_spec="COLAMD", diag_pivot_thresh=0.0,
+        lu = splu(K, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
                   options=dict(SymmetricMode=True))
     except RuntimeError as exc:
         raise SingularTangent(str(exc)) from None

@@ -2,6 +2,7 @@
 """Reading validation case files (TOML) into :class:`Case` objects, with input checks."""
 from __future__ import annotations
 
+import functools
 import math
 import tomllib
 from dataclasses import dataclass, field
@@ -115,7 +116,8 @@ def _quantity(raw: Any, item: str) -> Quantity:
     return q
 
 
-def analysis_names() -> list[str]:
+@functools.lru_cache(maxsize=1)
+def analysis_names() -> tuple[str, ...]:
     """Commands with an ``analyse(model_path, **options)`` entry point usable by a case."""
     import importlib
     import pkgutil
@@ -127,7 +129,17 @@ def analysis_names() -> list[str]:
             module = importlib.import_module(f"{cli.__name__}.{info.name}")
             if callable(getattr(module, "analyse", None)):
                 out.append(info.name[4:])
-    return sorted(out)
+    return tuple(sorted(out))
+
+
+def resolve_model_path(model: str, case_file: Path) -> Path:
+    """A case's model file: relative to the case file, else to the folder holding
+    ``validation/`` (so ``meshes/x.toml`` works from a checkout and an installed package)."""
+    candidates = [case_file.parent / model, case_file.parent.parent.parent / model]
+    for c in candidates:
+        if c.is_file():
+            return c.resolve()
+    return candidates[0].resolve()      # reported as missing when the case runs
 
 
 def load_case(path: str | Path) -> Case:
@@ -170,11 +182,17 @@ def _parse(data: dict, path: Path) -> Case:
     if "analysis" not in raw and "python" not in raw:
         raise InputError("case", "give 'analysis' (a trussfe command) or 'python' "
                                  "(\"module:function\")")
-    # With 'python', an 'analysis' key only says which kind of analysis the function runs.
     if "python" in raw:
+        # The function computes the result; an 'analysis' beside it only labels the case.
         case.python = _str(raw["python"], "case.python")
         if ":" not in case.python:
             raise InputError("case.python", "expected \"module:function\"")
+        if "analysis" in raw:
+            case.analysis = _str(raw["analysis"], "case.analysis")
+        for key in ("model", "catalogue", "parameters", "plot"):
+            if key in raw:
+                raise InputError(f"case.{key}", f"'{key}' applies to an 'analysis' case; a "
+                                                "python case builds its own model")
     else:
         case.analysis = _str(raw["analysis"], "case.analysis")
         names = analysis_names()
@@ -185,7 +203,7 @@ def _parse(data: dict, path: Path) -> Case:
             raise InputError("case", "an analysis case needs exactly one of 'model' (a file) "
                                      "or 'catalogue' (a trussfe.models function)")
     if "model" in raw:
-        case.model = (path.parent / _str(raw["model"], "case.model")).resolve()
+        case.model = resolve_model_path(_str(raw["model"], "case.model"), path)
     if "catalogue" in raw:
         case.catalogue = _str(raw["catalogue"], "case.catalogue")
         from .. import models
@@ -201,9 +219,6 @@ def _parse(data: dict, path: Path) -> Case:
     if "parameters" in raw and case.catalogue is None:
         raise InputError("case.parameters", "parameters apply to a 'catalogue' model only")
     if "plot" in raw:
-        if case.analysis is None:
-            raise InputError("case.plot", "plot draws the model of an 'analysis' case; a "
-                                          "python case returns its own figures")
         case.plot = _str(raw["plot"], "case.plot")
     tags = raw.get("tags", [])
     if not isinstance(tags, list) or not all(isinstance(t, str) for t in tags):

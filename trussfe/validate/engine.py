@@ -20,10 +20,33 @@ log = logging.getLogger(__name__)
 _TOKEN = re.compile(r'\s*(?:"([^"]*)"|([^.\[\]"]+)|\[\s*(-?\d+)\s*\])\s*(\.)?')
 
 
+def _tokens(path: str) -> list:
+    """Split a path into keys (str) and list indices (int)."""
+    out: list = []
+    pos = 0
+    text = path.strip()
+    if not text:
+        raise KeyError("empty path")
+    while pos < len(text):
+        m = _TOKEN.match(text, pos)
+        if not m or m.end() == pos:
+            raise KeyError(f"cannot parse path at '{text[pos:]}'")
+        quoted, key, index, _dot = m.groups()
+        if index is not None:
+            out.append(int(index))
+        else:
+            out.append(quoted if quoted is not None else key.strip())
+        pos = m.end()
+    return out
+
+
 def lookup(result: Any, path: str) -> Any:
     """The value at ``path`` in a nested dict/list result.
 
-    Path syntax: dot-separated keys, ``[i]`` list indices, keys with dots in double quotes.
+    Path syntax: dot-separated keys, ``[i]`` list indices (``.i`` works too), keys with dots
+    in double quotes.  A dict key that itself contains dots (a flat result such as
+    ``{"table_5_2.M6_axial": ...}``) is matched without quotes: the longest run of path
+    segments that is a key wins.
 
     Examples
     --------
@@ -31,45 +54,38 @@ def lookup(result: Any, path: str) -> Any:
     2.0
     >>> lookup({"a": [[1, 2], [3, 4]]}, "a[1][-1]")
     4
-    >>> lookup({"thesis.T3": {"v": 1.25}}, "thesis.T3.v")
-    1.25
+    >>> lookup({"t.O2.0": 17.18}, "t.O2.0"), lookup({"r": [5, 6]}, "r.1")
+    (17.18, 6)
     """
+    tokens = _tokens(path)
     obj = result
-    pos = 0
-    text = path.strip()
-    if not text:
-        raise KeyError("empty path")
-    while pos < len(text):
+    i = 0
+    while i < len(tokens):
+        tok = tokens[i]
         if isinstance(obj, dict):
-            # A flat result may use dotted keys ("thesis.M8_force"): the longest key that
-            # matches the rest of the path wins over splitting it at the dots.
-            rest = text[pos:]
-            cuts = [i for i, ch in enumerate(rest) if ch in ".["] + [len(rest)]
-            hit = next((c for c in reversed(cuts) if "." in rest[:c] and rest[:c] in obj), None)
-            if hit is not None:
-                obj = obj[rest[:hit]]
-                pos += hit + (1 if rest[hit:hit + 1] == "." else 0)
-                continue
-        m = _TOKEN.match(text, pos)
-        if not m or m.end() == pos:
-            raise KeyError(f"cannot parse path at '{text[pos:]}'")
-        quoted, key, index, _dot = m.groups()
-        if index is not None:
-            if not isinstance(obj, (list, tuple)):
-                raise KeyError(f"[{index}] applied to a {type(obj).__name__}")
-            i = int(index)
-            if not -len(obj) <= i < len(obj):
-                raise KeyError(f"index {i} out of range (length {len(obj)})")
-            obj = obj[i]
-        else:
-            k = quoted if quoted is not None else key.strip()
-            if not isinstance(obj, dict):
-                raise KeyError(f"key '{k}' applied to a {type(obj).__name__}")
-            if k not in obj:
-                raise KeyError(f"no key '{k}' (have: {', '.join(list(map(str, obj))[:8])}"
+            # longest run of string segments that is a key
+            for j in range(len(tokens), i, -1):
+                run = tokens[i:j]
+                if all(isinstance(t, str) for t in run) and ".".join(run) in obj:
+                    obj = obj[".".join(run)]
+                    i = j
+                    break
+            else:
+                name = tok if isinstance(tok, str) else f"[{tok}]"
+                raise KeyError(f"no key '{name}' (have: {', '.join(list(map(str, obj))[:8])}"
                                f"{', ...' if len(obj) > 8 else ''})")
-            obj = obj[k]
-        pos = m.end()
+            continue
+        if isinstance(obj, (list, tuple)):
+            if isinstance(tok, str) and re.fullmatch(r"-?\d+", tok):
+                tok = int(tok)
+            if not isinstance(tok, int):
+                raise KeyError(f"key '{tok}' applied to a list")
+            if not -len(obj) <= tok < len(obj):
+                raise KeyError(f"index {tok} out of range (length {len(obj)})")
+            obj = obj[tok]
+            i += 1
+            continue
+        raise KeyError(f"'{tok}' applied to a {type(obj).__name__}")
     return obj
 
 
@@ -118,13 +134,8 @@ class CaseResult:
 def compare(q: Quantity, value: Any) -> QuantityResult:
     """Compare one value with its reference: pass when ``|v − r| ≤ atol + rtol·|r|``."""
     out = QuantityResult(quantity=q)
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        try:
-            import numpy as np
-            if isinstance(value, np.generic) and np.ndim(value) == 0:
-                value = value.item()
-        except ImportError:  # pragma: no cover
-            pass
+    if hasattr(value, "item") and getattr(value, "ndim", None) == 0:
+        value = value.item()            # a numpy scalar
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         out.message = f"value at '{q.path}' is not a number: {value!r}"
         return out

@@ -110,7 +110,7 @@ def _md_cell(text: str) -> str:
 
 
 def _anchor(text: str) -> str:
-    return re.sub(r"[^a-z0-9_.-]", "", text.lower().replace(" ", "-"))
+    return re.sub(r"[^a-z0-9._-]", "", text.lower().replace(" ", "-"))
 
 
 # ------------------------------------------------------------------ html

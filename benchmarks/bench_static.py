@@ -1,0 +1,143 @@
+# SPDX-License-Identifier: MIT
+"""Static solve benchmark: chains of double-octahedral bays and an indeterminate space grid.
+
+For each model the script writes it as a line mesh (``.vtu``) plus a TOML file, then times
+separately reading the model (``read_model``), assembling (``discretise`` + stiffness and load
+vector) and solving (``solve_static``), and prints the relative residual ‖Ku − f‖/‖f‖ beside
+every time.  When OpenSeesPy is installed the same model is built and solved there
+(``Truss`` elements, ``BandSPD`` / ``UmfPack`` solvers) and the largest member-force
+difference is printed: member forces, not displacements, are compared, because the long chain
+is so badly conditioned that two correct solvers disagree on displacements beyond ~300 bays.
+
+Usage::
+
+    python benchmarks/bench_static.py                 # chains 10..10,000 bays, grids to 180x180
+    python benchmarks/bench_static.py --large         # adds 100,000 bays and a 10^6-DOF grid
+    python benchmarks/bench_static.py --no-opensees
+
+Targets (2-core machine): 10,000 bays read + assemble + solve ≤ 0.5 s; 100,000 bays ≤ 6 s;
+180 × 180 grid ≤ 4 s; a 10^6-DOF grid solved within 60 s.
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import meshio
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from _structures import space_grid  # noqa: E402
+
+from trussfe import read_model  # noqa: E402
+from trussfe.fem import discretise  # noqa: E402
+from trussfe.fem.static import solve_static  # noqa: E402
+from trussfe.models import double_octahedral_chain  # noqa: E402
+
+
+def write_as_mesh_model(structure, folder: Path) -> Path:
+    """Write ``structure`` as ``model.vtu`` + ``model.toml`` (geometry from the mesh)."""
+    mesh = meshio.Mesh(structure.coords, [("line", structure.connectivity)])
+    meshio.write(folder / "model.vtu", mesh)
+    sec, mat = structure.sections[0], structure.materials[0]
+    lines = ["[model]", f'name = "{structure.name}"', "dimension = 3", 'mesh = "model.vtu"', "",
+             "[materials.m]", f"E = {mat.E!r}", f"G = {mat.G!r}", f"density = {mat.density!r}",
+             "", "[sections.s]", f"outer_diameter = {sec.outer_diameter!r}",
+             f"inner_diameter = {sec.inner_diameter!r}", "",
+             "[groups.default]", 'section = "s"', 'material = "m"', "", "[supports]"]
+    for i in np.flatnonzero(structure.supports[:, :3].any(axis=1)):
+        dofs = [d for d, on in zip("xyz", structure.supports[i, :3]) if on]
+        lines.append(f"{i} = {dofs!r}".replace("'", '"'))
+    lines += ["", "[loads]"]
+    for i in np.flatnonzero(np.any(structure.loads[:, :3] != 0, axis=1)):
+        lines.append(f"{i} = {structure.loads[i, :3].tolist()!r}")
+    path = folder / "model.toml"
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def time_trussfe(structure, folder: Path) -> dict:
+    path = write_as_mesh_model(structure, folder)
+    t0 = time.perf_counter()
+    s = read_model(path)
+    t1 = time.perf_counter()
+    fe = discretise(s, "truss")
+    K = fe.stiffness()
+    f = fe.load_vector()
+    t2 = time.perf_counter()
+    res = solve_static(s, "truss", fe=fe)
+    t3 = time.perf_counter()
+    free = fe.free
+    r = K[free][:, free] @ res.u[free] - f[free]
+    return {"read": t1 - t0, "assemble": t2 - t1, "solve": t3 - t2, "total": t3 - t0,
+            "residual": float(np.linalg.norm(r) / np.linalg.norm(f[free])),
+            "forces": res.axial_force, "dof": int(free.size)}
+
+
+def time_opensees(structure) -> dict | None:
+    try:
+        import openseespy.opensees as ops
+    except Exception:
+        return None
+    t0 = time.perf_counter()
+    ops.wipe()
+    ops.model("basic", "-ndm", 3, "-ndf", 3)
+    for i, x in enumerate(structure.coords):
+        ops.node(i + 1, *map(float, x))
+    for i in np.flatnonzero(structure.supports[:, :3].any(axis=1)):
+        ops.fix(int(i) + 1, *map(int, structure.supports[i, :3]))
+    ops.uniaxialMaterial("Elastic", 1, float(structure.materials[0].E))
+    area = float(structure.sections[0].area)
+    for e, (a, b) in enumerate(structure.connectivity):
+        ops.element("Truss", e + 1, int(a) + 1, int(b) + 1, area, 1)
+    ops.timeSeries("Linear", 1)
+    ops.pattern("Plain", 1, 1)
+    for i in np.flatnonzero(np.any(structure.loads[:, :3] != 0, axis=1)):
+        ops.load(int(i) + 1, *map(float, structure.loads[i, :3]))
+    ops.system("UmfPack")
+    ops.numberer("RCM")
+    ops.constraints("Plain")
+    ops.integrator("LoadControl", 1.0)
+    ops.algorithm("Linear")
+    ops.analysis("Static")
+    t1 = time.perf_counter()
+    ok = ops.analyze(1)
+    t2 = time.perf_counter()
+    forces = np.array([ops.basicForce(e + 1)[0] for e in range(structure.n_members)])
+    ops.wipe()
+    return {"build": t1 - t0, "solve": t2 - t1, "total": t2 - t0, "ok": ok == 0,
+            "forces": forces}
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--large", action="store_true", help="add 100,000 bays and a 1e6-DOF grid")
+    ap.add_argument("--no-opensees", action="store_true")
+    args = ap.parse_args()
+    chains = [10, 100, 1000, 10_000] + ([100_000] if args.large else [])
+    grids = [20, 60, 120, 180] + ([340] if args.large else [])
+    cases = [(f"chain {n} bays", lambda n=n: double_octahedral_chain(n)) for n in chains]
+    cases += [(f"grid {n}x{n}", lambda n=n: space_grid(n)) for n in grids]
+    head = (f"{'model':<20}{'DOF':>9}{'read s':>9}{'assemble s':>11}{'solve s':>9}"
+            f"{'total s':>9}{'residual':>10}{'OpenSees s':>11}{'max |dN| N':>12}")
+    print(head)
+    print("-" * len(head))
+    for name, build in cases:
+        s = build()
+        with tempfile.TemporaryDirectory() as tmp:
+            r = time_trussfe(s, Path(tmp))
+        o = None if args.no_opensees or r["dof"] > 400_000 else time_opensees(s)
+        ops_t = f"{o['total']:11.2f}" if o and o["ok"] else f"{'–' if o is None else 'failed':>11}"
+        dn = (f"{np.max(np.abs(o['forces'] - r['forces'])):12.2e}" if o and o["ok"]
+              else f"{'–':>12}")
+        print(f"{name:<20}{r['dof']:>9}{r['read']:9.3f}{r['assemble']:11.3f}{r['solve']:9.3f}"
+              f"{r['total']:9.3f}{r['residual']:10.1e}{ops_t}{dn}", flush=True)
+    print(f"\nmachine: {os.cpu_count()} cores; OpenSeesPy timed as model build + analyze(1).")
+
+
+if __name__ == "__main__":
+    main()
