@@ -150,3 +150,44 @@ def test_cli_thesis_scheme_reproduces_base_simulation():
     summ = d["summary"]["members"]
     assert_allclose(summ["follower"]["max_von_mises"], 4.3393e6, rtol=5e-5)
     assert_allclose(summ["active"]["max_von_mises"], 2.6256e7, rtol=5e-5)
+
+
+def test_singular_position_detected_on_the_sparse_path(monkeypatch):
+    """The same flat triangle through the sparse (anchored SuperLU) solver path."""
+    import trussfe.rigid.linalg as la
+    monkeypatch.setattr(la, "DENSE_LIMIT", 0)
+    s = triangular_truss()
+    L = np.array([[3.9], [3.99], [4.0]])
+    m = Motion([0, 1, 2], [1], L, np.ones_like(L), np.zeros_like(L))
+    with pytest.raises(AnalysisError, match="singular"):
+        simulate(s, m)
+
+
+def test_sparse_and_dense_paths_agree(monkeypatch):
+    """Base Simulation through both solver paths: identical to round-off (rtol 1e-10)."""
+    import trussfe.rigid.linalg as la
+    s = triangular_truss()
+    m = load_motion(_mesh("triangular_truss_motion_3s.toml"), s)
+    dense = simulate(s, m)
+    monkeypatch.setattr(la, "DENSE_LIMIT", 0)
+    sparse = simulate(s, m)
+    assert_allclose(sparse.forces.end_force, dense.forces.end_force, rtol=0,
+                    atol=1e-10 * np.abs(dense.forces.end_force).max())
+    assert_allclose(sparse.kinematics.acceleration, dense.kinematics.acceleration, rtol=0,
+                    atol=1e-10 * np.abs(dense.kinematics.acceleration).max())
+
+
+def test_batched_positions_dense_and_sparse_agree(monkeypatch):
+    """A 500-step slew (coarse continuation + chord Newton over all steps) through both
+    solver paths: positions to 1e-11 m, forces to 1e-10 relative."""
+    import trussfe.rigid.linalg as la
+    from trussfe.rigid.motion import third_order_motion
+    from trussfe.rigid.reproductions import double_octahedron
+    s = double_octahedron((1.2289, 1.1079, 1.1079), gravity=-9.81, top_load=46.0)
+    m = third_order_motion(s, [1.2289, 1.1079, 1.1079], [1.1079, 1.2289, 1.2289], 2.0, 500)
+    a = simulate(s, m)
+    monkeypatch.setattr(la, "DENSE_LIMIT", 0)
+    b = simulate(s, m)
+    assert_allclose(b.kinematics.coords, a.kinematics.coords, rtol=0, atol=1e-11)
+    assert_allclose(b.forces.end_force, a.forces.end_force, rtol=0,
+                    atol=1e-10 * np.abs(a.forces.end_force).max())

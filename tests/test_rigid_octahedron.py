@@ -108,3 +108,18 @@ def test_composite_cg_and_inertia_match_appendix_c():
     i7 = (massls / 48 * (3 * od ** 2 + 3 * idd ** 2 + 4 * ls ** 2) + massbase * lbase ** 2 / 12
           + massls * (l7 - ls / 2 - cg7) ** 2 + massbase * (cg7 - lbase / 2) ** 2)
     assert_allclose([cg[0, k], inertia[0, k]], [cg7, i7], rtol=1e-10)
+
+
+def test_two_shears_and_two_moments():
+    """Local components (eqs. 4.68–4.74) recombine to the shear and moment magnitudes, and the
+    frame is orthonormal and perpendicular to every member."""
+    from trussfe.rigid.sections import local_components, member_frames
+    s = double_octahedron((1.2289, 1.1079, 1.1079), gravity=9.81, top_load=46.0)
+    r = simulate(s)
+    V, M = local_components(r.sections)
+    assert_allclose(np.hypot(V[..., 0], V[..., 1]), r.sections.shear_magnitude, atol=1e-12)
+    assert_allclose(np.hypot(M[..., 0], M[..., 1]), r.sections.moment_magnitude, atol=1e-12)
+    b1, b2 = member_frames(r.kinematics.unit)
+    e = r.kinematics.unit
+    for a, b in ((b1, b2), (b1, e), (b2, e)):
+        assert_allclose(np.einsum("...i,...i", a, b), 0.0, atol=1e-14)

@@ -42,6 +42,10 @@ def _simulate(model_path, motion=None, steps=None, scheme="exact", sections=7, p
     structure = read_model(model_path)
     mot = None
     if motion is not None:
+        # A relative motion path that does not exist here is looked up beside the model.
+        beside = Path(model_path).parent / motion
+        if not Path(motion).is_file() and not Path(motion).is_absolute() and beside.is_file():
+            motion = beside
         mot = load_motion(motion, structure, steps=steps)
     elif steps is not None:
         raise InputError("--steps", "needs --motion (without a motion the model is at rest)")
@@ -51,7 +55,8 @@ def _simulate(model_path, motion=None, steps=None, scheme="exact", sections=7, p
 def analyse(model_path, **options) -> dict:
     """Run ``simulate`` and return the CONTRACT §3 JSON document.
 
-    Options: ``motion`` (path), ``steps``, ``scheme``, ``sections``.
+    Options: ``motion`` (path; a relative path not found from the working directory is taken
+    relative to the model file), ``steps``, ``scheme``, ``sections``.
     """
     from ..rigid.output import to_json
     return to_json(_simulate(model_path, **options))

@@ -35,7 +35,7 @@ import numpy as np
 from ..errors import AnalysisError
 from ..kinematics.assembly import solve_positions
 from ..model.structure import Structure
-from .linalg import CompatSolver, SingularStep
+from .linalg import ANCHOR_SPACING, CompatSolver, SingularStep
 from .motion import Motion
 
 log = logging.getLogger(__name__)
@@ -212,10 +212,15 @@ def _batched_newton(structure, pattern, L, X, tolerance=1e-12, iterations=30):
     Lk = L[:, pattern.loaded_idx]
     flat = X.reshape(nt, -1)
     d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
+    vals = pattern.values(d / np.linalg.norm(d, axis=2)[..., None])
+    # The chord Jacobian is the guess's compatibility matrix at anchor steps (every 8th);
+    # each step uses its nearest anchor (large systems do the same inside CompatSolver).
+    anchors = np.unique(np.r_[np.arange(0, nt, ANCHOR_SPACING), nt - 1])
+    owner = np.searchsorted((anchors[1:] + anchors[:-1]) / 2.0, np.arange(nt))
     try:
-        solver = CompatSolver(pattern.rows, pattern.cols,
-                              pattern.values(d / np.linalg.norm(d, axis=2)[..., None]),
-                              pattern.m)
+        inv = CompatSolver(pattern.rows, pattern.cols, vals[anchors], pattern.m).inverse
+        solver = (None if inv is not None
+                  else CompatSolver(pattern.rows, pattern.cols, vals, pattern.m))
     except SingularStep:
         return X, np.zeros(nt, dtype=bool)
     for _ in range(iterations):
@@ -223,7 +228,10 @@ def _batched_newton(structure, pattern, L, X, tolerance=1e-12, iterations=30):
         r = np.linalg.norm(d, axis=2)[:, pattern.loaded_idx] - Lk
         if np.abs(r).max() <= tolerance * scale:
             break
-        dx = solver.solve(-r)
+        if solver is None:
+            dx = np.einsum("tfm,tm->tf", inv[owner], -r)
+        else:
+            dx = solver.solve(-r, approximate=True)
         if not np.all(np.isfinite(dx)):
             return X, np.zeros(nt, dtype=bool)
         flat[:, pattern.free_flat] += dx
@@ -270,7 +278,13 @@ def _solve_compat(structure: Structure, pattern: _Pattern, solver: CompatSolver,
     """Solve B x = rhs (nt, m) for the free node coordinates; returns (nt, n, dim)."""
     nt = rhs.shape[0]
     out = np.zeros((nt, structure.n_nodes * structure.dim))
-    out[:, pattern.free_flat] = solver.solve(rhs[:, pattern.loaded_idx])
+    try:
+        out[:, pattern.free_flat] = solver.solve(rhs[:, pattern.loaded_idx])
+    except SingularStep as s:
+        raise AnalysisError(f"motion: step {s.step}", "the assembly is at a singular position "
+                            "(its compatibility matrix is rank deficient): its velocities and "
+                            "accelerations are not determined there; choose a motion that "
+                            "avoids it") from None
     return out.reshape(nt, structure.n_nodes, structure.dim)
 
 

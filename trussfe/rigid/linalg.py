@@ -14,7 +14,11 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 #: Largest system solved as a dense stack.
-DENSE_LIMIT = 120
+DENSE_LIMIT = 36
+#: Steps per anchor factorisation of large systems (:class:`CompatSolver`).
+ANCHOR_SPACING = 8
+#: Refinement sweeps allowed before a step counts as singular.
+REFINEMENT_SWEEPS = 200
 #: Reciprocal condition number below which a step counts as singular.  The positions are
 #: solved to 1e-12 of the truss size, so a singular (flat) position is only resolved to an
 #: angle of about 1e-6: below 1e-5 the forces would be round-off magnified by 1e5 and more.
@@ -171,31 +175,78 @@ class CompatSolver:
                 raise SingularStep(int(bad[0]))
             self.inverse = inv
             return
-        chunk = max(1, 200_000 // n)
+        # Large systems: SuperLU factorisations of B at anchor steps only; every step is
+        # solved by refinement against its own B with the nearest anchor's factors.  B changes
+        # little between neighbouring steps, so a few refinement sweeps reach round-off, at a
+        # fraction of the cost of one factorisation per step.
+        self.rows, self.cols, self.vals = rows, cols, vals
+        self.anchors = np.unique(np.linspace(0, self.nt - 1,
+                                             max(1, -(-self.nt // ANCHOR_SPACING))).round()
+                                 .astype(int))
+        mids = (self.anchors[1:] + self.anchors[:-1]) / 2.0
+        self.owner = np.searchsorted(mids, np.arange(self.nt))
         scale = np.abs(vals).max()
-        for k0 in range(0, self.nt, chunk):
-            k1 = min(self.nt, k0 + chunk)
-            nk = k1 - k0
-            off = (np.arange(nk) * n)[:, None]
-            A = sp.csc_matrix((vals[k0:k1].ravel(), ((rows[None, :] + off).ravel(),
-                                                     (cols[None, :] + off).ravel())),
-                              shape=(nk * n, nk * n))
+        self.lus = []
+        for k in self.anchors:
+            A = sp.csc_matrix((vals[k], (rows, cols)), shape=(n, n))
             try:
                 lu = spla.splu(A)
             except RuntimeError:
-                raise SingularStep(k0) from None
-            d = np.abs(lu.U.diagonal())
-            if d.min() <= SINGULAR_RCOND * max(scale, 1e-300):
-                raise SingularStep(k0 + int(lu.perm_c[np.argmin(d)]) // n)
-            self.blocks.append((k0, k1, lu))
+                raise SingularStep(int(k)) from None
+            if np.abs(lu.U.diagonal()).min() <= SINGULAR_RCOND * max(scale, 1e-300):
+                raise SingularStep(int(k))
+            self.lus.append(lu)
+        # All steps' B_k as one block-diagonal CSR matrix, for the residuals.
+        off = (np.arange(self.nt) * n)[:, None]
+        self._block = sp.csr_matrix((vals.ravel(), ((rows[None, :] + off).ravel(),
+                                                    (cols[None, :] + off).ravel())),
+                                    shape=(self.nt * n, self.nt * n))
+        self._block_t = self._block.T.tocsr()
 
-    def solve(self, rhs: np.ndarray, transpose: bool = False) -> np.ndarray:
-        """x with B_k x_k = rhs_k (or B_kᵀ x_k = rhs_k), rhs of shape (nt, n)."""
+    def _matvec(self, x: np.ndarray, transpose: bool) -> np.ndarray:
+        """B_k x_k (or B_kᵀ x_k) for every step, vectorised over steps."""
+        A = self._block_t if transpose else self._block
+        return (A @ x.ravel()).reshape(x.shape)
+
+    def _anchor_solve(self, r: np.ndarray, transpose: bool) -> np.ndarray:
+        dx = np.empty_like(r)
+        for j, lu in enumerate(self.lus):
+            idx = np.flatnonzero(self.owner == j)
+            if idx.size:
+                dx[idx] = lu.solve(np.ascontiguousarray(r[idx].T),
+                                   trans="T" if transpose else "N").T
+        return dx
+
+    def solve(self, rhs: np.ndarray, transpose: bool = False,
+              approximate: bool = False) -> np.ndarray:
+        """x with B_k x_k = rhs_k (or B_kᵀ x_k = rhs_k), rhs of shape (nt, n).
+
+        ``approximate=True`` (large systems) returns the nearest anchor's solution without
+        refinement — enough for an outer iteration that corrects itself (chord Newton).
+        """
         if self.inverse is not None:
             sub = "tji,tj->ti" if transpose else "tij,tj->ti"
             return np.einsum(sub, self.inverse, rhs)
-        out = np.empty_like(rhs, dtype=float)
-        for k0, k1, lu in self.blocks:
-            out[k0:k1] = lu.solve(np.ascontiguousarray(rhs[k0:k1]).ravel(),
-                                  trans="T" if transpose else "N").reshape(k1 - k0, self.n)
-        return out
+        if self.n == 0:
+            return np.zeros_like(rhs, dtype=float)
+        rhs = np.asarray(rhs, dtype=float)
+        if approximate:
+            return self._anchor_solve(rhs, transpose)
+        x = np.zeros_like(rhs)
+        r = rhs.copy()
+        prev = np.full(self.nt, np.inf)
+        bmax = np.abs(self.vals).max(axis=1)
+        for _ in range(REFINEMENT_SWEEPS):
+            x += self._anchor_solve(r, transpose)
+            r = rhs - self._matvec(x, transpose)
+            err = np.abs(r).max(axis=1)
+            # Round-off floor of the residual: a few ulps of |B| |x| and of |rhs|.
+            tol = 1e-13 * (np.abs(rhs).max(axis=1) + 4.0 * bmax * np.abs(x).max(axis=1)) + 1e-300
+            if np.all(err <= tol):
+                return x
+            stalled = (err > tol) & (err >= 0.95 * prev)
+            if np.any(stalled):
+                # No contraction: B_k is (nearly) singular or far from its anchor.
+                raise SingularStep(int(np.flatnonzero(stalled)[0]))
+            prev = err
+        raise SingularStep(int(np.flatnonzero(err > tol)[0]))

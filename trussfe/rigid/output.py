@@ -62,8 +62,15 @@ def to_json(res: SimulationResult) -> dict:
 
 
 def write_npz(path: str | Path, res: SimulationResult) -> None:
-    """All arrays of the result in one NumPy ``.npz`` file."""
+    """All arrays of the result in one NumPy ``.npz`` file.
+
+    ``shear_local`` and ``moment_local`` (nt, m, k, 2) are the two shears and two bending
+    moments in the member frames of :func:`trussfe.rigid.sections.member_frames`.
+    """
+    from .sections import local_components
+    shear_local, moment_local = local_components(res.sections)
     arrays = {
+        "shear_local": shear_local, "moment_local": moment_local,
         "time": res.time, "coords": res.kinematics.coords,
         "velocity": res.kinematics.velocity, "acceleration": res.kinematics.acceleration,
         "end_force": res.forces.end_force, "reactions": res.forces.reactions,

@@ -225,41 +225,26 @@ def double_octahedron_static(top_load: float = 44.498) -> dict:
 
 
 # ------------------------------------------------------------------ flat dicts for validation
-def _flatten(d: dict, prefix: str = "") -> dict:
-    out = {}
-    for k, v in d.items():
-        key = f"{prefix}{k}"
-        if isinstance(v, dict):
-            out.update(_flatten(v, key + "."))
-        elif isinstance(v, (list, tuple)):
-            for i, x in enumerate(v):
-                out[f"{key}.{i}"] = x
-        else:
-            out[key] = v
-    return out
-
-
 def validation_triangle_static() -> dict:
-    """Flat quantities of :func:`static_reactions` (``table_3_2.O1.1`` …)."""
-    return _flatten(static_reactions())
+    """Quantities of :func:`static_reactions` (paths ``table_3_2.O1[1]`` …)."""
+    return static_reactions()
 
 
 def validation_base_simulation() -> dict:
-    """Flat quantities of the Base Simulation, 40 kg, 5 s and 10 s variants, in both
-    kinematics schemes: ``thesis.T3_m10.follower.max_von_mises``, ``exact.…``."""
-    out = {}
+    """The Base Simulation, 40 kg, 5 s and 10 s variants, in both kinematics schemes
+    (paths ``thesis.T3_m10.follower.max_von_mises``, ``exact.…``)."""
+    out: dict = {"thesis": {}, "exact": {}}
     for scheme in ("thesis", "exact"):
         for T, mass in ((3.0, 10.0), (3.0, 40.0), (5.0, 10.0), (10.0, 10.0)):
-            key = f"{scheme}.T{T:g}_m{mass:g}"
-            out.update(_flatten(base_simulation(T, mass, scheme=scheme), key + "."))
+            out[scheme][f"T{T:g}_m{mass:g}"] = base_simulation(T, mass, scheme=scheme)
     return out
 
 
 def validation_double_octahedron() -> dict:
-    """Flat quantities of Tables 5.2–5.4 (``table_5_2.N1_reaction.0`` …), with 44.498 N and,
-    for comparison, the stated 46.0 N (``stated_46N.…``)."""
-    out = _flatten(double_octahedron_static())
-    out.update(_flatten(double_octahedron_static(46.0), "stated_46N."))
+    """Tables 5.2–5.4 (paths ``table_5_2.N1_reaction[0]`` …), with 44.498 N and, for
+    comparison, the stated 46.0 N (``stated_46N.…``)."""
+    out = double_octahedron_static()
+    out["stated_46N"] = double_octahedron_static(46.0)
     return out
 
 

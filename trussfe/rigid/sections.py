@@ -176,3 +176,34 @@ def section_stresses(structure: Structure, sf: SectionForces, *,
     s1 = np.sqrt(sig_t ** 2 + shear_factor * tau ** 2)
     s2 = np.abs(sig_t) + np.abs(sig_m)
     return SectionStresses(axial=sig_t, shear=tau, bending=sig_m, s1=s1, s2=s2)
+
+
+def member_frames(unit: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Two unit vectors perpendicular to each member, (…, 3) each (Lacy's b1, b2).
+
+    b1 = e × k / |e × k| with k the global z axis (the global x axis for a member within 25°
+    of z), b2 = e × b1.  In 2-D (e in the x–y plane) b1 is the in-plane normal and b2 = −z:
+    the planar shear is the b1 component and the planar moment minus the b2 component.
+    """
+    helper = np.where(np.abs(unit[..., 2:3]) < 0.9, [0.0, 0.0, 1.0], [1.0, 0.0, 0.0])
+    b1 = np.cross(unit, helper)
+    b1 /= np.linalg.norm(b1, axis=-1, keepdims=True)
+    b2 = np.cross(unit, b1)
+    return b1, b2
+
+
+def local_components(sf: SectionForces) -> tuple[np.ndarray, np.ndarray]:
+    """The two shear forces and two bending moments of every section (Lacy eqs. 4.68–4.74).
+
+    Returns
+    -------
+    shear, moment : ndarray, shape (nt, m, k, 2)
+        Components along / about the member frame (b1, b2) of :func:`member_frames`.
+    """
+    b1, b2 = member_frames(sf.unit)
+    frames = np.stack([b1, b2], axis=-2)[:, :, None]               # (t, m, 1, 2, 3)
+    shear = np.einsum("tmkj,tmkcj->tmkc", sf.shear, np.broadcast_to(
+        frames, sf.shear.shape[:3] + (2, 3)))
+    moment = np.einsum("tmkj,tmkcj->tmkc", sf.moment, np.broadcast_to(
+        frames, sf.moment.shape[:3] + (2, 3)))
+    return shear, moment

@@ -168,9 +168,13 @@ def simulate(structure: Structure, motion: Motion | None = None, *, scheme: str 
         # blocks that fit in the processor cache are several times faster than whole-motion
         # arrays (the work is memory-bound).
         X = solve_motion_positions(structure, motion, progress=progress)
+        starts = range(0, nt, step)
+        if progress:
+            from tqdm import tqdm
+            starts = tqdm(starts, desc="forces", unit="block", leave=False)
         parts = [_steps(structure, _slice_motion(motion, k0, min(nt, k0 + step)),
                         X[k0:k0 + step], scheme, bodies, act_idx, **opts)
-                 for k0 in range(0, nt, step)]
+                 for k0 in starts]
         kin, f, fs, sf, ss, st, sts, mid, act_force, act_static, cmoment = (
             _concat([p[i] for p in parts]) for i in range(len(parts[0])))
     else:
