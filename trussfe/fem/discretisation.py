@@ -43,6 +43,8 @@ from __future__ import annotations
 
 import logging
 from dataclasses import dataclass
+from dataclasses import field as dc_field
+from typing import Callable
 
 import numpy as np
 import scipy.sparse as sp
@@ -128,25 +130,52 @@ class _Field:
 
 @dataclass
 class _Group:
-    """The sub-elements of one kind ("bar" or "frame") on one exploded mesh."""
+    """The sub-elements of one kind ("bar" or "frame") on one exploded mesh.
+
+    The scikit-fem bases, the selection ``S`` and the transformation ``T`` are built on first
+    use (``build`` gives them): the global matrices of truss bars are assembled without them
+    (:meth:`FEModel._bar_matrix`), so a large pin-jointed model never pays for them.
+    """
 
     kind: str
     elements: np.ndarray            # global element numbers, (n_el_g,)
     ncomp: int                      # element DOF components per end
-    fields: list[_Field]
-    n_local: int                    # size of the local (field) vector
-    S: sp.csc_matrix                # field DOFs <- element components
-    G_coo: object                   # COO tuple (or a callable giving it) of G, built lazily
-    T: sp.csr_matrix                # S @ G
+    build: Callable = dc_field(repr=False)   # () -> dict(fields, n_local, S, G_coo, T)
+    _parts: dict | None = dc_field(default=None, repr=False)
     _G: sp.csr_matrix | None = None
     _K_local: sp.csr_matrix | None = None
+
+    def _part(self, name: str):
+        if self._parts is None:
+            self._parts = self.build()
+        return self._parts[name]
+
+    @property
+    def fields(self) -> list[_Field]:
+        """The fields (u, v, w, θ) of this group with their scikit-fem bases."""
+        return self._part("fields")
+
+    @property
+    def n_local(self) -> int:
+        """Size of the local (field) vector."""
+        return self._part("n_local")
+
+    @property
+    def S(self) -> sp.csc_matrix:
+        """Field DOFs <- element components."""
+        return self._part("S")
+
+    @property
+    def T(self) -> sp.csr_matrix:
+        """Field DOFs <- global DOFs, ``S @ G``."""
+        return self._part("T")
 
     @property
     def G(self) -> sp.csr_matrix:
         """Element components (member axes) <- global DOFs."""
         if self._G is None:
-            coo = self.G_coo() if callable(self.G_coo) else self.G_coo
-            vals, rows, cols, shape = coo
+            coo = self._part("G_coo")
+            vals, rows, cols, shape = coo() if callable(coo) else coo
             self._G = sp.csr_matrix((vals, (rows, cols)), shape=shape)
         return self._G
 
@@ -164,6 +193,97 @@ def _exploded_mesh(h: np.ndarray) -> MeshLine1:
     p[0, 1::2] = h
     t = np.ascontiguousarray(np.arange(2 * n, dtype=np.int64).reshape(n, 2).T)
     return MeshLine1(p, t)
+
+
+_REFERENCE: dict | None = None
+
+
+def reference_bar() -> dict:
+    """The P1 forms of :mod:`trussfe.fem.forms` assembled by scikit-fem on one element of unit
+    length with unit coefficients.
+
+    On an element ``[0, h]`` the P1 shape functions are those of ``[0, 1]`` in ``ξ = x/h``, so
+    ``∫ c u' v' dx = (c/h) ∫ u_ξ v_ξ dξ`` and ``∫ c u v dx = c h ∫ u v dξ``: a two-node bar's
+    matrices are these reference matrices times one scalar per element.
+
+    Returns
+    -------
+    dict
+        ``"stiffness"`` (2, 2): ∫ u' v' (axial and geometric stiffness, scaled by EA/L or N/L);
+        ``"mass"`` (2, 2): ∫ u v (scaled by ρAL); ``"load"`` (2,): ∫ v (scaled by qL).
+
+    Examples
+    --------
+    >>> ref = reference_bar()
+    >>> ref["stiffness"].tolist(), (6 * ref["mass"]).round(12).tolist(), ref["load"].tolist()
+    ([[1.0, -1.0], [-1.0, 1.0]], [[2.0, 1.0], [1.0, 2.0]], [0.5, 0.5])
+    """
+    global _REFERENCE
+    if _REFERENCE is None:
+        basis = Basis(_exploded_mesh(np.ones(1)), ElementLineP1(), intorder=_INTORDER)
+        one = np.ones((1, basis.X.shape[-1]))
+        _REFERENCE = {
+            "stiffness": asm(forms.axial_stiffness, basis, EA=one).toarray(),
+            "mass": asm(forms.mass, basis, rhoA=one).toarray(),
+            "load": asm(forms.distributed_load, basis, q=one),
+        }
+    return _REFERENCE
+
+
+def _node_block_matrix(n_nodes: int, dim: int, ends: np.ndarray, ref: np.ndarray,
+                       blocks: np.ndarray, n_dof: int) -> sp.csr_matrix:
+    """Σ over bars of ``ref ⊗ blocks[e]`` on the translations of the bars' two end nodes.
+
+    Parameters
+    ----------
+    n_nodes, dim : int
+    ends : ndarray of int, shape (e, 2)
+        Start and end node of every bar.
+    ref : ndarray, shape (2, 2)
+        Reference matrix over the two ends (see :func:`reference_bar`), symmetric.
+    blocks : ndarray, shape (e, dim, dim)
+        Symmetric per-bar block, already scaled (e.g. EA/L · e eᵀ).
+    n_dof : int
+        Order of the result; node ``i``'s translations are DOFs ``dim·i … dim·i + dim − 1``.
+
+    Returns
+    -------
+    scipy.sparse.csr_matrix, shape (n_dof, n_dof)
+        Canonical (sorted, summed) and without stored zeros.
+
+    Notes
+    -----
+    The matrix is built as a block-sparse (BSR) matrix with one ``dim × dim`` block per node
+    pair: the diagonal blocks are summed per node with ``bincount``, the off-diagonal ones are
+    one per bar and direction, so one sort of ``n + 2e`` block keys replaces the sort of the
+    ``(2·dim)² e`` entries of a COO assembly.
+    """
+    a, b = ends[:, 0], ends[:, 1]
+    flat = blocks.reshape(-1, dim * dim)                          # (bar, dim·dim)
+    touched = np.bincount(ends.ravel(), minlength=n_nodes) > 0
+    diag = np.empty((n_nodes, dim * dim))
+    for c in range(dim * dim):
+        diag[:, c] = (ref[0, 0] * np.bincount(a, flat[:, c], minlength=n_nodes)
+                      + ref[1, 1] * np.bincount(b, flat[:, c], minlength=n_nodes))
+    nodes = np.flatnonzero(touched)
+    rows = np.concatenate([nodes, a, b])
+    cols = np.concatenate([nodes, b, a])
+    data = np.concatenate([diag[nodes], ref[0, 1] * flat, ref[1, 0] * flat])
+    order = np.argsort(rows * n_nodes + cols, kind="stable")
+    rows, cols, data = rows[order], cols[order], data[order]
+    indptr = np.zeros(n_nodes + 1, dtype=np.int64)
+    np.cumsum(np.bincount(rows, minlength=n_nodes), out=indptr[1:])
+    K = sp.bsr_matrix((data.reshape(-1, dim, dim), cols, indptr),
+                      shape=(n_nodes * dim, n_nodes * dim))
+    if np.any((rows[1:] == rows[:-1]) & (cols[1:] == cols[:-1])):
+        K.sum_duplicates()                                        # two bars on one node pair
+    K = K.tocsr()
+    K.eliminate_zeros()
+    if n_dof > K.shape[0]:                                         # rotations etc. follow
+        indptr = np.concatenate([K.indptr, np.full(n_dof - K.shape[0], K.indptr[-1])])
+        K = sp.csr_matrix((K.data, K.indices, indptr), shape=(n_dof, n_dof))
+    K.has_sorted_indices = True
+    return K
 
 
 def _qp(basis: Basis, values: np.ndarray) -> np.ndarray:
@@ -306,7 +426,11 @@ class FEModel:
         for kind, sel in (("bar", ~is_frame[emem]), ("frame", is_frame[emem])):
             els = np.flatnonzero(sel)
             if els.size:
-                self.groups.append(self._group(kind, els, h[els], ends, emem, released))
+                ncomp = (dim + nrot) if kind == "frame" else dim
+                self.groups.append(_Group(
+                    kind=kind, elements=els, ncomp=ncomp,
+                    build=lambda kind=kind, els=els: self._group(kind, els, h[els], ends, emem,
+                                                                 released)))
         self.n_elements = n_el
         log.info("discretised %d members into %d elements, %d DOFs (%s model)",
                  m, n_el, self.n_dof, self.bar_model)
@@ -336,7 +460,8 @@ class FEModel:
                 raise InputError(owner, f"{name} is missing or not positive (member "
                                  f"{s.member_ids[i]}); {why}: give a positive {name}")
 
-    def _group(self, kind, els, h, ends, emem, released) -> _Group:
+    def _group(self, kind, els, h, ends, emem, released) -> dict:
+        """Bases, field layout, ``S``, ``G`` and ``T`` of one element group."""
         dim, nrot = self.ndim, self.nrot
         mesh = _exploded_mesh(h)
         P1 = Basis(mesh, ElementLineP1(), intorder=_INTORDER)
@@ -376,8 +501,7 @@ class FEModel:
             fast = self._bar_transformation(els, ends, emem, fields, ne, off)
             if fast is not None:
                 T, G_coo = fast
-                return _Group(kind=kind, elements=els, ncomp=ncomp, fields=fields,
-                              n_local=off, S=S, G_coo=G_coo, T=T)
+                return dict(fields=fields, n_local=off, S=S, G_coo=G_coo, T=T)
         # G: element components <- global DOFs, in pieces
         rows, cols, vals = [], [], []
 
@@ -442,8 +566,8 @@ class FEModel:
         # T = S G without a sparse product: map each G entry through S's single entry
         T = sp.csr_matrix((vals * comp_sign.ravel()[rows], (comp_row.ravel()[rows], cols)),
                           shape=(off, self.n_dof))
-        return _Group(kind=kind, elements=els, ncomp=ncomp, fields=fields, n_local=off,
-                      S=S, G_coo=(vals, rows, cols, (ne * nc2, self.n_dof)), T=T)
+        return dict(fields=fields, n_local=off, S=S,
+                    G_coo=(vals, rows, cols, (ne * nc2, self.n_dof)), T=T)
 
     def _bar_transformation(self, els, ends, emem, fields, ne, n_local):
         """T of two-node bars joining two joints, built directly in CSR form.
@@ -557,12 +681,54 @@ class FEModel:
         return out
 
     # ------------------------------------------------------------------ global matrices
-    def stiffness(self) -> sp.csr_matrix:
-        """Global elastic stiffness K = Σ Tᵀ K_local T, shape (n_dof, n_dof)."""
-        K = sp.csr_matrix((self.n_dof, self.n_dof))
+    def _bar_geometry(self, g: _Group) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """Members, end nodes, unit vectors and lengths of the two-node bars of group ``g``."""
+        mem = self.element_member[g.elements]
+        return (mem, self.structure.connectivity[mem], self.rotation[mem, 0],
+                self.element_length[g.elements])
+
+    def _bar_matrix(self, g: _Group, ref: str, scale: np.ndarray, transverse: bool = False,
+                    full: bool = False) -> sp.csr_matrix:
+        """Global matrix of the bars of group ``g``: the scikit-fem reference matrix
+        ``ref`` (:func:`reference_bar`) times ``scale`` per bar, on its axial field only
+        (block ``e eᵀ``), on its transverse fields only (``I − e eᵀ``) or on all its
+        translation fields (``full``: ``I``, since the rows of the rotation are orthonormal).
+
+        Equal to ``Tᵀ K_local T`` of the general path to round-off (tested), without building
+        bases or ``T``.
+        """
+        _, ends, ex, _ = self._bar_geometry(g)
+        dim = self.ndim
+        if full:
+            blocks = np.broadcast_to(np.eye(dim), (ex.shape[0], dim, dim)) * scale[:, None, None]
+        else:
+            P = ex[:, :, None] * ex[:, None, :]                      # (bar, dim, dim) e eᵀ
+            blocks = (np.eye(dim)[None] - P) if transverse else P
+            blocks = blocks * scale[:, None, None]
+        return _node_block_matrix(self.structure.n_nodes, dim, ends, reference_bar()[ref],
+                                  blocks, self.n_dof)
+
+    def _sum_groups(self, bar, general) -> sp.csr_matrix:
+        """Σ over groups: ``bar(g)`` for the bar group, ``general(g)`` = Tᵀ X_local T else."""
+        out = None
         for g in self.groups:
-            K = K + g.T.T @ self.local_stiffness(g) @ g.T
-        return K.tocsr()
+            A = bar(g) if g.kind == "bar" else (g.T.T @ general(g) @ g.T).tocsr()
+            out = A if out is None else out + A
+        return sp.csr_matrix((self.n_dof, self.n_dof)) if out is None else out.tocsr()
+
+    def stiffness(self) -> sp.csr_matrix:
+        """Global elastic stiffness K = Σ Tᵀ K_local T, shape (n_dof, n_dof).
+
+        Truss bars (two nodes, axial stiffness only) are assembled as EA/L times the
+        scikit-fem reference matrix on ``e eᵀ`` blocks (:func:`reference_bar`); frame members
+        through their exploded local meshes.
+        """
+        s = self.structure
+
+        def bar(g):
+            mem, _, _, L = self._bar_geometry(g)
+            return self._bar_matrix(g, "stiffness", (s.E * s.area)[mem] / L)
+        return self._sum_groups(bar, self.local_stiffness)
 
     def mass(self, kind: str = "consistent", include_nodal_masses: bool = True
              ) -> sp.csr_matrix:
@@ -579,13 +745,21 @@ class FEModel:
         """
         s = self.structure
         if kind == "consistent":
-            M = sp.csr_matrix((self.n_dof, self.n_dof))
-            for g in self.groups:
-                M = M + g.T.T @ self.local_mass(g) @ g.T
+            def bar(g):
+                mem, _, _, L = self._bar_geometry(g)
+                return self._bar_matrix(g, "mass", (s.density * s.area)[mem] * L, full=True)
+            M = self._sum_groups(bar, self.local_mass)
         elif kind == "lumped":
             diag = np.zeros(self.n_dof)
             for g in self.groups:
                 mem = self.element_member[g.elements]
+                if g.kind == "bar":                  # half ρAL on each end's translations
+                    ends = self.structure.connectivity[mem]
+                    half = 0.5 * (s.density * s.area)[mem] * self.element_length[g.elements]
+                    w = np.bincount(ends.ravel(), np.repeat(half, 2),
+                                    minlength=s.n_nodes)
+                    diag[self.node_dofs[:, : self.ndim]] += w[:, None]
+                    continue
                 half = 0.5 * (s.density * s.area)[mem] * self.element_length[g.elements]
                 # translation components of both ends, weighted through G (rotation-free)
                 ne, nc2 = g.elements.size, 2 * g.ncomp
@@ -612,10 +786,11 @@ class FEModel:
         element_axial_force : ndarray, shape (n_elements,)
         """
         N = np.asarray(element_axial_force, dtype=float).reshape(self.n_elements)
-        Kg = sp.csr_matrix((self.n_dof, self.n_dof))
-        for g in self.groups:
-            Kg = Kg + g.T.T @ self.local_geometric_stiffness(g, N) @ g.T
-        return Kg.tocsr()
+
+        def bar(g):
+            return self._bar_matrix(g, "stiffness", N[g.elements] / self.element_length[
+                g.elements], transverse=True)
+        return self._sum_groups(bar, lambda g: self.local_geometric_stiffness(g, N))
 
     def load_vector(self, self_weight: bool = True, nodal_loads: bool = True,
                     gravity: np.ndarray | None = None, loads: np.ndarray | None = None
@@ -640,7 +815,15 @@ class FEModel:
         grav = s.gravity if gravity is None else np.asarray(gravity, dtype=float)
         if self_weight and np.any(grav):
             for g in self.groups:
-                f += g.T.T @ self.local_self_weight(g, grav)
+                if g.kind == "bar":      # P1 load form: ∫ v = h/2 at each end (reference_bar)
+                    mem, ends, _, L = self._bar_geometry(g)
+                    ref = reference_bar()["load"]
+                    w = (s.density * s.area)[mem] * L
+                    per_node = (ref[0] * np.bincount(ends[:, 0], w, minlength=s.n_nodes)
+                                + ref[1] * np.bincount(ends[:, 1], w, minlength=s.n_nodes))
+                    f[self.node_dofs[:, : self.ndim]] += per_node[:, None] * grav[None, :]
+                else:
+                    f += g.T.T @ self.local_self_weight(g, grav)
             f[self.node_dofs[:, : self.ndim]] += s.masses[:, None] * grav[None, :]
         if nodal_loads:
             P = s.loads if loads is None else np.asarray(loads, dtype=float)
@@ -693,7 +876,17 @@ class FEModel:
             f_local = self.element_self_weight_local()
         out = np.zeros((self.n_elements, 2, 6))
         dim = self.ndim
+        s = self.structure
         for g, fl in zip(self.groups, f_local):
+            if g.kind == "bar" and not np.any(fl):
+                # axial field only: end forces ∓EA/L e·(u_b − u_a) (reference_bar stiffness)
+                mem, ends, ex, L = self._bar_geometry(g)
+                ut = u_global[self.node_dofs[ends][:, :, :dim]]            # (bar, end, dim)
+                k = reference_bar()["stiffness"]
+                ua = np.einsum("ed,esd->es", ex, ut)                       # axial end displ.
+                axial = (s.E * s.area)[mem, None] / L[:, None] * (ua @ k.T)
+                out[g.elements, :, 0] = axial
+                continue
             fe = self.local_stiffness(g) @ (g.T @ u_global) - fl
             comp = (g.S.T @ fe).reshape(g.elements.size, 2, g.ncomp)
             out[g.elements, :, :dim] = comp[:, :, :dim]
