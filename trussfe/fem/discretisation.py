@@ -142,6 +142,7 @@ class _Group:
     ncomp: int                      # element DOF components per end
     build: Callable = dc_field(repr=False)   # () -> dict(fields, n_local, S, G_coo, T)
     _parts: dict | None = dc_field(default=None, repr=False)
+    size: int | None = None         # n_local when known without building
     _G: sp.csr_matrix | None = None
     _K_local: sp.csr_matrix | None = None
 
@@ -158,7 +159,7 @@ class _Group:
     @property
     def n_local(self) -> int:
         """Size of the local (field) vector."""
-        return self._part("n_local")
+        return self.size if self.size is not None else self._part("n_local")
 
     @property
     def S(self) -> sp.csc_matrix:
@@ -429,6 +430,8 @@ class FEModel:
                 ncomp = (dim + nrot) if kind == "frame" else dim
                 self.groups.append(_Group(
                     kind=kind, elements=els, ncomp=ncomp,
+                    # bars: dim P1 fields, two points per element on the exploded mesh
+                    size=2 * dim * els.size if kind == "bar" else None,
                     build=lambda kind=kind, els=els: self._group(kind, els, h[els], ends, emem,
                                                                  released)))
         self.n_elements = n_el

@@ -13,7 +13,10 @@ Backends
 ``banded``
     Banded Cholesky after reverse Cuthill–McKee reordering
     (:class:`trussfe.fem.modal.BandedCholesky`): the cheapest factorisation of long, narrow
-    structures such as a chain of bays (half-bandwidth ~21 whatever the length).
+    structures such as a chain of bays (half-bandwidth 17 whatever the length).  When
+    round-off leaves a pivot of a badly conditioned chain non-positive, banded LU with
+    partial pivoting (:class:`trussfe.fem.modal.BandedLU`, backend name ``banded-lu``) takes
+    over.
 ``auto``
     Banded Cholesky when the system has at least ``BANDED_MIN_DOF`` unknowns and a reordered
     half-bandwidth of at most ``BANDED_MAX_BANDWIDTH``; otherwise PARDISO when it is installed
@@ -131,13 +134,16 @@ class Factor:
         return x
 
 
-def factorize(A: sp.spmatrix, backend: str = "auto") -> Factor:
+def factorize(A: sp.spmatrix, backend: str = "auto", anchored: np.ndarray | None = None
+              ) -> Factor:
     """Factorise a sparse square matrix.
 
     Parameters
     ----------
     A : sparse matrix, shape (n, n)
-    backend : {"auto", "superlu", "pardiso"}
+    backend : {"auto", "superlu", "pardiso", "banded"}
+    anchored : ndarray of bool, shape (n,), optional
+        Rows coupled to a support: the banded factorisation orders them last.
 
     Returns
     -------
@@ -158,13 +164,13 @@ def factorize(A: sp.spmatrix, backend: str = "auto") -> Factor:
     A = sp.csr_matrix(A)
     n = A.shape[0]
     if backend in ("auto", "banded"):
-        from .modal import BandedCholesky
+        from .modal import banded_factor
 
         if backend == "banded" or n >= BANDED_MIN_DOF:
             limit = BANDED_MAX_BANDWIDTH if backend == "auto" else max(n - 1, 0)
-            chol = BandedCholesky.build(A, max_bandwidth=limit)
-            if chol is not None:
-                return Factor(matrix=A, backend="banded", n=n, _solve=chol.solve)
+            band = banded_factor(A, max_bandwidth=limit, anchored=anchored)
+            if band is not None:
+                return Factor(matrix=A, backend=band.kind, n=n, _solve=band.solve)
         backend = "pardiso" if n >= PARDISO_MIN_DOF and pardiso_available() else "superlu"
     if backend == "pardiso":
         return _pardiso(A)

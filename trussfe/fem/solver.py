@@ -53,6 +53,46 @@ class Factorised:
         return u
 
 
+def free_submatrix(A: sp.spmatrix, free: np.ndarray) -> sp.csr_matrix:
+    """``A[free][:, free]`` of a sparse matrix, in one vectorised pass over its entries.
+
+    Parameters
+    ----------
+    A : sparse matrix, shape (n, n)
+    free : ndarray of int
+        Increasing indices of the kept rows and columns.
+
+    Returns
+    -------
+    scipy.sparse.csr_matrix, shape (len(free), len(free))
+        Column indices stay sorted when they were sorted in ``A``.
+
+    Examples
+    --------
+    >>> A = sp.csr_matrix(np.arange(16.0).reshape(4, 4))
+    >>> free_submatrix(A, np.array([0, 2, 3])).toarray()
+    array([[ 0.,  2.,  3.],
+           [ 8., 10., 11.],
+           [12., 14., 15.]])
+    """
+    A = sp.csr_matrix(A)
+    n = A.shape[0]
+    free = np.asarray(free, dtype=np.int64)
+    if free.size == n:
+        return A
+    new = np.full(n, -1, dtype=np.int64)
+    new[free] = np.arange(free.size)
+    counts = np.diff(A.indptr)
+    row = np.repeat(new, counts)                                # new row of every entry
+    col = new[A.indices]
+    keep = (row >= 0) & (col >= 0)
+    indptr = np.zeros(free.size + 1, dtype=np.int64)
+    np.cumsum(np.bincount(row[keep], minlength=free.size), out=indptr[1:])
+    out = sp.csr_matrix((A.data[keep], col[keep], indptr), shape=(free.size, free.size))
+    out.has_sorted_indices = bool(A.has_sorted_indices)
+    return out
+
+
 def factorise(K: sp.spmatrix, free: np.ndarray, fe=None, item: str = "structure",
               backend: str = "auto") -> Factorised:
     """Factorise K_ff (:func:`trussfe.fem.linsolve.factorize`), raising
@@ -70,7 +110,7 @@ def factorise(K: sp.spmatrix, free: np.ndarray, fe=None, item: str = "structure"
     backend : {"auto", "superlu", "pardiso"}
         Linear-solver backend.
     """
-    Kff = K[free][:, free].tocsr()
+    Kff = free_submatrix(K, free)
     n = Kff.shape[0]
     if n == 0:
         return Factorised(lu=_Empty(), free=free, n_dof=K.shape[0])
@@ -78,11 +118,23 @@ def factorise(K: sp.spmatrix, free: np.ndarray, fe=None, item: str = "structure"
     if np.any(d <= 0):                     # a DOF nothing is attached to
         _raise_mechanism(Kff, free, fe, item)
     try:
-        lu = factorize(Kff, backend=backend)
+        lu = factorize(Kff, backend=backend, anchored=_anchored(K, free))
     except SingularMatrixError:
         _raise_mechanism(Kff, free, fe, item)
     log.debug("factorised %d free DOFs (%s)", n, lu.backend)
     return Factorised(lu=lu, free=free, n_dof=K.shape[0])
+
+
+def _anchored(K: sp.spmatrix, free: np.ndarray) -> np.ndarray:
+    """For each free DOF, whether K couples it to a supported DOF."""
+    K = sp.csr_matrix(K)
+    fixed = np.ones(K.shape[0], dtype=bool)
+    fixed[free] = False
+    if not fixed.any():
+        return np.zeros(free.size, dtype=bool)
+    row = np.repeat(np.arange(K.shape[0]), np.diff(K.indptr))
+    hits = np.bincount(row, fixed[K.indices], minlength=K.shape[0])
+    return hits[free] > 0
 
 
 class _Empty:
