@@ -250,8 +250,9 @@ def parse_model(data: dict, base_dir: Path | str = ".", source: str = "") -> Str
     sections = {k: parse_section(k, v) for k, v in _table(data, "sections").items()}
 
     if "mesh" in model:
-        (node_ids, coords, member_ids, conn, secs, mats, beam, rel, orient) = _mesh_geometry(
-            str(model["mesh"]), base_dir, dim, data, sections, materials)
+        (node_ids, coords, member_ids, conn, secs, mats, beam, rel, orient,
+         group_code) = _mesh_geometry(str(model["mesh"]), base_dir, dim, data, sections,
+                                      materials)
     else:
         nodes = _table(data, "nodes", required=True)
         if not nodes:
@@ -273,6 +274,7 @@ def parse_model(data: dict, base_dir: Path | str = ".", source: str = "") -> Str
         beam = np.array([p[3] for p in parsed], dtype=bool)
         rel = np.array([p[4] for p in parsed], dtype=bool).reshape(-1, 2)
         orient = np.array([p[5] for p in parsed]).reshape(-1, 3)
+        group_code = None
 
     n = len(node_ids)
     node_index = {k: i for i, k in enumerate(node_ids)}
@@ -297,10 +299,26 @@ def parse_model(data: dict, base_dir: Path | str = ".", source: str = "") -> Str
                   connectivity=conn, sections=secs, materials=mats, is_beam=beam, releases=rel,
                   supports=supports, loads=loads, masses=masses, gravity=gravity,
                   orientation=orient, source=source)
+    if group_code is not None:
+        _share_property_groups(s, group_code)
     for key, parser in _EXTENSIONS.items():
         if key in data:
             s.extensions[key] = parser(data[key], s, base_dir)
     return s
+
+
+def _share_property_groups(s: Structure, code: np.ndarray) -> None:
+    """Hand the structure the member grouping the mesh reader already knows.
+
+    ``Structure`` finds which members share a section or material object by their ids
+    (:meth:`Structure._prop`), a Python pass over every member; the cell-set code of a mesh
+    member gives the same grouping from one ``np.unique``.  Members with equal codes share
+    their section and material objects (``_mesh_geometry``), so the cached grouping is exact.
+    """
+    _, first, inverse = np.unique(code, return_index=True, return_inverse=True)
+    cache = s.__dict__.setdefault("_prop_cache", {})
+    for objs in (s.sections, s.materials):
+        cache[("_groups", id(objs), len(objs))] = (first, inverse.reshape(-1))
 
 
 def _bad_coords(k, v, dim):
@@ -419,11 +437,15 @@ def _mesh_geometry(mesh_name, base_dir, dim, data, sections, materials):
         raw["nodes"] = ["0", "1"]
         _, sec_of[c], mat_of[c], beam_of[c], rel_of[c], orient_of[c] = _parse_member(
             f"groups.{gname}", raw, {"0": 0, "1": 1}, sections, materials)
-    codes = code.tolist()
-    node_ids = [str(i) for i in range(coords.shape[0])]
-    member_ids = [str(i) for i in range(m)]
-    return (node_ids, coords, member_ids, conn, [sec_of[c] for c in codes],
-            [mat_of[c] for c in codes], beam_of[code], rel_of[code], orient_of[code])
+    # per-member lists by one object-array gather (no Python loop over millions of cells)
+    sec_obj = np.empty(len(names), dtype=object)
+    mat_obj = np.empty(len(names), dtype=object)
+    for c in used:
+        sec_obj[c], mat_obj[c] = sec_of[c], mat_of[c]
+    node_ids = list(map(str, range(coords.shape[0])))
+    member_ids = list(map(str, range(m)))
+    return (node_ids, coords, member_ids, conn, sec_obj[code].tolist(),
+            mat_obj[code].tolist(), beam_of[code], rel_of[code], orient_of[code], code)
 
 
 def read_model(path: str | Path) -> Structure:
