@@ -145,6 +145,7 @@ class _Group:
     size: int | None = None         # n_local when known without building
     _G: sp.csr_matrix | None = None
     _K_local: sp.csr_matrix | None = None
+    _K_global: sp.csr_matrix | None = None   # bar groups: global stiffness, once assembled
 
     def _part(self, name: str):
         if self._parts is None:
@@ -260,12 +261,13 @@ def _node_block_matrix(n_nodes: int, dim: int, ends: np.ndarray, ref: np.ndarray
     ``(2·dim)² e`` entries of a COO assembly.
     """
     a, b = ends[:, 0], ends[:, 1]
+    ne = a.size
     flat = blocks.reshape(-1, dim * dim)                          # (bar, dim·dim)
     touched = np.bincount(ends.ravel(), minlength=n_nodes) > 0
-    diag = np.empty((n_nodes, dim * dim))
-    for c in range(dim * dim):
-        diag[:, c] = (ref[0, 0] * np.bincount(a, flat[:, c], minlength=n_nodes)
-                      + ref[1, 1] * np.bincount(b, flat[:, c], minlength=n_nodes))
+    # diagonal blocks: node-by-bar incidence (ref00 at the start, ref11 at the end) @ blocks
+    incidence = sp.csc_matrix((np.tile([ref[0, 0], ref[1, 1]], ne), ends.ravel(),
+                               np.arange(0, 2 * ne + 1, 2)), shape=(n_nodes, ne))
+    diag = incidence @ flat                                       # (node, dim·dim)
     nodes = np.flatnonzero(touched)
     rows = np.concatenate([nodes, a, b])
     cols = np.concatenate([nodes, b, a])
@@ -729,8 +731,10 @@ class FEModel:
         s = self.structure
 
         def bar(g):
-            mem, _, _, L = self._bar_geometry(g)
-            return self._bar_matrix(g, "stiffness", (s.E * s.area)[mem] / L)
+            if g._K_global is None:     # kept: static recovery and later solves reuse it
+                mem, _, _, L = self._bar_geometry(g)
+                g._K_global = self._bar_matrix(g, "stiffness", (s.E * s.area)[mem] / L)
+            return g._K_global.copy()
         return self._sum_groups(bar, self.local_stiffness)
 
     def mass(self, kind: str = "consistent", include_nodal_masses: bool = True
@@ -884,10 +888,12 @@ class FEModel:
             if g.kind == "bar" and not np.any(fl):
                 # axial field only: end forces ∓EA/L e·(u_b − u_a) (reference_bar stiffness)
                 mem, ends, ex, L = self._bar_geometry(g)
-                ut = u_global[self.node_dofs[ends][:, :, :dim]]            # (bar, end, dim)
+                # node translations are the first n·dim global DOFs (see _build)
+                U = u_global[: s.n_nodes * dim].reshape(s.n_nodes, dim)
                 k = reference_bar()["stiffness"]
-                ua = np.einsum("ed,esd->es", ex, ut)                       # axial end displ.
-                axial = (s.E * s.area)[mem, None] / L[:, None] * (ua @ k.T)
+                ua = np.stack([np.einsum("ed,ed->e", ex, U[ends[:, 0]]),
+                               np.einsum("ed,ed->e", ex, U[ends[:, 1]])], axis=1)
+                axial = ((s.E * s.area)[mem] / L)[:, None] * (ua @ k.T)     # (bar, end)
                 out[g.elements, :, 0] = axial
                 continue
             fe = self.local_stiffness(g) @ (g.T @ u_global) - fl

@@ -194,9 +194,11 @@ def solve_static(structure: Structure, bar_model: str = "truss",
                              f"c (outer-fibre distance) is missing (member {s.member_ids[i]}); "
                              "the bending stress of a beam needs it: give c")
         s1, s2 = von_mises(F, s.area, s.Iy, s.Iz, s.c)
-    else:                               # no moments anywhere: bending properties unused
-        ones = np.ones(m)
-        s1, s2 = von_mises(F, s.area, ones, ones, ones)
+    else:
+        # truss bars only: section forces are axial, so von Mises is |N|/A at S1 and S2
+        # (von_mises with V = M = 0), computed directly for large pin-jointed models
+        s1 = np.abs(F[..., 0]) / s.area[:, None]
+        s2 = s1.copy()
     vm = np.fmax(s1, s2)
     result = StaticResult(
         fe=fe, u=u, f=f, displacements=fe.node_values(u), reactions=fe.node_values(reac),
