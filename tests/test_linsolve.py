@@ -42,3 +42,26 @@ def test_many_right_hand_sides(backend):
     F = np.random.default_rng(1).normal(size=(20, 3))
     U = factorize(K, backend).solve(F)
     assert_allclose(K @ U, F, rtol=1e-10, atol=1e-12)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_symmetric_singular_and_indefinite(backend):
+    """``symmetric=True`` is a hint: a singular stiffness is still refused, and an indefinite but
+    regular matrix is still solved (LU fallback).  [[1, 2], [2, 1]] x = [3, 3] → x = [1, 1]."""
+    with pytest.raises(SingularMatrixError):
+        factorize(_spring_chain(30, grounded=False), backend, symmetric=True)
+    A = sp.csr_matrix(np.array([[1.0, 2.0, 0.0], [2.0, 1.0, 0.0], [0.0, 0.0, 4.0]]))
+    x = factorize(A, backend, symmetric=True).solve(np.array([3.0, 3.0, 4.0]))
+    assert_allclose(x, [1.0, 1.0, 1.0], rtol=1e-12)
+
+
+def test_symmetric_pardiso_solves_chain():
+    """PARDISO's symmetric LDLᵀ (mtype −2): node k of a grounded chain of unit springs moves
+    k under a unit tip load (analytic)."""
+    if not pardiso_available():
+        pytest.skip("pypardiso not installed")
+    n = 40
+    f = np.zeros(n)
+    f[-1] = 1.0
+    fac = factorize(_spring_chain(n), "pardiso", symmetric=True)
+    assert_allclose(fac.solve(f), np.arange(1, n + 1), rtol=1e-12)

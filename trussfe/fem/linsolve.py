@@ -134,8 +134,8 @@ class Factor:
         return x
 
 
-def factorize(A: sp.spmatrix, backend: str = "auto", anchored: np.ndarray | None = None
-              ) -> Factor:
+def factorize(A: sp.spmatrix, backend: str = "auto", anchored: np.ndarray | None = None,
+              symmetric: bool = False) -> Factor:
     """Factorise a sparse square matrix.
 
     Parameters
@@ -144,6 +144,9 @@ def factorize(A: sp.spmatrix, backend: str = "auto", anchored: np.ndarray | None
     backend : {"auto", "superlu", "pardiso", "banded"}
     anchored : ndarray of bool, shape (n,), optional
         Rows coupled to a support: the banded factorisation orders them last.
+    symmetric : bool
+        ``A`` is symmetric (a stiffness, ``K − σM``): PARDISO then factorises its upper
+        triangle as LDLᵀ instead of a general LU.
 
     Returns
     -------
@@ -173,7 +176,7 @@ def factorize(A: sp.spmatrix, backend: str = "auto", anchored: np.ndarray | None
                 return Factor(matrix=A, backend=band.kind, n=n, _solve=band.solve)
         backend = "pardiso" if n >= PARDISO_MIN_DOF and pardiso_available() else "superlu"
     if backend == "pardiso":
-        return _pardiso(A)
+        return _pardiso(A, symmetric=symmetric)
     if backend != "superlu":
         raise ValueError(f"unknown linear-solver backend '{backend}'")
     try:
@@ -186,15 +189,24 @@ def factorize(A: sp.spmatrix, backend: str = "auto", anchored: np.ndarray | None
     return Factor(matrix=A, backend="superlu", n=n, _solve=lu.solve)
 
 
-def _pardiso(A: sp.csr_matrix) -> Factor:
+def _pardiso(A: sp.csr_matrix, symmetric: bool = False) -> Factor:
     import pypardiso
 
     _locate_mkl()
     A = A.sorted_indices() if not A.has_sorted_indices else A
-    solver = pypardiso.PyPardisoSolver()
+    if symmetric:
+        # real symmetric indefinite (PARDISO mtype -2, LDLᵀ with Bunch–Kaufman pivoting) on the
+        # upper triangle: about half the work of the general LU (195k-DOF space grid here:
+        # 2.6 s against 4.5 s), and it still reports perturbed pivots of a singular matrix
+        M = sp.triu(A, format="csr")
+        M.sort_indices()
+        solver = pypardiso.PyPardisoSolver(mtype=-2)
+    else:
+        M = A
+        solver = pypardiso.PyPardisoSolver()
     solver.set_iparm(8, 2)  # two steps of PARDISO's own iterative refinement
     try:
-        solver.factorize(A)
+        solver.factorize(M)
     except ValueError as exc:  # pypardiso refuses empty rows/columns as singular
         raise SingularMatrixError(str(exc)) from None
     # iparm(14) (1-based): number of perturbed pivots -> numerically singular matrix
@@ -204,7 +216,7 @@ def _pardiso(A: sp.csr_matrix) -> Factor:
         raise SingularMatrixError(f"{perturbed} perturbed pivot(s)")
 
     def solve(b):
-        return solver.solve(A, b)
+        return solver.solve(M, b)
 
     return Factor(matrix=A, backend="pardiso", n=A.shape[0], _solve=solve)
 

@@ -465,7 +465,7 @@ def generalized_eigen(Kff: sp.spmatrix, Mff: sp.spmatrix, count: int, sigma: flo
         lam = sigma + 1.0 / mu
     else:
         if factor is None:
-            factor = banded_factor(A) or factorize(A)
+            factor = banded_factor(A) or factorize(A, symmetric=True)
         # The Lanczos iteration needs no refined solves: use the factor's plain solve.
         solve = getattr(factor, "_solve", factor.solve)
         op = spla.LinearOperator((n, n), matvec=solve, dtype=float)
@@ -580,7 +580,7 @@ def solve_modes(structure: Structure, count: int = 6, mass: str = "consistent",
         factor = banded_factor(Kff)
         if factor is None:
             try:
-                factor = factorize(Kff)
+                factor = factorize(Kff, symmetric=True)
             except SingularMatrixError:
                 rigid = null_space(Kff).shape[1]
     if rigid:

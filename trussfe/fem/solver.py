@@ -118,7 +118,7 @@ def factorise(K: sp.spmatrix, free: np.ndarray, fe=None, item: str = "structure"
     if np.any(d <= 0):                     # a DOF nothing is attached to
         _raise_mechanism(Kff, free, fe, item)
     try:
-        lu = factorize(Kff, backend=backend, anchored=_anchored(K, free))
+        lu = factorize(Kff, backend=backend, anchored=_anchored(K, free), symmetric=True)
     except SingularMatrixError:
         _raise_mechanism(Kff, free, fe, item)
     log.debug("factorised %d free DOFs (%s)", n, lu.backend)
