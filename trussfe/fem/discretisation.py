@@ -217,8 +217,9 @@ def reference_bar() -> dict:
     Examples
     --------
     >>> ref = reference_bar()
-    >>> ref["stiffness"].tolist(), (6 * ref["mass"]).round(12).tolist(), ref["load"].tolist()
-    ([[1.0, -1.0], [-1.0, 1.0]], [[2.0, 1.0], [1.0, 2.0]], [0.5, 0.5])
+    >>> [(c * ref[k]).round(12).tolist() for k, c in (("stiffness", 1), ("mass", 6),
+    ...                                                 ("load", 2))]
+    [[[1.0, -1.0], [-1.0, 1.0]], [[2.0, 1.0], [1.0, 2.0]], [1.0, 1.0]]
     """
     global _REFERENCE
     if _REFERENCE is None:

@@ -64,6 +64,8 @@ class StaticResult:
         :meth:`FEModel.geometric_stiffness` for a linear buckling analysis.
     residual : float
         ‖K u − f‖ / ‖f‖ over the free DOFs.
+    backend : str
+        Linear-solver backend that factorised K_ff (:mod:`trussfe.fem.linsolve`).
     """
 
     fe: FEModel
@@ -82,6 +84,7 @@ class StaticResult:
     max_von_mises: np.ndarray
     element_axial_force: np.ndarray
     residual: float
+    backend: str = ""
 
     @property
     def structure(self) -> Structure:
@@ -205,7 +208,8 @@ def solve_static(structure: Structure, bar_model: str = "truss",
         axial_force=N_mid, axial_stress=N_mid / s.area, strain=N_mid / (s.E * s.area),
         end_forces=ends, station_x=x, section_forces=F, von_mises_s1=s1, von_mises_s2=s2,
         max_von_mises=np.nanmax(vm, axis=1) if m else np.zeros(0),
-        element_axial_force=0.5 * (fel[:, 1, 0] - fel[:, 0, 0]), residual=residual)
+        element_axial_force=0.5 * (fel[:, 1, 0] - fel[:, 0, 0]), residual=residual,
+        backend=getattr(fac.lu, "backend", "none"))
     log.info("static solve: %d DOFs, residual %.2e", fe.n_dof, residual)
     return result
 
