@@ -134,3 +134,18 @@ def test_duplicate_bars_are_summed():
     _close(two, 2 * one.toarray())
     e = np.array([0.6, 0.8])
     assert_allclose(one.toarray()[:2, :2], MAT.E * SEC.area * np.outer(e, e), rtol=1e-14)
+
+
+def test_free_submatrix_equals_scipy_indexing():
+    """free_submatrix(K, free) is scipy's K[free][:, free] (independent implementation),
+    including fixed DOFs at both ends and in the middle of the numbering."""
+    from trussfe.fem.solver import free_submatrix
+
+    fe = discretise(double_octahedral_chain(4))
+    K = fe.stiffness()
+    rng = np.random.default_rng(5)
+    fixed = np.r_[0, 1, rng.choice(fe.n_dof, 10, replace=False), fe.n_dof - 1]
+    free = np.setdiff1d(np.arange(fe.n_dof), fixed)
+    got = free_submatrix(K, free)
+    assert_allclose(got.toarray(), K[free][:, free].toarray(), rtol=0, atol=0)
+    assert got.has_sorted_indices

@@ -80,14 +80,17 @@ def free_submatrix(A: sp.spmatrix, free: np.ndarray) -> sp.csr_matrix:
     free = np.asarray(free, dtype=np.int64)
     if free.size == n:
         return A
-    new = np.full(n, -1, dtype=np.int64)
-    new[free] = np.arange(free.size)
-    counts = np.diff(A.indptr)
-    row = np.repeat(new, counts)                                # new row of every entry
+    idx = A.indices.dtype
+    new = np.full(n, -1, dtype=idx)
+    new[free] = np.arange(free.size, dtype=idx)
+    is_free = new >= 0
     col = new[A.indices]
-    keep = (row >= 0) & (col >= 0)
-    indptr = np.zeros(free.size + 1, dtype=np.int64)
-    np.cumsum(np.bincount(row[keep], minlength=free.size), out=indptr[1:])
+    keep = (col >= 0) & np.repeat(is_free, np.diff(A.indptr))   # kept column in a kept row
+    # entries of kept row k are those kept between A.indptr[free[k]] and the next row
+    kept_before = np.zeros(A.nnz + 1, dtype=np.int64)
+    np.cumsum(keep, out=kept_before[1:])
+    indptr = kept_before[A.indptr[np.r_[free, n]]]
+    indptr[-1] = kept_before[-1]
     out = sp.csr_matrix((A.data[keep], col[keep], indptr), shape=(free.size, free.size))
     out.has_sorted_indices = bool(A.has_sorted_indices)
     return out
