@@ -149,3 +149,22 @@ def test_free_submatrix_equals_scipy_indexing():
     got = free_submatrix(K, free)
     assert_allclose(got.toarray(), K[free][:, free].toarray(), rtol=0, atol=0)
     assert got.has_sorted_indices
+
+
+def test_large_chain_mechanism_still_detected():
+    """A 300-bay chain (5,400 free DOFs: the banded path) is statically determinate
+    (Lacy ch. 4: 18 members, 6 nodes per bay); without one member it is a mechanism.  Round-off
+    keeps its pivots above the singularity tests of every backend (banded LU, SuperLU,
+    PARDISO: measured), so the residual check of solve_static must catch it."""
+    from trussfe.errors import MechanismError
+    from trussfe.fem.static import solve_static
+
+    s = double_octahedral_chain(300)
+    keep = np.ones(s.n_members, bool)
+    keep[18 * 150 + 3] = False                     # one member in the middle bay
+    for backend in ("auto", "superlu"):
+        with pytest.raises(MechanismError) as err:
+            solve_static(s.subset_members(keep), backend=backend)
+        assert err.value.mechanisms >= 1
+    ok = solve_static(s)
+    assert ok.backend in ("banded", "banded-lu") and ok.residual < 1e-8

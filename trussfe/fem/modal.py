@@ -102,13 +102,14 @@ def _band_layout(A: sp.spmatrix, max_bandwidth: int, anchored: np.ndarray | None
     A = A.copy() if not A.has_canonical_format else A
     A.sum_duplicates()
     n = A.shape[0]
-    row = np.repeat(np.arange(n, dtype=np.int64), np.diff(A.indptr))
-    col = A.indices.astype(np.int64)
+    it = A.indices.dtype                    # int32 below 2**31 entries: half the traffic
+    row = np.repeat(np.arange(n, dtype=it), np.diff(A.indptr))
+    col = A.indices
     bw = int(np.max(np.abs(row - col))) if A.nnz else 0
     perm = np.arange(n, dtype=np.int64)
     if bw > NATURAL_BANDWIDTH_OK:
         rcm = reverse_cuthill_mckee(A, symmetric_mode=True).astype(np.int64)
-        inv = np.empty(n, dtype=np.int64)
+        inv = np.empty(n, dtype=it)
         inv[rcm] = np.arange(n)
         bw_rcm = int(np.max(np.abs(inv[row] - inv[col]))) if A.nnz else 0
         if bw_rcm < bw:

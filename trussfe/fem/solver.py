@@ -135,9 +135,12 @@ def _anchored(K: sp.spmatrix, free: np.ndarray) -> np.ndarray:
     fixed[free] = False
     if not fixed.any():
         return np.zeros(free.size, dtype=bool)
-    row = np.repeat(np.arange(K.shape[0]), np.diff(K.indptr))
-    hits = np.bincount(row, fixed[K.indices], minlength=K.shape[0])
-    return hits[free] > 0
+    counts = np.diff(K.indptr)
+    rows = free[counts[free] > 0]                      # reduceat needs non-empty rows
+    out = np.zeros(free.size, dtype=bool)
+    hit = np.logical_or.reduceat(fixed[K.indices], K.indptr[rows]) if rows.size else rows
+    out[counts[free] > 0] = hit
+    return out
 
 
 class _Empty:
