@@ -3,8 +3,9 @@
 consistent mass) and of a square space grid, against OpenSeesPy's ``-genBandArpack`` when it
 is installed (same model: truss elements with consistent mass, same supports).
 
-Run ``python benchmarks/bench_modal.py [--bays 1000 3000 10000] [--grid 180] [--modes 10]``; it
-prints a table of wall-clock times and the largest relative frequency difference between the solvers.
+Run ``python benchmarks/bench_modal.py [--bays 1000 3000 10000] [--grid 180] [--modes 10]``;
+it prints a table of wall-clock and process times, eigen-residuals and the largest relative
+frequency difference between the solvers.
 A chain of 10,000 bays is 11 km tall and 1.2 m wide: its lowest eigenvalues are below what
 double precision resolves.  The benchmark still times it and prints, beside every row, the
 largest eigen-residual of trussfe's modes and of OpenSeesPy's (computed with trussfe's K and M),
