@@ -286,10 +286,12 @@ def parse_model(data: dict, base_dir: Path | str = ".", source: str = "") -> Str
         i = _node_ref(k, node_index, "supports")
         supports[i, _parse_dofs(v, f"supports.{k}", dim)] = True
     loads = np.zeros((n, ndof))
-    for k, v in _table(data, "loads").items():
-        i = _node_ref(k, node_index, "loads")
-        f = _vector(v, f"loads.{k}", (dim, ndof))
-        loads[i, : f.size] += f
+    load_table = _table(data, "loads")
+    if not _loads_fast(load_table, node_index, loads, dim):
+        for k, v in load_table.items():
+            i = _node_ref(k, node_index, "loads")
+            f = _vector(v, f"loads.{k}", (dim, ndof))
+            loads[i, : f.size] += f
     masses = np.zeros(n)
     for k, v in _table(data, "masses").items():
         i = _node_ref(k, node_index, "masses")
@@ -305,6 +307,34 @@ def parse_model(data: dict, base_dir: Path | str = ".", source: str = "") -> Str
         if key in data:
             s.extensions[key] = parser(data[key], s, base_dir)
     return s
+
+
+def _loads_fast(table: dict, node_index: dict, loads: np.ndarray, dim: int) -> bool:
+    """Add a ``[loads]`` table of plain force vectors in one vectorised step.
+
+    Handles the common large case — every entry a list of ``dim`` (or all of ``ndof``) finite
+    numbers on a defined node — and returns False for anything else, which the per-entry
+    reader then checks and reports item by item (so errors are the same).
+    """
+    if len(table) < 64:                     # small tables: the per-entry path is as fast
+        return False
+    values = list(table.values())
+    width = len(values[0]) if isinstance(values[0], list) else -1
+    if width not in (dim, loads.shape[1]) or any(
+            not isinstance(v, list) or len(v) != width for v in values):
+        return False
+    flat = [x for v in values for x in v]
+    if any(type(x) not in (int, float) for x in flat):   # bool, str, tables: not plain numbers
+        return False
+    try:
+        arr = np.array(flat, dtype=float).reshape(len(values), width)
+        rows = np.array([node_index[str(k)] for k in table], dtype=np.int64)
+    except (KeyError, OverflowError):
+        return False
+    if not np.all(np.isfinite(arr)):
+        return False
+    np.add.at(loads[:, :width], rows, arr)
+    return True
 
 
 def _share_property_groups(s: Structure, code: np.ndarray) -> None:
