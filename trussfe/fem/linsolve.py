@@ -124,12 +124,12 @@ class Factor:
         for _ in range(2):
             if rel <= 1e-12:
                 break
-            x = x + self._solve(r)
-            r = b - self.matrix @ x
-            rel_new = np.linalg.norm(r) / nb
-            if rel_new >= rel:
+            x_new = x + self._solve(r)
+            r_new = b - self.matrix @ x_new
+            rel_new = np.linalg.norm(r_new) / nb
+            if rel_new >= rel:          # at the conditioning floor: keep the better solution
                 break
-            rel = rel_new
+            x, r, rel = x_new, r_new, rel_new
         self.residuals.append(float(rel))
         return x
 
