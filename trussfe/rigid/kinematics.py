@@ -218,9 +218,9 @@ def _batched_newton(structure, pattern, L, X, tolerance=1e-12, iterations=30):
     anchors = np.unique(np.r_[np.arange(0, nt, ANCHOR_SPACING), nt - 1])
     owner = np.searchsorted((anchors[1:] + anchors[:-1]) / 2.0, np.arange(nt))
     try:
-        inv = CompatSolver(pattern.rows, pattern.cols, vals[anchors], pattern.m).inverse
-        solver = (None if inv is not None
-                  else CompatSolver(pattern.rows, pattern.cols, vals, pattern.m))
+        solver = CompatSolver(pattern.rows, pattern.cols, vals[anchors], pattern.m)
+        if not solver.direct:
+            solver, owner = CompatSolver(pattern.rows, pattern.cols, vals, pattern.m), None
     except SingularStep:
         return X, np.zeros(nt, dtype=bool)
     for _ in range(iterations):
@@ -228,8 +228,8 @@ def _batched_newton(structure, pattern, L, X, tolerance=1e-12, iterations=30):
         r = np.linalg.norm(d, axis=2)[:, pattern.loaded_idx] - Lk
         if np.abs(r).max() <= tolerance * scale:
             break
-        if solver is None:
-            dx = np.einsum("tfm,tm->tf", inv[owner], -r)
+        if owner is not None:
+            dx = solver.solve(-r, steps=owner)
         else:
             dx = solver.solve(-r, approximate=True)
         if not np.all(np.isfinite(dx)):
