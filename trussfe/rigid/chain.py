@@ -39,6 +39,7 @@ from ..errors import AnalysisError
 from ..kinematics.assembly import solve_positions
 from ..model.structure import Structure, build_structure
 from .active import ActiveMember, active_members
+from .linalg import cross
 
 #: Bay template nodes: base N1–N3 (0–2), midplane N4–N6 (3–5), top N7–N9 (6–8).  The top
 #: plane is the mirror image of the base in the midplane, N7 over N1, N9 over N2, N8 over N3,
@@ -98,10 +99,10 @@ def triangle_frame(x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """
     o = x.mean(axis=-2)
     u = x[..., 1, :] - x[..., 0, :]
-    w = np.cross(u, x[..., 2, :] - x[..., 0, :])
+    w = cross(u, x[..., 2, :] - x[..., 0, :])
     e1 = u / np.linalg.norm(u, axis=-1, keepdims=True)
     e3 = w / np.linalg.norm(w, axis=-1, keepdims=True)
-    e2 = np.cross(e3, e1)
+    e2 = cross(e3, e1)
     return o, np.stack([e1, e2, e3], axis=-1)
 
 
@@ -129,10 +130,10 @@ def rigid_rates(x: np.ndarray, v: np.ndarray, a: np.ndarray) -> tuple[np.ndarray
     ao = a.mean(axis=-2)
     rr = np.einsum("...ik,...ik->...", r, r)
     J = rr[..., None, None] * np.eye(3) - np.einsum("...ij,...ik->...jk", r, r)
-    h = np.cross(r, v - vo[..., None, :]).sum(axis=-2)
+    h = cross(r, v - vo[..., None, :]).sum(axis=-2)
     omega = np.linalg.solve(J, h[..., None])[..., 0]
-    cen = np.cross(omega[..., None, :], np.cross(omega[..., None, :], r))
-    g = np.cross(r, a - ao[..., None, :] - cen).sum(axis=-2)
+    cen = cross(omega[..., None, :], cross(omega[..., None, :], r))
+    g = cross(r, a - ao[..., None, :] - cen).sum(axis=-2)
     alpha = np.linalg.solve(J, g[..., None])[..., 0]
     return vo, ao, omega, alpha
 
@@ -283,9 +284,9 @@ def chain_kinematics(bay: Structure, lengths: np.ndarray, rates: np.ndarray,
         wn = w[:, None, :]
         sl = slice(3 + 6 * k, 9 + 6 * k)
         X[:, sl] = o[:, None, :] + r                                 # eq. 6.3
-        V[:, sl] = vo[:, None, :] + np.cross(wn, r) + rv            # eq. 6.7
-        A[:, sl] = (ao[:, None, :] + np.cross(al[:, None, :], r)    # eq. 6.11
-                    + np.cross(wn, np.cross(wn, r)) + 2 * np.cross(wn, rv) + ra)
+        V[:, sl] = vo[:, None, :] + cross(wn, r) + rv            # eq. 6.7
+        A[:, sl] = (ao[:, None, :] + cross(al[:, None, :], r)    # eq. 6.11
+                    + cross(wn, cross(wn, r)) + 2 * cross(wn, rv) + ra)
         fr["o"][:, k], fr["vo"][:, k], fr["ao"][:, k] = o, vo, ao
         fr["w"][:, k], fr["al"][:, k] = w, al
         rot[:, k] = R
@@ -309,7 +310,7 @@ def thesis_angular_acceleration(frames: BayFrames) -> np.ndarray:
     w, al = frames.omega, frames.alpha
     wprev = np.concatenate([np.zeros_like(w[:, :1]), w[:, :-1]], axis=1)
     alprev = np.concatenate([np.zeros_like(al[:, :1]), al[:, :-1]], axis=1)
-    rel_rate = al - alprev - np.cross(wprev, w - wprev)
+    rel_rate = al - alprev - cross(wprev, w - wprev)
     return np.cumsum(rel_rate, axis=1)
 
 
@@ -333,7 +334,7 @@ def kinematics_from_nodes(structure: Structure, time: np.ndarray, X: np.ndarray,
     edd = (arel - Ldd * e) / L[..., None] - 2 * Ld * ed / L[..., None]
     return Kinematics(time=np.asarray(time, dtype=float), coords=X, velocity=V, acceleration=A,
                       length=L, length_rate=length_rate, length_acc=length_acc, unit=e,
-                      unit_rate=ed, unit_acc=edd, omega=np.cross(e, ed), alpha=np.cross(e, edd),
+                      unit_rate=ed, unit_acc=edd, omega=cross(e, ed), alpha=cross(e, edd),
                       scheme="exact")
 
 

@@ -35,7 +35,7 @@ import numpy as np
 from ..errors import AnalysisError
 from ..kinematics.assembly import solve_positions
 from ..model.structure import Structure
-from .linalg import ANCHOR_SPACING, CompatSolver, SingularStep
+from .linalg import ANCHOR_SPACING, CompatSolver, SingularStep, cross
 from .motion import Motion
 
 log = logging.getLogger(__name__)
@@ -364,15 +364,15 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
         ed = pad3((vrel - Ld[..., None] * e) / L[..., None])
         edd = pad3((arel - Ldd[..., None] * e) / L[..., None]) - 2 * Ld[..., None] * ed / \
             L[..., None]
-        omega = np.cross(e3, ed)
-        alpha = np.cross(e3, edd)
+        omega = cross(e3, ed)
+        alpha = cross(e3, edd)
         return Kinematics(motion.time, X, pad3(V), pad3(A), L, Ld, Ldd, e3, ed, edd, omega,
                           alpha, "exact", solver)
     # Lacy Appendix A: angle rates by backward differences.
     omega = np.zeros((nt, structure.n_members, 3))
     if nt > 1:
         dt = np.diff(motion.time)[:, None, None]
-        cr = np.cross(e3[:-1], e3[1:])
+        cr = cross(e3[:-1], e3[1:])
         sn = np.linalg.norm(cr, axis=2)
         cs = np.einsum("tmi,tmi->tm", e3[:-1], e3[1:])
         ang = np.arctan2(sn, cs)
@@ -381,8 +381,8 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     alpha = np.zeros_like(omega)
     if nt > 1:
         alpha[1:] = np.diff(omega, axis=0) / np.diff(motion.time)[:, None, None]
-    ed = np.cross(omega, e3)
-    edd = np.cross(alpha, e3) + np.cross(omega, ed)
+    ed = cross(omega, e3)
+    edd = cross(alpha, e3) + cross(omega, ed)
     V, A = _walk_nodes(structure, motion, e3, ed, edd, L, Ld, Ldd)
     return Kinematics(motion.time, X, V, A, L, Ld, Ldd, e3, ed, edd, omega, alpha, "thesis",
                       solver)
