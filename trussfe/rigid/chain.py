@@ -150,30 +150,105 @@ def bay_kinematics(bay: Structure, lengths: np.ndarray, rates: np.ndarray, accs:
     lengths, rates, accs : ndarray, shape (nt, n_active)
         Active lengths, L̇, L̈ (columns in the order of the bay's active members).
     coords0 : ndarray, optional
-        Starting guess for the first step (default the bay's coordinates).
+        Starting guess (default the bay's coordinates).
 
     Returns
     -------
     p, pd, pdd : ndarray, shape (nt, n_nodes, 3)
+
+    Notes
+    -----
+    The positions of all steps are found at once by Newton's method from ``coords0``
+    (:func:`_batched_positions`); if a step does not converge there, or lands more than a
+    tenth of the bay's size away (another assembly branch), the steps are solved one after
+    the other, each warm-started from the previous one.
     """
+    L = _all_lengths(bay, lengths)
+    x0 = bay.coords if coords0 is None else np.asarray(coords0, dtype=float)
+    X, ok = _batched_positions(bay, L, x0)
+    if not ok.all():
+        X = _sequential_positions(bay, L, x0, item)
+    return _bay_rates(bay, L, rates, accs, X, item)
+
+
+def _all_lengths(bay: Structure, lengths: np.ndarray) -> np.ndarray:
+    """Member lengths (nt, m): the bay's passive lengths and the given active ones."""
     acts = np.array([a.member for a in active_members(bay)], dtype=np.int64)
-    nt = lengths.shape[0]
-    conn = bay.connectivity
-    fixed = bay.translation_supports
-    free = ~fixed
-    m, n = conn.shape[0], bay.n_nodes
-    L = np.broadcast_to(bay.lengths(), (nt, m)).copy()
+    L = np.broadcast_to(bay.lengths(), (lengths.shape[0], bay.n_members)).copy()
     L[:, acts] = lengths
+    return L
+
+
+def _sequential_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, item: str
+                          ) -> np.ndarray:
+    """Warm-started forward position, one step after another (the robust fallback)."""
+    conn, fixed = bay.connectivity, bay.translation_supports
+    X = np.empty((L.shape[0],) + x0.shape)
+    x = x0
+    for k in range(L.shape[0]):
+        x = solve_positions(x, conn, L[k], fixed, member_ids=bay.member_ids,
+                            item=f"{item}: step {k}").coords
+        X[k] = x
+    return X
+
+
+def _batched_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, *,
+                       tolerance: float = 1e-12, iterations: int = 30
+                       ) -> tuple[np.ndarray, np.ndarray]:
+    """Newton's method on the bar-length equations of every step at once, from ``x0``.
+
+    Each iteration factorises every step's compatibility matrix (stacked inverses of its
+    diagonal blocks, :class:`~trussfe.rigid.linalg.CompatSolver`) and solves
+    ``B Δx = L − |d|`` for all steps together.  Returns the positions and a per-step flag:
+    converged, and within a tenth of the bay's size of ``x0``.
+    """
+    from .kinematics import _Pattern
+    from .linalg import CompatSolver, SingularStep
+
+    N = L.shape[0]
+    pattern = _Pattern(bay)
+    conn = bay.connectivity
+    X = np.broadcast_to(x0, (N,) + x0.shape).copy()
+    flat = X.reshape(N, -1)
+    scale = float(L.max()) if N else 1.0
+    Lk = L[:, pattern.loaded_idx]
+    bad = np.zeros(N, dtype=bool)
+    if pattern.m != pattern.nfree or N == 0:
+        return X, bad
+    for _ in range(iterations):
+        d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
+        dn = np.linalg.norm(d, axis=2)
+        r = dn[:, pattern.loaded_idx] - Lk
+        if np.abs(r).max() <= tolerance * scale:
+            break
+        try:
+            solver = CompatSolver(pattern.rows, pattern.cols, pattern.values(d / dn[..., None]),
+                                  pattern.m)
+        except SingularStep:
+            return X, bad
+        dx = solver.solve(-r)
+        if not np.all(np.isfinite(dx)):
+            return X, bad
+        flat[:, pattern.free_flat] += dx
+    d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
+    res = np.abs(np.linalg.norm(d, axis=2) - L).max(axis=1)
+    moved = np.abs(X - x0).reshape(N, -1).max(axis=1)
+    return X, (res <= tolerance * scale) & (moved < 0.1 * scale)
+
+
+def _bay_rates(bay: Structure, L: np.ndarray, rates: np.ndarray, accs: np.ndarray,
+               X: np.ndarray, item: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Positions, velocities and accelerations from the positions ``X`` (every step at once):
+    ``B ṗ = L̇``, ``B p̈ = L̈ − (|ṗ_b − ṗ_a|² − L̇²)/L``."""
+    acts = np.array([a.member for a in active_members(bay)], dtype=np.int64)
+    nt = L.shape[0]
+    conn = bay.connectivity
+    free = ~bay.translation_supports
+    m, n = conn.shape[0], bay.n_nodes
     Ld = np.zeros((nt, m))
     Ld[:, acts] = rates
     Ldd = np.zeros((nt, m))
     Ldd[:, acts] = accs
-    X = np.empty((nt, n, 3))
-    x = bay.coords if coords0 is None else coords0
-    for k in range(nt):                 # warm-started Newton, one step after another
-        x = solve_positions(x, conn, L[k], fixed, member_ids=bay.member_ids,
-                            item=f"{item}: step {k}").coords
-        X[k] = x
     d = X[:, conn[:, 1]] - X[:, conn[:, 0]]                       # (nt, m, 3)
     e = d / np.linalg.norm(d, axis=2, keepdims=True)
     # Dense B on all coordinates, (nt, m, n*3), then the free columns.
@@ -267,10 +342,17 @@ def chain_kinematics(bay: Structure, lengths: np.ndarray, rates: np.ndarray,
     fr = {k: np.empty((nt, nb, 3)) for k in ("o", "vo", "ao", "w", "al")}
     rot = np.empty((nt, nb, 3, 3))
     base_idx = np.array([0, 1, 2])
-    x0 = bay.coords
+    # Every bay alone, all bays and steps at once (they are independent problems of the same
+    # bay); a bay whose steps do not all converge from the template is re-solved step by step.
+    Lall = _all_lengths(bay, lengths.transpose(1, 0, 2).reshape(nb * nt, -1))
+    Xall, ok = _batched_positions(bay, Lall, bay.coords)
+    Xall = Xall.reshape(nb, nt, bay.n_nodes, 3)
+    Lall = Lall.reshape(nb, nt, -1)
+    for k in np.flatnonzero(~ok.reshape(nb, nt).all(axis=1)):
+        Xall[k] = _sequential_positions(bay, Lall[k], bay.coords, f"bay {k + 1}")
     for k in range(nb):
-        p, pd, pdd = bay_kinematics(bay, lengths[:, k], rates[:, k], accs[:, k], x0,
-                                    item=f"bay {k + 1}")
+        p, pd, pdd = _bay_rates(bay, Lall[k], rates[:, k], accs[:, k], Xall[k],
+                                item=f"bay {k + 1}")
         # Bay-local coordinates relative to the template's base frame.
         p = (p - o_b) @ R_b
         pd = pd @ R_b
@@ -292,7 +374,6 @@ def chain_kinematics(bay: Structure, lengths: np.ndarray, rates: np.ndarray,
         rot[:, k] = R
         top = np.array([3 + 6 * k + j - 3 for j in TOP_AS_NEXT_BASE])
         base_idx = top
-        x0 = None
     frames = BayFrames(origin=fr["o"], origin_velocity=fr["vo"], origin_acceleration=fr["ao"],
                        rotation=rot, omega=fr["w"], alpha=fr["al"])
     return ChainKinematics(coords=X, velocity=V, acceleration=A, frames=frames)
