@@ -237,9 +237,10 @@ def _batched_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, *,
 
 
 def _bay_rates(bay: Structure, L: np.ndarray, rates: np.ndarray, accs: np.ndarray,
-               X: np.ndarray, item: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+               X: np.ndarray, item) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Positions, velocities and accelerations from the positions ``X`` (every step at once):
-    ``B ṗ = L̇``, ``B p̈ = L̈ − (|ṗ_b − ṗ_a|² − L̇²)/L``."""
+    ``B ṗ = L̇``, ``B p̈ = L̈ − (|ṗ_b − ṗ_a|² − L̇²)/L``.  ``item`` names the analysis in
+    messages (a string, or a function of the step index)."""
     acts = np.array([a.member for a in active_members(bay)], dtype=np.int64)
     nt = L.shape[0]
     conn = bay.connectivity
@@ -264,7 +265,8 @@ def _bay_rates(bay: Structure, L: np.ndarray, rates: np.ndarray, accs: np.ndarra
     cond = np.linalg.cond(Bf)
     if np.any(cond > 1e12):
         k = int(np.argmax(cond > 1e12))
-        raise AnalysisError(f"{item}: step {k}", "the bay passes a singular position")
+        raise AnalysisError(item(k) if callable(item) else f"{item}: step {k}",
+                            "the bay passes a singular position")
     V = np.zeros((nt, n * 3))
     V[:, cols] = np.linalg.solve(Bf, Ld[..., None])[..., 0]
     V = V.reshape(nt, n, 3)
@@ -350,13 +352,18 @@ def chain_kinematics(bay: Structure, lengths: np.ndarray, rates: np.ndarray,
     Lall = Lall.reshape(nb, nt, -1)
     for k in np.flatnonzero(~ok.reshape(nb, nt).all(axis=1)):
         Xall[k] = _sequential_positions(bay, Lall[k], bay.coords, f"bay {k + 1}")
+    nn = bay.n_nodes
+    P, Pd, Pdd = _bay_rates(bay, Lall.reshape(nb * nt, -1),
+                            rates.transpose(1, 0, 2).reshape(nb * nt, -1),
+                            accs.transpose(1, 0, 2).reshape(nb * nt, -1),
+                            Xall.reshape(nb * nt, nn, 3),
+                            item=lambda j: f"bay {j // nt + 1}: step {j % nt}")
+    # Bay-local coordinates relative to the template's base frame, (nb, nt, n, 3).
+    P = ((P - o_b) @ R_b).reshape(nb, nt, nn, 3)
+    Pd = (Pd @ R_b).reshape(nb, nt, nn, 3)
+    Pdd = (Pdd @ R_b).reshape(nb, nt, nn, 3)
     for k in range(nb):
-        p, pd, pdd = _bay_rates(bay, Lall[k], rates[:, k], accs[:, k], Xall[k],
-                                item=f"bay {k + 1}")
-        # Bay-local coordinates relative to the template's base frame.
-        p = (p - o_b) @ R_b
-        pd = pd @ R_b
-        pdd = pdd @ R_b
+        p, pd, pdd = P[k], Pd[k], Pdd[k]
         xb, vb, ab = X[:, base_idx], V[:, base_idx], A[:, base_idx]
         o, R = triangle_frame(xb)                                    # eqs. 6.2, 6.6
         vo, ao, w, al = rigid_rates(xb, vb, ab)                      # eqs. 6.8, 6.13
