@@ -241,10 +241,30 @@ def _member_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies, r
     return Re, Fa_perp, Fb_perp, (P, mg), rhs
 
 
+def pair_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies) -> tuple:
+    """Member resultants of the motion and of rest, and their right-hand sides of
+    ``Bᵀ t = rhs`` on the free coordinates, (nt, n_free, 2): the first half of
+    :func:`nodal_forces_with_static`, so that the solve can be done for many blocks of steps
+    at once (:func:`forces_from_tensions` finishes)."""
+    pattern = _check_model(structure)
+    loads = [_member_loads(structure, kin, bodies, False),
+             _member_loads(structure, kin, bodies, True)]
+    return loads, np.stack([ld[4][:, pattern.free_flat] for ld in loads], axis=2)
+
+
+def forces_from_tensions(structure: Structure, kin: Kinematics, bodies: MemberBodies,
+                         loads: list, tension: np.ndarray) -> tuple[NodalForces, NodalForces]:
+    """Dynamic and static :class:`NodalForces` from :func:`pair_loads` and the solved
+    tensions (nt, n_loaded, 2)."""
+    return tuple(_solve_forces(structure, [kin, None], bodies, False, loads, tension))
+
+
 def _solve_forces(structure: Structure, kins: list, bodies: MemberBodies | None,
-                  check: bool | None) -> list[NodalForces]:
+                  check: bool | None, loads: list | None = None,
+                  tension: np.ndarray | None = None) -> list[NodalForces]:
     """Nodal forces for kinematics ``kins`` sharing one geometry; ``None`` in the list stands
-    for the first one at rest.  The right-hand sides are solved together."""
+    for the first one at rest.  The right-hand sides are solved together (or the member loads
+    and their solved tensions are given)."""
     pattern = _check_model(structure)
     bodies = member_bodies(structure) if bodies is None else bodies
     kin = kins[0]
@@ -253,11 +273,15 @@ def _solve_forces(structure: Structure, kins: list, bodies: MemberBodies | None,
     conn = structure.connectivity
     dim = structure.dim
     e = kin.unit
-    loads = [_member_loads(structure, kin, bodies, False) if k is not None
-             else _member_loads(structure, kin, bodies, True) for k in kins]
-    rhs = np.stack([ld[4][:, pattern.free_flat] for ld in loads], axis=2)   # (t, f, r)
+    if loads is None:
+        loads = [_member_loads(structure, kin, bodies, False) if k is not None
+                 else _member_loads(structure, kin, bodies, True) for k in kins]
+    rhs = (None if tension is not None else
+           np.stack([ld[4][:, pattern.free_flat] for ld in loads], axis=2))   # (t, f, r)
     try:
-        if kin.compat is not None:
+        if tension is not None:
+            tl = tension
+        elif kin.compat is not None:
             # Bᵀ t = rhs with the factorisation kept from the kinematics.
             if kin.compat.direct:
                 tl = kin.compat.solve(rhs, transpose=True)

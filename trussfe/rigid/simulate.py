@@ -18,9 +18,10 @@ from ..errors import AnalysisError, InputError
 from ..model.structure import Structure
 from .active import active_members
 from .buckling import BucklingCheck, buckling_check
-from .forces import MemberBodies, NodalForces, member_bodies, nodal_forces_with_static
+from .forces import (MemberBodies, NodalForces, forces_from_tensions, member_bodies,
+                     nodal_forces_with_static, pair_loads)
 from .kinematics import Kinematics, _Pattern, compute_kinematics, solve_motion_positions
-from .linalg import is_direct
+from .linalg import SingularStep, is_direct
 from .motion import Motion, rest_motion
 from .sections import SectionForces, SectionStresses, section_forces, section_stresses
 
@@ -179,8 +180,17 @@ def simulate(structure: Structure, motion: Motion | None = None, *, scheme: str 
         pattern = _Pattern(structure)
         if is_direct(pattern.rows, pattern.cols, pattern.m):
             kin_all = compute_kinematics(structure, motion, scheme=scheme, coords=X)
-            parts = [_steps(structure, _slice_kinematics(kin_all, k0, k0 + step), bodies,
-                            act_idx, **opts)[1:] for k0 in starts]
+            # Member loads block by block, the member tensions of all steps in one solve (a
+            # loop over the diagonal blocks, paid once), then the rest block by block.
+            kins = [_slice_kinematics(kin_all, k0, k0 + step) for k0 in starts]
+            loads, rhs = zip(*(pair_loads(structure, kc, bodies) for kc in kins))
+            tension = _solve_tensions(kin_all, np.concatenate(rhs, axis=0))
+            del rhs
+            parts = []
+            for j, (kc, k0) in enumerate(zip(kins, range(0, nt, step))):
+                pair = forces_from_tensions(structure, kc, bodies, loads[j],
+                                            tension[k0:k0 + step])
+                parts.append(_steps(structure, kc, bodies, act_idx, forces=pair, **opts)[1:])
             kin = kin_all
             kin.compat = None          # factorisations are not kept
             f, fs, sf, ss, st, sts, mid, act_force, act_static, cmoment = (
@@ -215,11 +225,23 @@ def simulate(structure: Structure, motion: Motion | None = None, *, scheme: str 
 CHUNK_ENTRIES = 1 << 17
 
 
+def _solve_tensions(kin: Kinematics, rhs: np.ndarray) -> np.ndarray:
+    """``Bᵀ t = rhs`` (nt, n_free, r) with the kinematics' direct factorisation."""
+    try:
+        return kin.compat.solve(rhs, transpose=True)
+    except SingularStep as s:                                  # pragma: no cover
+        raise AnalysisError(f"step {s.step} (t = {kin.time[s.step]:.6g} s)",
+                            "the truss is at a singular position (its equilibrium matrix is "
+                            "rank deficient): the member forces are not determined there"
+                            ) from None
+
+
 def _steps(structure, kin, bodies, act_idx, *, n_sections, full_length_inertia,
-           shear_factor):
+           shear_factor, forces=None):
     """Forces, sections, stresses and actuator force for a block of steps of kinematics
-    ``kin``; the static ones are those of the same positions at rest."""
-    f, fs = nodal_forces_with_static(structure, kin, bodies)
+    ``kin``; the static ones are those of the same positions at rest.  ``forces``: the
+    (dynamic, static) nodal forces if already known."""
+    f, fs = nodal_forces_with_static(structure, kin, bodies) if forces is None else forces
     sf = section_forces(structure, kin, f, bodies, n_sections,
                         full_length_inertia=full_length_inertia)
     ss = section_forces(structure, kin, fs, bodies, n_sections,
