@@ -6,7 +6,7 @@ the issue: the whole double-octahedral slew of 10,000 steps, actuators included,
 The bay-by-bay chain kinematics solve every bay alone for all bays and steps at once (one
 batched Newton iteration over bays × steps), then carry the frames up the chain bay by bay.
 
-Run: ``python benchmarks/bench_actuator.py``.
+Run from the source tree: ``PYTHONPATH=$PWD python benchmarks/bench_actuator.py``.
 """
 from __future__ import annotations
 
