@@ -7,7 +7,7 @@ in < 1 s; a 100-bay chain (1,803 members) over 1,000 steps in < 10 s.  For compa
 time of a plain per-step dense solve of a 117 × 117 system (the size of Lacy's double-
 octahedron system, eq. 4.20 / Table 4.1), in a Python loop over the steps.
 
-Run: ``python benchmarks/bench_rigid.py [--quick]``.
+Run from the source tree: ``PYTHONPATH=$PWD python benchmarks/bench_rigid.py [--quick]``.
 """
 from __future__ import annotations
 

@@ -134,3 +134,39 @@ def test_singular_bay_is_reported(bay):
     L[1] = 3.0                       # no assembly: active members longer than possible
     with pytest.raises(AnalysisError):
         bay_kinematics(bay, L, np.zeros_like(L), np.zeros_like(L))
+
+
+def test_batched_positions_equal_the_step_by_step_solution(bay, motion):
+    """All bays and steps at once by Newton from the template (the fast path) give the
+    positions of the warm-started step-by-step forward-position solver (the reference,
+    ``solve_positions``) to 1e-12 m."""
+    from trussfe.rigid.chain import _all_lengths, _batched_positions, _sequential_positions
+    _, L, _, _ = motion
+    nt, nb, _ = L.shape
+    Lall = _all_lengths(bay, L.transpose(1, 0, 2).reshape(nb * nt, 3))
+    X, ok = _batched_positions(bay, Lall, bay.coords)
+    assert ok.all()
+    for k in range(nb):
+        ref = _sequential_positions(bay, Lall[k * nt:(k + 1) * nt], bay.coords, "bay")
+        assert_allclose(X[k * nt:(k + 1) * nt], ref, rtol=0, atol=1e-12)
+
+
+def test_steps_not_reached_from_the_template_fall_back_to_continuation(bay, motion,
+                                                                       monkeypatch):
+    """When the batched Newton reports a step as not converged, that bay is re-solved step by
+    step: the result equals the normal one (atol 1e-12 of the largest coordinate)."""
+    import trussfe.rigid.chain as ch
+    t, L, Ld, Ldd = motion
+    ref = chain_kinematics(bay, L, Ld, Ldd)
+    real = ch._batched_positions
+
+    def half_failed(b, Lm, x0, **kw):
+        X, ok = real(b, Lm, x0, **kw)
+        ok[::2] = False
+        return X, ok
+
+    monkeypatch.setattr(ch, "_batched_positions", half_failed)
+    ck = chain_kinematics(bay, L, Ld, Ldd)
+    assert_allclose(ck.coords, ref.coords, rtol=0, atol=1e-12 * np.abs(ref.coords).max())
+    assert_allclose(ck.acceleration, ref.acceleration, rtol=0,
+                    atol=1e-10 * np.abs(ref.acceleration).max())

@@ -39,6 +39,7 @@ from ..errors import AnalysisError
 from ..kinematics.assembly import solve_positions
 from ..model.structure import Structure, build_structure
 from .active import ActiveMember, active_members
+from .linalg import cross
 
 #: Bay template nodes: base N1–N3 (0–2), midplane N4–N6 (3–5), top N7–N9 (6–8).  The top
 #: plane is the mirror image of the base in the midplane, N7 over N1, N9 over N2, N8 over N3,
@@ -98,10 +99,10 @@ def triangle_frame(x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """
     o = x.mean(axis=-2)
     u = x[..., 1, :] - x[..., 0, :]
-    w = np.cross(u, x[..., 2, :] - x[..., 0, :])
+    w = cross(u, x[..., 2, :] - x[..., 0, :])
     e1 = u / np.linalg.norm(u, axis=-1, keepdims=True)
     e3 = w / np.linalg.norm(w, axis=-1, keepdims=True)
-    e2 = np.cross(e3, e1)
+    e2 = cross(e3, e1)
     return o, np.stack([e1, e2, e3], axis=-1)
 
 
@@ -129,10 +130,10 @@ def rigid_rates(x: np.ndarray, v: np.ndarray, a: np.ndarray) -> tuple[np.ndarray
     ao = a.mean(axis=-2)
     rr = np.einsum("...ik,...ik->...", r, r)
     J = rr[..., None, None] * np.eye(3) - np.einsum("...ij,...ik->...jk", r, r)
-    h = np.cross(r, v - vo[..., None, :]).sum(axis=-2)
+    h = cross(r, v - vo[..., None, :]).sum(axis=-2)
     omega = np.linalg.solve(J, h[..., None])[..., 0]
-    cen = np.cross(omega[..., None, :], np.cross(omega[..., None, :], r))
-    g = np.cross(r, a - ao[..., None, :] - cen).sum(axis=-2)
+    cen = cross(omega[..., None, :], cross(omega[..., None, :], r))
+    g = cross(r, a - ao[..., None, :] - cen).sum(axis=-2)
     alpha = np.linalg.solve(J, g[..., None])[..., 0]
     return vo, ao, omega, alpha
 
@@ -149,30 +150,106 @@ def bay_kinematics(bay: Structure, lengths: np.ndarray, rates: np.ndarray, accs:
     lengths, rates, accs : ndarray, shape (nt, n_active)
         Active lengths, L̇, L̈ (columns in the order of the bay's active members).
     coords0 : ndarray, optional
-        Starting guess for the first step (default the bay's coordinates).
+        Starting guess (default the bay's coordinates).
 
     Returns
     -------
     p, pd, pdd : ndarray, shape (nt, n_nodes, 3)
+
+    Notes
+    -----
+    The positions of all steps are found at once by Newton's method from ``coords0``
+    (:func:`_batched_positions`); if a step does not converge there, or lands more than a
+    tenth of the bay's size away (another assembly branch), the steps are solved one after
+    the other, each warm-started from the previous one.
     """
+    L = _all_lengths(bay, lengths)
+    x0 = bay.coords if coords0 is None else np.asarray(coords0, dtype=float)
+    X, ok = _batched_positions(bay, L, x0)
+    if not ok.all():
+        X = _sequential_positions(bay, L, x0, item)
+    return _bay_rates(bay, L, rates, accs, X, item)
+
+
+def _all_lengths(bay: Structure, lengths: np.ndarray) -> np.ndarray:
+    """Member lengths (nt, m): the bay's passive lengths and the given active ones."""
     acts = np.array([a.member for a in active_members(bay)], dtype=np.int64)
-    nt = lengths.shape[0]
-    conn = bay.connectivity
-    fixed = bay.translation_supports
-    free = ~fixed
-    m, n = conn.shape[0], bay.n_nodes
-    L = np.broadcast_to(bay.lengths(), (nt, m)).copy()
+    L = np.broadcast_to(bay.lengths(), (lengths.shape[0], bay.n_members)).copy()
     L[:, acts] = lengths
+    return L
+
+
+def _sequential_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, item: str
+                          ) -> np.ndarray:
+    """Warm-started forward position, one step after another (the robust fallback)."""
+    conn, fixed = bay.connectivity, bay.translation_supports
+    X = np.empty((L.shape[0],) + x0.shape)
+    x = x0
+    for k in range(L.shape[0]):
+        x = solve_positions(x, conn, L[k], fixed, member_ids=bay.member_ids,
+                            item=f"{item}: step {k}").coords
+        X[k] = x
+    return X
+
+
+def _batched_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, *,
+                       tolerance: float = 1e-12, iterations: int = 30
+                       ) -> tuple[np.ndarray, np.ndarray]:
+    """Newton's method on the bar-length equations of every step at once, from ``x0``.
+
+    Each iteration factorises every step's compatibility matrix (stacked inverses of its
+    diagonal blocks, :class:`~trussfe.rigid.linalg.CompatSolver`) and solves
+    ``B Δx = L − |d|`` for all steps together.  Returns the positions and a per-step flag:
+    converged, and within a tenth of the bay's size of ``x0``.
+    """
+    from .kinematics import _Pattern
+    from .linalg import CompatSolver, SingularStep
+
+    N = L.shape[0]
+    pattern = _Pattern(bay)
+    conn = bay.connectivity
+    X = np.broadcast_to(x0, (N,) + x0.shape).copy()
+    flat = X.reshape(N, -1)
+    scale = float(L.max()) if N else 1.0
+    Lk = L[:, pattern.loaded_idx]
+    bad = np.zeros(N, dtype=bool)
+    if pattern.m != pattern.nfree or N == 0:
+        return X, bad
+    for _ in range(iterations):
+        d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
+        dn = np.linalg.norm(d, axis=2)
+        r = dn[:, pattern.loaded_idx] - Lk
+        if np.abs(r).max() <= tolerance * scale:
+            break
+        try:
+            solver = CompatSolver(pattern.rows, pattern.cols, pattern.values(d / dn[..., None]),
+                                  pattern.m)
+        except SingularStep:
+            return X, bad
+        dx = solver.solve(-r)
+        if not np.all(np.isfinite(dx)):
+            return X, bad
+        flat[:, pattern.free_flat] += dx
+    d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
+    res = np.abs(np.linalg.norm(d, axis=2) - L).max(axis=1)
+    moved = np.abs(X - x0).reshape(N, -1).max(axis=1)
+    return X, (res <= tolerance * scale) & (moved < 0.1 * scale)
+
+
+def _bay_rates(bay: Structure, L: np.ndarray, rates: np.ndarray, accs: np.ndarray,
+               X: np.ndarray, item) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Positions, velocities and accelerations from the positions ``X`` (every step at once):
+    ``B ṗ = L̇``, ``B p̈ = L̈ − (|ṗ_b − ṗ_a|² − L̇²)/L``.  ``item`` names the analysis in
+    messages (a string, or a function of the step index)."""
+    acts = np.array([a.member for a in active_members(bay)], dtype=np.int64)
+    nt = L.shape[0]
+    conn = bay.connectivity
+    free = ~bay.translation_supports
+    m, n = conn.shape[0], bay.n_nodes
     Ld = np.zeros((nt, m))
     Ld[:, acts] = rates
     Ldd = np.zeros((nt, m))
     Ldd[:, acts] = accs
-    X = np.empty((nt, n, 3))
-    x = bay.coords if coords0 is None else coords0
-    for k in range(nt):                 # warm-started Newton, one step after another
-        x = solve_positions(x, conn, L[k], fixed, member_ids=bay.member_ids,
-                            item=f"{item}: step {k}").coords
-        X[k] = x
     d = X[:, conn[:, 1]] - X[:, conn[:, 0]]                       # (nt, m, 3)
     e = d / np.linalg.norm(d, axis=2, keepdims=True)
     # Dense B on all coordinates, (nt, m, n*3), then the free columns.
@@ -188,7 +265,8 @@ def bay_kinematics(bay: Structure, lengths: np.ndarray, rates: np.ndarray, accs:
     cond = np.linalg.cond(Bf)
     if np.any(cond > 1e12):
         k = int(np.argmax(cond > 1e12))
-        raise AnalysisError(f"{item}: step {k}", "the bay passes a singular position")
+        raise AnalysisError(item(k) if callable(item) else f"{item}: step {k}",
+                            "the bay passes a singular position")
     V = np.zeros((nt, n * 3))
     V[:, cols] = np.linalg.solve(Bf, Ld[..., None])[..., 0]
     V = V.reshape(nt, n, 3)
@@ -266,14 +344,26 @@ def chain_kinematics(bay: Structure, lengths: np.ndarray, rates: np.ndarray,
     fr = {k: np.empty((nt, nb, 3)) for k in ("o", "vo", "ao", "w", "al")}
     rot = np.empty((nt, nb, 3, 3))
     base_idx = np.array([0, 1, 2])
-    x0 = bay.coords
+    # Every bay alone, all bays and steps at once (they are independent problems of the same
+    # bay); a bay whose steps do not all converge from the template is re-solved step by step.
+    Lall = _all_lengths(bay, lengths.transpose(1, 0, 2).reshape(nb * nt, -1))
+    Xall, ok = _batched_positions(bay, Lall, bay.coords)
+    Xall = Xall.reshape(nb, nt, bay.n_nodes, 3)
+    Lall = Lall.reshape(nb, nt, -1)
+    for k in np.flatnonzero(~ok.reshape(nb, nt).all(axis=1)):
+        Xall[k] = _sequential_positions(bay, Lall[k], bay.coords, f"bay {k + 1}")
+    nn = bay.n_nodes
+    P, Pd, Pdd = _bay_rates(bay, Lall.reshape(nb * nt, -1),
+                            rates.transpose(1, 0, 2).reshape(nb * nt, -1),
+                            accs.transpose(1, 0, 2).reshape(nb * nt, -1),
+                            Xall.reshape(nb * nt, nn, 3),
+                            item=lambda j: f"bay {j // nt + 1}: step {j % nt}")
+    # Bay-local coordinates relative to the template's base frame, (nb, nt, n, 3).
+    P = ((P - o_b) @ R_b).reshape(nb, nt, nn, 3)
+    Pd = (Pd @ R_b).reshape(nb, nt, nn, 3)
+    Pdd = (Pdd @ R_b).reshape(nb, nt, nn, 3)
     for k in range(nb):
-        p, pd, pdd = bay_kinematics(bay, lengths[:, k], rates[:, k], accs[:, k], x0,
-                                    item=f"bay {k + 1}")
-        # Bay-local coordinates relative to the template's base frame.
-        p = (p - o_b) @ R_b
-        pd = pd @ R_b
-        pdd = pdd @ R_b
+        p, pd, pdd = P[k], Pd[k], Pdd[k]
         xb, vb, ab = X[:, base_idx], V[:, base_idx], A[:, base_idx]
         o, R = triangle_frame(xb)                                    # eqs. 6.2, 6.6
         vo, ao, w, al = rigid_rates(xb, vb, ab)                      # eqs. 6.8, 6.13
@@ -283,15 +373,14 @@ def chain_kinematics(bay: Structure, lengths: np.ndarray, rates: np.ndarray,
         wn = w[:, None, :]
         sl = slice(3 + 6 * k, 9 + 6 * k)
         X[:, sl] = o[:, None, :] + r                                 # eq. 6.3
-        V[:, sl] = vo[:, None, :] + np.cross(wn, r) + rv            # eq. 6.7
-        A[:, sl] = (ao[:, None, :] + np.cross(al[:, None, :], r)    # eq. 6.11
-                    + np.cross(wn, np.cross(wn, r)) + 2 * np.cross(wn, rv) + ra)
+        V[:, sl] = vo[:, None, :] + cross(wn, r) + rv            # eq. 6.7
+        A[:, sl] = (ao[:, None, :] + cross(al[:, None, :], r)    # eq. 6.11
+                    + cross(wn, cross(wn, r)) + 2 * cross(wn, rv) + ra)
         fr["o"][:, k], fr["vo"][:, k], fr["ao"][:, k] = o, vo, ao
         fr["w"][:, k], fr["al"][:, k] = w, al
         rot[:, k] = R
         top = np.array([3 + 6 * k + j - 3 for j in TOP_AS_NEXT_BASE])
         base_idx = top
-        x0 = None
     frames = BayFrames(origin=fr["o"], origin_velocity=fr["vo"], origin_acceleration=fr["ao"],
                        rotation=rot, omega=fr["w"], alpha=fr["al"])
     return ChainKinematics(coords=X, velocity=V, acceleration=A, frames=frames)
@@ -309,7 +398,7 @@ def thesis_angular_acceleration(frames: BayFrames) -> np.ndarray:
     w, al = frames.omega, frames.alpha
     wprev = np.concatenate([np.zeros_like(w[:, :1]), w[:, :-1]], axis=1)
     alprev = np.concatenate([np.zeros_like(al[:, :1]), al[:, :-1]], axis=1)
-    rel_rate = al - alprev - np.cross(wprev, w - wprev)
+    rel_rate = al - alprev - cross(wprev, w - wprev)
     return np.cumsum(rel_rate, axis=1)
 
 
@@ -333,7 +422,7 @@ def kinematics_from_nodes(structure: Structure, time: np.ndarray, X: np.ndarray,
     edd = (arel - Ldd * e) / L[..., None] - 2 * Ld * ed / L[..., None]
     return Kinematics(time=np.asarray(time, dtype=float), coords=X, velocity=V, acceleration=A,
                       length=L, length_rate=length_rate, length_acc=length_acc, unit=e,
-                      unit_rate=ed, unit_acc=edd, omega=np.cross(e, ed), alpha=np.cross(e, edd),
+                      unit_rate=ed, unit_acc=edd, omega=cross(e, ed), alpha=cross(e, edd),
                       scheme="exact")
 
 

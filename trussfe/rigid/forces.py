@@ -38,7 +38,7 @@ from ..errors import AnalysisError
 from ..model.structure import Structure
 from .active import active_members
 from .kinematics import Kinematics, _count_message, _Pattern, pad3
-from .linalg import SingularStep, batched_solve
+from .linalg import SingularStep, batched_solve, cross
 
 
 @dataclass
@@ -173,68 +173,145 @@ def nodal_forces(structure: Structure, kin: Kinematics, bodies: MemberBodies | N
         A statically indeterminate truss (its forces need the FE model), a mechanism, or a
         singular configuration (naming the time step).
     """
+    return _solve_forces(structure, [kin], bodies, check)[0]
+
+
+def nodal_forces_with_static(structure: Structure, kin: Kinematics,
+                             bodies: MemberBodies | None = None
+                             ) -> tuple[NodalForces, NodalForces]:
+    """Forces along the motion and at rest in the same positions, with one solve.
+
+    Equal to ``nodal_forces(structure, kin)`` and ``nodal_forces(structure, kin.at_rest())``
+    (the same arithmetic; the terms that vanish at rest are left out), but both right-hand
+    sides of ``Bᵀ t = rhs`` go through the factorisation together.
+    """
+    return tuple(_solve_forces(structure, [kin, None], bodies, None))
+
+
+def _check_model(structure: Structure) -> _Pattern:
     if np.any(structure.is_beam):
         raise AnalysisError(structure.source or structure.name, "the rigid-body model handles "
                             "pin-jointed bars only; member "
                             f"'{structure.member_ids[int(np.flatnonzero(structure.is_beam)[0])]}'"
                             " is a beam")
-    bodies = member_bodies(structure) if bodies is None else bodies
-    if check is None:
-        check = kin.compat is None
+    pattern = _Pattern(structure)
+    if pattern.m != pattern.nfree:
+        raise AnalysisError(structure.source or structure.name, _count_message(pattern))
+    return pattern
+
+
+def _member_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies, rest: bool):
+    """Member resultants and the right-hand side of ``Bᵀ t = rhs`` (Lacy eqs. 2.9–2.11).
+
+    ``rest``: the kinematics' rates and accelerations are zero (the static case); the terms
+    that vanish are not computed (adding an exact zero changes no bit of the result).
+    """
     conn = structure.connectivity
     dim = structure.dim
     nt, m = kin.length.shape
     g = pad3(np.asarray(structure.gravity, dtype=float))
     e = kin.unit
     L = kin.length[..., None]
-    a_tube, s_t, a_base = element_accelerations(kin, bodies, conn)
     mt = bodies.tube_mass[None, :, None]
     mb = bodies.base_mass[None, :, None]
-    f_tube = mt * (a_tube - g)                                   # (time, member, 3)
-    f_base = mb * (a_base - g)
+    s_t = L - bodies.tube_length[None, :, None] / 2.0
+    if rest:
+        f_tube = mt * -g                                         # a_tube = 0
+        f_base = mb * -g
+    else:
+        a_tube, s_t, a_base = element_accelerations(kin, bodies, conn)
+        f_tube = mt * (a_tube - g)                               # (time, member, 3)
+        f_base = mb * (a_base - g)
     R = f_tube + f_base
-    inertia = (bodies.tube_inertia(bodies.tube_length, bodies.tube_mass)
-               + bodies.base_inertia_cg)[None, :, None]
-    Ma = (np.cross(s_t * e, f_tube) + np.cross(bodies.base_cg[None, :, None] * e, f_base)
-          + inertia * kin.alpha)
-    Fb_perp = np.cross(Ma, e) / L
+    Ma = cross(s_t * e, f_tube) + cross(bodies.base_cg[None, :, None] * e, f_base)
+    if not rest:
+        inertia = (bodies.tube_inertia(bodies.tube_length, bodies.tube_mass)
+                   + bodies.base_inertia_cg)[None, :, None]
+        Ma += inertia * kin.alpha
+    Fb_perp = cross(Ma, e) / L
     Re = np.einsum("tmi,tmi->tm", R, e)
     Fa_perp = R - Re[..., None] * e - Fb_perp
-
-    pattern = _Pattern(structure)
-    if pattern.m != pattern.nfree:
-        raise AnalysisError(structure.source or structure.name, _count_message(pattern))
-    t = 0.5 * Re                       # members between two fixed nodes: symmetric split
-    # Known (tension-free) parts of the end forces, summed at the nodes.
     n = structure.n_nodes
+    # Known (tension-free) parts of the end forces, summed at the nodes.
     S = _to_nodes(conn, n, Re[..., None] * e + Fa_perp, Fb_perp)
     P = pad3(structure.loads[:, :dim])[None]
     Mn = structure.masses[None, :, None]
-    rhs = (P + Mn * (g - kin.acceleration) - S)[..., :dim].reshape(nt, n * dim)
+    mg = Mn * g if rest else Mn * (g - kin.acceleration)      # lumped masses' loads
+    rhs = (P + mg - S)[..., :dim].reshape(nt, n * dim)
+    return Re, Fa_perp, Fb_perp, (P, mg), rhs
+
+
+def pair_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies) -> tuple:
+    """Member resultants of the motion and of rest, and their right-hand sides of
+    ``Bᵀ t = rhs`` on the free coordinates, (nt, n_free, 2): the first half of
+    :func:`nodal_forces_with_static`, so that the solve can be done for many blocks of steps
+    at once (:func:`forces_from_tensions` finishes)."""
+    pattern = _check_model(structure)
+    loads = [_member_loads(structure, kin, bodies, False),
+             _member_loads(structure, kin, bodies, True)]
+    return loads, np.stack([ld[4][:, pattern.free_flat] for ld in loads], axis=2)
+
+
+def forces_from_tensions(structure: Structure, kin: Kinematics, bodies: MemberBodies,
+                         loads: list, tension: np.ndarray) -> tuple[NodalForces, NodalForces]:
+    """Dynamic and static :class:`NodalForces` from :func:`pair_loads` and the solved
+    tensions (nt, n_loaded, 2)."""
+    return tuple(_solve_forces(structure, [kin, None], bodies, False, loads, tension))
+
+
+def _solve_forces(structure: Structure, kins: list, bodies: MemberBodies | None,
+                  check: bool | None, loads: list | None = None,
+                  tension: np.ndarray | None = None) -> list[NodalForces]:
+    """Nodal forces for kinematics ``kins`` sharing one geometry; ``None`` in the list stands
+    for the first one at rest.  The right-hand sides are solved together (or the member loads
+    and their solved tensions are given)."""
+    pattern = _check_model(structure)
+    bodies = member_bodies(structure) if bodies is None else bodies
+    kin = kins[0]
+    if check is None:
+        check = kin.compat is None
+    conn = structure.connectivity
+    dim = structure.dim
+    e = kin.unit
+    if loads is None:
+        loads = [_member_loads(structure, kin, bodies, False) if k is not None
+                 else _member_loads(structure, kin, bodies, True) for k in kins]
+    rhs = (None if tension is not None else
+           np.stack([ld[4][:, pattern.free_flat] for ld in loads], axis=2))   # (t, f, r)
     try:
-        if kin.compat is not None:
+        if tension is not None:
+            tl = tension
+        elif kin.compat is not None:
             # Bᵀ t = rhs with the factorisation kept from the kinematics.
-            tl = kin.compat.solve(rhs[:, pattern.free_flat], transpose=True)
+            if kin.compat.direct:
+                tl = kin.compat.solve(rhs, transpose=True)
+            else:
+                tl = np.stack([kin.compat.solve(rhs[..., j], transpose=True)
+                               for j in range(rhs.shape[2])], axis=2)
         else:
             tl = batched_solve(pattern.cols, pattern.rows, pattern.values(e[..., :dim]),
-                               (pattern.nfree, pattern.m), rhs[:, pattern.free_flat],
-                               check=check)
+                               (pattern.nfree, pattern.m), rhs, check=check)
     except SingularStep as s:
         raise AnalysisError(f"step {s.step} (t = {kin.time[s.step]:.6g} s)",
                             "the truss is at a singular position (its equilibrium matrix is "
                             "rank deficient): the member forces are not determined there"
                             ) from None
-    t[:, pattern.loaded_idx] = tl
-    Fb = t[..., None] * e + Fb_perp
-    Fa = (Re - t)[..., None] * e + Fa_perp
-    tot = _to_nodes(conn, n, Fa, Fb)
-    react = (tot - P - Mn * (g - kin.acceleration))[..., :dim]
-    react = np.where(structure.translation_supports[None], react, 0.0)
-    if not np.all(np.isfinite(react)):
-        k = int(np.flatnonzero(~np.isfinite(react).all(axis=(1, 2)))[0])
-        raise AnalysisError(f"step {k}", "non-finite forces (degenerate geometry)")
-    return NodalForces(end_force=np.stack([Fa, Fb], axis=2), tension_end=t,
-                       tension_start=t - Re, reactions=react)
+    n = structure.n_nodes
+    out = []
+    for j, (Re, Fa_perp, Fb_perp, ext, _) in enumerate(loads):
+        t = 0.5 * Re                   # members between two fixed nodes: symmetric split
+        t[:, pattern.loaded_idx] = tl[..., j]
+        Fb = t[..., None] * e + Fb_perp
+        Fa = (Re - t)[..., None] * e + Fa_perp
+        tot = _to_nodes(conn, n, Fa, Fb)
+        react = (tot - ext[0] - ext[1])[..., :dim]
+        react = np.where(structure.translation_supports[None], react, 0.0)
+        if not np.all(np.isfinite(react)):
+            k = int(np.flatnonzero(~np.isfinite(react).all(axis=(1, 2)))[0])
+            raise AnalysisError(f"step {k}", "non-finite forces (degenerate geometry)")
+        out.append(NodalForces(end_force=np.stack([Fa, Fb], axis=2), tension_end=t,
+                               tension_start=t - Re, reactions=react))
+    return out
 
 
 def composite_cg_inertia(bodies: MemberBodies, length: np.ndarray

@@ -35,7 +35,7 @@ import numpy as np
 from ..errors import AnalysisError
 from ..kinematics.assembly import solve_positions
 from ..model.structure import Structure
-from .linalg import ANCHOR_SPACING, CompatSolver, SingularStep
+from .linalg import ANCHOR_SPACING, CompatSolver, SingularStep, cross, norm
 from .motion import Motion
 
 log = logging.getLogger(__name__)
@@ -212,31 +212,31 @@ def _batched_newton(structure, pattern, L, X, tolerance=1e-12, iterations=30):
     Lk = L[:, pattern.loaded_idx]
     flat = X.reshape(nt, -1)
     d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
-    vals = pattern.values(d / np.linalg.norm(d, axis=2)[..., None])
+    vals = pattern.values(d / norm(d)[..., None])
     # The chord Jacobian is the guess's compatibility matrix at anchor steps (every 8th);
     # each step uses its nearest anchor (large systems do the same inside CompatSolver).
     anchors = np.unique(np.r_[np.arange(0, nt, ANCHOR_SPACING), nt - 1])
     owner = np.searchsorted((anchors[1:] + anchors[:-1]) / 2.0, np.arange(nt))
     try:
-        inv = CompatSolver(pattern.rows, pattern.cols, vals[anchors], pattern.m).inverse
-        solver = (None if inv is not None
-                  else CompatSolver(pattern.rows, pattern.cols, vals, pattern.m))
+        solver = CompatSolver(pattern.rows, pattern.cols, vals[anchors], pattern.m)
+        if not solver.direct:
+            solver, owner = CompatSolver(pattern.rows, pattern.cols, vals, pattern.m), None
     except SingularStep:
         return X, np.zeros(nt, dtype=bool)
     for _ in range(iterations):
         d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
-        r = np.linalg.norm(d, axis=2)[:, pattern.loaded_idx] - Lk
+        r = norm(d)[:, pattern.loaded_idx] - Lk
         if np.abs(r).max() <= tolerance * scale:
             break
-        if solver is None:
-            dx = np.einsum("tfm,tm->tf", inv[owner], -r)
+        if owner is not None:
+            dx = solver.solve(-r, steps=owner)
         else:
             dx = solver.solve(-r, approximate=True)
         if not np.all(np.isfinite(dx)):
             return X, np.zeros(nt, dtype=bool)
         flat[:, pattern.free_flat] += dx
     d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
-    res = np.abs(np.linalg.norm(d, axis=2) - L).max(axis=1)
+    res = np.abs(norm(d) - L).max(axis=1)
     moved = np.abs(X - X0).reshape(nt, -1).max(axis=1)
     return X, (res <= tolerance * scale) & (moved < 0.1 * scale)
 
@@ -288,14 +288,15 @@ def _solve_compat(structure: Structure, pattern: _Pattern, solver: CompatSolver,
     return out.reshape(nt, structure.n_nodes, structure.dim)
 
 
-def _factorise(structure: Structure, pattern: _Pattern, X: np.ndarray, motion: Motion
-               ) -> CompatSolver:
+def _factorise(structure: Structure, pattern: _Pattern, X: np.ndarray, motion: Motion,
+               e: np.ndarray | None = None) -> CompatSolver:
     """Factorise the compatibility matrix of every step, or raise at the first singular step
     (once: velocities, accelerations and member forces all use this matrix or its
-    transpose)."""
-    conn = structure.connectivity
-    d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
-    e = d / np.linalg.norm(d, axis=2)[..., None]
+    transpose).  ``e``: the member unit vectors, if known."""
+    if e is None:
+        conn = structure.connectivity
+        d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
+        e = d / norm(d)[..., None]
     try:
         return CompatSolver(pattern.rows, pattern.cols, pattern.values(e), pattern.m)
     except SingularStep as s:
@@ -344,12 +345,12 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
         raise AnalysisError(structure.source or structure.name, _count_message(pattern))
     X = (solve_motion_positions(structure, motion, progress=progress) if coords is None
          else coords)
-    solver = _factorise(structure, pattern, X, motion)
     nt = X.shape[0]
     conn = structure.connectivity
     d = X[:, conn[:, 1]] - X[:, conn[:, 0]]                      # (time, member, dim)
-    L = np.linalg.norm(d, axis=2)
+    L = norm(d)
     e = d / L[..., None]
+    solver = _factorise(structure, pattern, X, motion, e)
     Ld = np.zeros_like(L)
     Ldd = np.zeros_like(L)
     Ld[:, motion.members] = motion.velocity
@@ -364,15 +365,15 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
         ed = pad3((vrel - Ld[..., None] * e) / L[..., None])
         edd = pad3((arel - Ldd[..., None] * e) / L[..., None]) - 2 * Ld[..., None] * ed / \
             L[..., None]
-        omega = np.cross(e3, ed)
-        alpha = np.cross(e3, edd)
+        omega = cross(e3, ed)
+        alpha = cross(e3, edd)
         return Kinematics(motion.time, X, pad3(V), pad3(A), L, Ld, Ldd, e3, ed, edd, omega,
                           alpha, "exact", solver)
     # Lacy Appendix A: angle rates by backward differences.
     omega = np.zeros((nt, structure.n_members, 3))
     if nt > 1:
         dt = np.diff(motion.time)[:, None, None]
-        cr = np.cross(e3[:-1], e3[1:])
+        cr = cross(e3[:-1], e3[1:])
         sn = np.linalg.norm(cr, axis=2)
         cs = np.einsum("tmi,tmi->tm", e3[:-1], e3[1:])
         ang = np.arctan2(sn, cs)
@@ -381,8 +382,8 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     alpha = np.zeros_like(omega)
     if nt > 1:
         alpha[1:] = np.diff(omega, axis=0) / np.diff(motion.time)[:, None, None]
-    ed = np.cross(omega, e3)
-    edd = np.cross(alpha, e3) + np.cross(omega, ed)
+    ed = cross(omega, e3)
+    edd = cross(alpha, e3) + cross(omega, ed)
     V, A = _walk_nodes(structure, motion, e3, ed, edd, L, Ld, Ldd)
     return Kinematics(motion.time, X, V, A, L, Ld, Ldd, e3, ed, edd, omega, alpha, "thesis",
                       solver)

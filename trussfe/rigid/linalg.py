@@ -6,12 +6,25 @@ values (unit vectors) change.  Small systems are solved as a stack of dense matr
 (``numpy.linalg.solve`` over the time axis); large ones as a block-diagonal sparse matrix over
 a chunk of time steps, factorised once by SuperLU.  Either way there is no Python loop per
 time step, and a singular step is reported by its index.
+
+The compatibility matrix of a truss built joint by joint or bay by bay is, after a row and
+column permutation, **block lower triangular** (its Dulmage–Mendelsohn fine decomposition):
+a double-octahedral bay splits into two 9 × 9 blocks (the midplane nodes, then the top
+nodes), a 100-bay chain into 200 of them.  :func:`block_triangular_form` finds that form once
+per sparsity pattern (a maximum matching puts a non-zero on the diagonal, the strongly
+connected components of the resulting dependency graph are the blocks, a topological order
+of the components is the solve order); :class:`CompatSolver` then keeps the stacked inverses
+of the small diagonal blocks of every step and solves ``B x = b`` by forward and ``Bᵀ y = c``
+by backward block substitution, a loop over blocks with every step at once.
 """
 from __future__ import annotations
+
+from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
+from scipy.sparse.csgraph import connected_components, maximum_bipartite_matching
 
 #: Largest system solved as a dense stack.
 DENSE_LIMIT = 36
@@ -127,14 +140,238 @@ def check_singular(A: np.ndarray) -> None:
         raise SingularStep(int(bad[0]))
 
 
+@dataclass
+class BlockTriangularForm:
+    """Block lower-triangular form of a square sparsity pattern (solve order).
+
+    Attributes
+    ----------
+    rows, cols : list of ndarray
+        Equations (rows) and unknowns (columns) of each diagonal block, in solve order: the
+        equations of block k involve only its own unknowns and those of earlier blocks.
+    diag : list of tuple of ndarray
+        Per block, (local row, local column, index into the pattern's entries) of the
+        diagonal block.
+    coupling : list of tuple of ndarray
+        Per block, (coupled unknowns of earlier blocks, local row, position among them, entry
+        index) of the off-diagonal part.
+    """
+
+    rows: list
+    cols: list
+    diag: list
+    coupling: list
+
+    @property
+    def n_blocks(self) -> int:
+        """Number of diagonal blocks."""
+        return len(self.rows)
+
+    @property
+    def max_size(self) -> int:
+        """Size of the largest diagonal block."""
+        return max((r.size for r in self.rows), default=0)
+
+
+_BTF_CACHE: dict = {}
+
+
+def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Cross product over the last axis of 3-vectors (broadcasting), as :func:`numpy.cross`.
+
+    The same arithmetic as ``numpy.cross`` (``a1 b2 − a2 b1``, …; equal to the last bit), in
+    about half its time on the (steps, members, 3) arrays of a motion.
+
+    Examples
+    --------
+    >>> cross(np.array([1.0, 0, 0]), np.array([0.0, 1, 0])).tolist()
+    [0.0, 0.0, 1.0]
+    """
+    a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
+    b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
+    return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=-1)
+
+
+def norm(a: np.ndarray) -> np.ndarray:
+    """Euclidean norm over the last axis (``numpy.linalg.norm(a, axis=-1)`` to round-off, in
+    half its time).
+
+    Examples
+    --------
+    >>> norm(np.array([[3.0, 4.0, 0.0]])).tolist()
+    [5.0]
+    """
+    return np.sqrt(np.einsum("...i,...i->...", a, a))
+
+
+def block_triangular_form(rows: np.ndarray, cols: np.ndarray, n: int
+                          ) -> BlockTriangularForm | None:
+    """Block lower-triangular form of the n × n pattern ``(rows, cols)``, or ``None`` when the
+    pattern is structurally singular (no perfect matching).
+
+    Examples
+    --------
+    A lower-triangular 3 × 3 pattern splits into three 1 × 1 blocks, solved top to bottom:
+
+    >>> f = block_triangular_form(np.array([0, 1, 1, 2, 2]), np.array([0, 0, 1, 1, 2]), 3)
+    >>> [r.tolist() for r in f.rows]
+    [[0], [1], [2]]
+    """
+    rows = np.asarray(rows, dtype=np.int64)
+    cols = np.asarray(cols, dtype=np.int64)
+    key = (n, rows.tobytes(), cols.tobytes())
+    if key in _BTF_CACHE:
+        return _BTF_CACHE[key]
+    pat = sp.csr_matrix((np.ones(rows.size), (rows, cols)), shape=(n, n))
+    match = maximum_bipartite_matching(pat, perm_type="column")     # row i ↔ column match[i]
+    if n == 0 or np.any(match < 0):
+        _BTF_CACHE[key] = None
+        return None
+    row_of = np.empty(n, dtype=np.int64)
+    row_of[match] = np.arange(n)
+    # Equation i depends on unknown j, which is pinned by equation row_of[j].
+    dep = sp.csr_matrix((np.ones(rows.size), (rows, row_of[cols])), shape=(n, n))
+    nb, label = connected_components(dep, directed=True, connection="strong")
+    # Topological order of the components: a block after every block it depends on.
+    src, dst = label[rows], label[row_of[cols]]
+    cross = src != dst
+    edges = np.unique(np.stack([src[cross], dst[cross]], axis=1), axis=0)
+    needs = [set() for _ in range(nb)]
+    users = [[] for _ in range(nb)]
+    for a, b in edges:
+        needs[a].add(int(b))
+        users[b].append(int(a))
+    ready = [k for k in range(nb) if not needs[k]]
+    order = []
+    while ready:
+        k = ready.pop()
+        order.append(k)
+        for a in users[k]:
+            needs[a].discard(k)
+            if not needs[a]:
+                ready.append(a)
+    position = np.empty(nb, dtype=np.int64)
+    position[np.array(order, dtype=np.int64)] = np.arange(nb)
+    entry_block = position[label[rows]]
+    col_block = position[label[row_of[cols]]]
+    by_block = np.argsort(entry_block, kind="stable")
+    starts = np.searchsorted(entry_block[by_block], np.arange(nb + 1))
+    block_rows, block_cols, diag, coupling = [], [], [], []
+    local = np.empty(n, dtype=np.int64)
+    for b in range(nb):
+        er = np.sort(np.flatnonzero(position[label] == b))
+        ec = match[er]
+        local[er] = np.arange(er.size)
+        lc = np.empty(n, dtype=np.int64)
+        lc[ec] = np.arange(ec.size)
+        idx = by_block[starts[b]:starts[b + 1]]
+        own = col_block[idx] == b
+        d = idx[own]
+        diag.append((local[rows[d]], lc[cols[d]], d))
+        o = idx[~own]
+        ucols, pos = np.unique(cols[o], return_inverse=True)
+        coupling.append((ucols, local[rows[o]], pos.reshape(-1), o))
+        block_rows.append(er)
+        block_cols.append(ec)
+    out = BlockTriangularForm(rows=block_rows, cols=block_cols, diag=diag, coupling=coupling)
+    if len(_BTF_CACHE) > 64:
+        _BTF_CACHE.clear()
+    _BTF_CACHE[key] = out
+    return out
+
+
+def _rcond(A: np.ndarray, inv: np.ndarray) -> np.ndarray:
+    """Reciprocal condition numbers from Frobenius norms of a stack and its inverses."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        return 1.0 / np.sqrt(np.einsum("...ij,...ij->...", A, A)
+                             * np.einsum("...ij,...ij->...", inv, inv))
+
+
+class _BlockInverses:
+    """Stacked inverses of the diagonal blocks of a :class:`BlockTriangularForm`, every step.
+
+    Blocks of one size are inverted in one batched LAPACK call; a step is singular when any of
+    its diagonal blocks has a reciprocal condition number (Frobenius norms) below
+    :data:`SINGULAR_RCOND` — B is singular exactly when one of its diagonal blocks is.
+    """
+
+    def __init__(self, form: BlockTriangularForm, vals: np.ndarray):
+        nt = vals.shape[0]
+        self.form = form
+        self.inv: list = [None] * form.n_blocks
+        self.off: list = [None] * form.n_blocks
+        sizes = np.array([r.size for r in form.rows])
+        worst = np.full(nt, np.inf)
+        for size in np.unique(sizes):
+            ids = np.flatnonzero(sizes == size)
+            D = np.zeros((ids.size, nt, size * size))
+            for g, b in enumerate(ids):
+                r, c, e = form.diag[b]
+                D[g][:, r * size + c] = vals[:, e]
+            D = D.reshape(ids.size, nt, size, size)
+            try:
+                inv = np.linalg.inv(D)
+            except np.linalg.LinAlgError:
+                lam = np.linalg.eigvalsh(np.einsum("btji,btjk->btik", D, D))
+                rc = np.sqrt(np.clip(lam[..., 0], 0.0, None) / np.maximum(lam[..., -1], 1e-300))
+                raise SingularStep(int(np.flatnonzero((~(rc >= SINGULAR_RCOND)).any(axis=0))[0])
+                                   ) from None
+            worst = np.fmin(worst, np.nan_to_num(_rcond(D, inv), nan=0.0).min(axis=0))
+            for g, b in enumerate(ids):
+                self.inv[b] = inv[g]
+        bad = np.flatnonzero(~(worst >= SINGULAR_RCOND))
+        if bad.size:
+            raise SingularStep(int(bad[0]))
+        for b, (ucols, lr, pos, e) in enumerate(form.coupling):
+            if ucols.size:
+                O = np.zeros((nt, form.rows[b].size * ucols.size))
+                O[:, lr * ucols.size + pos] = vals[:, e]
+                self.off[b] = O.reshape(nt, form.rows[b].size, ucols.size)
+
+    def solve(self, rhs: np.ndarray, transpose: bool, steps: np.ndarray | None) -> np.ndarray:
+        """Forward (B x = rhs) or backward (Bᵀ x = rhs) block substitution, every step at
+        once; ``steps`` maps each right-hand side to its factorised step."""
+        f = self.form
+        out = np.empty_like(rhs)
+
+        def pick(a):
+            return a if steps is None else a[steps]
+
+        if not transpose:
+            for b in range(f.n_blocks):
+                r = rhs[:, f.rows[b]]
+                if self.off[b] is not None:
+                    r = r - np.einsum("tij,tj...->ti...", pick(self.off[b]),
+                                      out[:, f.coupling[b][0]])
+                out[:, f.cols[b]] = np.einsum("tij,tj...->ti...", pick(self.inv[b]), r)
+            return out
+        c = rhs.copy()
+        for b in range(f.n_blocks - 1, -1, -1):
+            y = np.einsum("tji,tj...->ti...", pick(self.inv[b]), c[:, f.cols[b]])
+            out[:, f.rows[b]] = y
+            if self.off[b] is not None:
+                c[:, f.coupling[b][0]] -= np.einsum("tij,ti...->tj...", pick(self.off[b]), y)
+        return out
+
+
+def is_direct(rows: np.ndarray, cols: np.ndarray, n: int) -> bool:
+    """Whether :class:`CompatSolver` keeps stacked inverses (no refinement) for this pattern."""
+    if n <= DENSE_LIMIT:
+        return True
+    form = block_triangular_form(rows, cols, n) if DENSE_LIMIT > 0 else None
+    return form is not None and form.n_blocks > 1 and form.max_size <= DENSE_LIMIT
+
+
 class CompatSolver:
     """Factorised compatibility matrices B_k of every step, for ``B x = b`` and ``Bᵀ y = c``.
 
-    Small systems keep the stacked inverses (one batched LAPACK call; every later solve is a
-    batched matrix–vector product); large ones keep one SuperLU factorisation of the
-    block-diagonal matrix per chunk of steps, used for both B and Bᵀ (``trans="T"``).  The
-    velocities, the accelerations and the dynamic and static member forces of a motion all
-    reuse the same factorisation.
+    A pattern with a block-triangular form of more than one block, all of at most
+    :data:`DENSE_LIMIT` rows, keeps the stacked inverses of its diagonal blocks (block
+    substitution, :func:`block_triangular_form`).  Other small systems keep the stacked
+    inverses (one batched LAPACK call; every later solve is a batched matrix–vector product);
+    large ones keep SuperLU factorisations at anchor steps with refinement, used for both B
+    and Bᵀ (``trans="T"``).  The velocities, the accelerations and the dynamic and static
+    member forces of a motion all reuse the same factorisation.
 
     Parameters
     ----------
@@ -156,8 +393,12 @@ class CompatSolver:
         self.n = n
         self.nt = vals.shape[0]
         self.inverse = None
-        self.blocks: list[tuple[int, int, object]] = []
+        self.block_inverses: _BlockInverses | None = None
         if n == 0:
+            return
+        form = block_triangular_form(rows, cols, n) if DENSE_LIMIT > 0 else None
+        if form is not None and form.n_blocks > 1 and form.max_size <= DENSE_LIMIT:
+            self.block_inverses = _BlockInverses(form, vals)
             return
         if n <= DENSE_LIMIT:
             A = np.zeros((self.nt, n * n))
@@ -217,18 +458,48 @@ class CompatSolver:
                                    trans="T" if transpose else "N").T
         return dx
 
-    def solve(self, rhs: np.ndarray, transpose: bool = False,
-              approximate: bool = False) -> np.ndarray:
-        """x with B_k x_k = rhs_k (or B_kᵀ x_k = rhs_k), rhs of shape (nt, n).
+    def subset(self, k0: int, k1: int) -> "CompatSolver | None":
+        """The factorisations of steps ``k0:k1`` (views, no copy); ``None`` on the anchored
+        SuperLU path, whose anchors belong to the whole motion."""
+        if not self.direct:
+            return None
+        out = object.__new__(CompatSolver)
+        out.__dict__.update(self.__dict__)
+        out.nt = len(range(k0, min(k1, self.nt)))
+        if self.inverse is not None:
+            out.inverse = self.inverse[k0:k1]
+        if self.block_inverses is not None:
+            bi = object.__new__(_BlockInverses)
+            bi.form = self.block_inverses.form
+            bi.inv = [a[k0:k1] for a in self.block_inverses.inv]
+            bi.off = [None if a is None else a[k0:k1] for a in self.block_inverses.off]
+            out.block_inverses = bi
+        return out
 
-        ``approximate=True`` (large systems) returns the nearest anchor's solution without
-        refinement — enough for an outer iteration that corrects itself (chord Newton).
+    @property
+    def direct(self) -> bool:
+        """Whether solves are direct (stacked inverses), not anchored refinement."""
+        return self.n == 0 or self.inverse is not None or self.block_inverses is not None
+
+    def solve(self, rhs: np.ndarray, transpose: bool = False,
+              approximate: bool = False, steps: np.ndarray | None = None) -> np.ndarray:
+        """x with B_k x_k = rhs_k (or B_kᵀ x_k = rhs_k), rhs of shape (nt, n), or (nt, n, r)
+        on the direct paths.
+
+        ``approximate=True`` (anchored SuperLU path) returns the nearest anchor's solution
+        without refinement — enough for an outer iteration that corrects itself (chord
+        Newton).  ``steps`` (direct paths only) maps each row of ``rhs`` to the factorised
+        step whose matrix it uses.
         """
         if self.inverse is not None:
-            sub = "tji,tj->ti" if transpose else "tij,tj->ti"
-            return np.einsum(sub, self.inverse, rhs)
+            sub = "tji,tj...->ti..." if transpose else "tij,tj...->ti..."
+            return np.einsum(sub, self.inverse if steps is None else self.inverse[steps], rhs)
+        if self.block_inverses is not None:
+            return self.block_inverses.solve(np.asarray(rhs, dtype=float), transpose, steps)
         if self.n == 0:
             return np.zeros_like(rhs, dtype=float)
+        if steps is not None:
+            raise ValueError("steps needs a direct (stacked-inverse) solver")
         rhs = np.asarray(rhs, dtype=float)
         if approximate:
             return self._anchor_solve(rhs, transpose)

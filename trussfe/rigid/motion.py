@@ -230,10 +230,11 @@ def motion_from_spec(spec: dict, structure: Structure, base_dir: Path, source: s
         from .motion_csv import read_motion_csv  # written alongside the actuator model
         if "file" not in spec:
             raise InputError(f"{item}.file", "a csv motion needs file = \"history.csv\"")
+        _no_steps(steps, "a CSV motion history")
         return read_motion_csv(base_dir / str(spec["file"]), structure)
     if kind == "rotation":
         from .slew import rotation_motion
-        return rotation_motion(spec, structure)
+        return rotation_motion(spec, structure, steps=steps)
     if kind != "third-order":
         raise InputError(f"{item}.type", f"unknown motion type {kind!r}; valid: "
                          "'third-order', 'csv', 'rotation'")
@@ -268,6 +269,14 @@ def motion_from_spec(spec: dict, structure: Structure, base_dir: Path, source: s
     return m
 
 
+def _no_steps(steps: int | None, what: str) -> None:
+    """Refuse a step count for a motion whose samples are given (nothing to generate)."""
+    if steps is not None:
+        raise InputError("--steps", f"{what} gives its own time samples; --steps sets the "
+                         "number of steps of a generated motion only (third-order or "
+                         "rotation start/end/duration)")
+
+
 def load_motion(path: str | Path, structure: Structure, steps: int | None = None) -> Motion:
     """Read a motion file: TOML ``[motion]`` spec, or a CSV history (``.csv``).
 
@@ -290,6 +299,7 @@ def load_motion(path: str | Path, structure: Structure, steps: int | None = None
         raise InputError(str(path), "motion file not found")
     if path.suffix.lower() == ".csv":
         from .motion_csv import read_motion_csv
+        _no_steps(steps, "a CSV motion history")
         return read_motion_csv(path, structure)
     try:
         data = tomllib.loads(path.read_text(encoding="utf-8"))

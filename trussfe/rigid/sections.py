@@ -35,6 +35,7 @@ import numpy as np
 from ..model.structure import Structure
 from .forces import MemberBodies, NodalForces
 from .kinematics import Kinematics, pad3
+from .linalg import cross
 
 
 @dataclass
@@ -81,7 +82,7 @@ def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
                    bodies: MemberBodies, n_sections: int = 7, *,
                    positions: np.ndarray | None = None,
                    full_length_inertia: bool = False,
-                   members: np.ndarray | None = None) -> SectionForces:
+                   members: np.ndarray | None = None, at_rest: bool = False) -> SectionForces:
     """Internal forces at sections along every member, all steps at once.
 
     Parameters
@@ -97,6 +98,9 @@ def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
         Use the whole tube length in every piece's moment of inertia (Lacy Appendix A quirk).
     members : ndarray of int, optional
         Only these members (the member axis of the result follows this selection).
+    at_rest : bool
+        Take the kinematics' rates and accelerations as zero (the static case in the same
+        positions; equal to passing ``kin.at_rest()``, without the vanishing terms).
 
     Notes
     -----
@@ -113,30 +117,40 @@ def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
     u = positions[None, :, :]                                             # (1, m, k)
     g = pad3(np.asarray(structure.gravity, dtype=float))
     conn = structure.connectivity[sel]
-    e, edd = kin.unit[:, sel], kin.unit_acc[:, sel]                       # (t, m, 3)
+    e = kin.unit[:, sel]                                                  # (t, m, 3)
     L = kin.length[:, sel, None]                                          # (t, m, 1)
-    p = (kin.acceleration[:, conn[:, 0]] + kin.length_acc[:, sel, None] * e
-         + 2.0 * kin.length_rate[:, sel, None] * kin.unit_rate[:, sel] - g)   # a_0 − g
+    if at_rest:
+        p = np.broadcast_to(-g, e.shape)                                  # a_0 = 0
+    else:
+        edd = kin.unit_acc[:, sel]
+        p = (kin.acceleration[:, conn[:, 0]] + kin.length_acc[:, sel, None] * e
+             + 2.0 * kin.length_rate[:, sel, None] * kin.unit_rate[:, sel] - g)   # a_0 − g
     Fb = forces.end_force[:, sel, 1]
     mu = (bodies.tube_mass[sel] / tube_length)[None, :, None]
     mseg = mu * u                                                         # (1, m, k)
     ell = tube_length[:, None] if full_length_inertia else positions
     Iseg = (mu[0] * positions * (bodies.tube_radius2[sel][:, None]
                                  + np.square(ell) / 12.0))[None]          # (1, m, k)
-    lever = L - u / 2.0                                                   # (t, m, k)
     pe = np.einsum("tmi,tmi->tm", p, e)[..., None]
-    qe = np.einsum("tmi,tmi->tm", edd, e)[..., None]
     fe = np.einsum("tmi,tmi->tm", Fb, e)[..., None]
-    tension = -(mseg * (pe + lever * qe) - fe)
     p_perp = p - pe * e
-    q_perp = edd - qe * e
     f_perp = Fb - fe * e
+    c0 = cross(e, p)
+    eF = cross(e, Fb)
+    half = (mseg * u / 2.0)[..., None]
+    if at_rest:
+        # ë = α = 0: the lever terms vanish (same arithmetic as below without the zeros).
+        tension = -(mseg * pe - fe)
+        V = mseg[..., None] * p_perp[:, :, None, :] - f_perp[:, :, None, :]
+        M = half * c0[:, :, None, :] - u[..., None] * eF[:, :, None, :]
+        return SectionForces(position=positions, tension=tension, shear=V, moment=M, unit=e)
+    lever = L - u / 2.0                                                   # (t, m, k)
+    qe = np.einsum("tmi,tmi->tm", edd, e)[..., None]
+    tension = -(mseg * (pe + lever * qe) - fe)
+    q_perp = edd - qe * e
     V = ((mseg[..., None] * p_perp[:, :, None, :])
          + (mseg * lever)[..., None] * q_perp[:, :, None, :] - f_perp[:, :, None, :])
-    c0 = np.cross(e, p)
-    c1 = np.cross(e, edd)
-    eF = np.cross(e, Fb)
-    half = (mseg * u / 2.0)[..., None]
+    c1 = cross(e, edd)
     M = (half * (c0[:, :, None, :] + lever[..., None] * c1[:, :, None, :])
          + Iseg[..., None] * kin.alpha[:, sel, None, :] - u[..., None] * eF[:, :, None, :])
     return SectionForces(position=positions, tension=tension, shear=V, moment=M, unit=e)
@@ -186,9 +200,9 @@ def member_frames(unit: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     the planar shear is the b1 component and the planar moment minus the b2 component.
     """
     helper = np.where(np.abs(unit[..., 2:3]) < 0.9, [0.0, 0.0, 1.0], [1.0, 0.0, 0.0])
-    b1 = np.cross(unit, helper)
+    b1 = cross(unit, helper)
     b1 /= np.linalg.norm(b1, axis=-1, keepdims=True)
-    b2 = np.cross(unit, b1)
+    b2 = cross(unit, b1)
     return b1, b2
 
 

@@ -18,8 +18,10 @@ from ..errors import AnalysisError, InputError
 from ..model.structure import Structure
 from .active import active_members
 from .buckling import BucklingCheck, buckling_check
-from .forces import MemberBodies, NodalForces, member_bodies, nodal_forces
-from .kinematics import Kinematics, compute_kinematics, solve_motion_positions
+from .forces import (MemberBodies, NodalForces, forces_from_tensions, member_bodies,
+                     nodal_forces_with_static, pair_loads)
+from .kinematics import Kinematics, _Pattern, compute_kinematics, solve_motion_positions
+from .linalg import SingularStep, is_direct
 from .motion import Motion, rest_motion
 from .sections import SectionForces, SectionStresses, section_forces, section_stresses
 
@@ -163,24 +165,48 @@ def simulate(structure: Structure, motion: Motion | None = None, *, scheme: str 
     nt, m = motion.n_steps, structure.n_members
     step = max(1, CHUNK_ENTRIES // max(m, 1))
     if scheme == "exact" and nt > step:
-        # Positions for the whole motion (warm starts link the steps), then everything else
-        # one block of steps at a time: the exact kinematics are independent per step, and
-        # blocks that fit in the processor cache are several times faster than whole-motion
-        # arrays (the work is memory-bound).
+        # Positions for the whole motion (warm starts link the steps), then the forces one
+        # block of steps at a time: the exact kinematics are independent per step, and blocks
+        # that fit in the processor cache are several times faster than whole-motion arrays
+        # (the work is memory-bound).  With a direct (stacked-inverse) factorisation the
+        # kinematics are solved for the whole motion at once — a solve costs a Python loop
+        # over the diagonal blocks, which is paid once instead of once per block of steps —
+        # and the blocks use slices of it.
         X = solve_motion_positions(structure, motion, progress=progress)
         starts = range(0, nt, step)
         if progress:
             from tqdm import tqdm
             starts = tqdm(starts, desc="forces", unit="block", leave=False)
-        parts = [_steps(structure, _slice_motion(motion, k0, min(nt, k0 + step)),
-                        X[k0:k0 + step], scheme, bodies, act_idx, **opts)
-                 for k0 in starts]
-        kin, f, fs, sf, ss, st, sts, mid, act_force, act_static, cmoment = (
-            _concat([p[i] for p in parts]) for i in range(len(parts[0])))
+        pattern = _Pattern(structure)
+        if is_direct(pattern.rows, pattern.cols, pattern.m):
+            kin_all = compute_kinematics(structure, motion, scheme=scheme, coords=X)
+            # Member loads block by block, the member tensions of all steps in one solve (a
+            # loop over the diagonal blocks, paid once), then the rest block by block.
+            kins = [_slice_kinematics(kin_all, k0, k0 + step) for k0 in starts]
+            loads, rhs = zip(*(pair_loads(structure, kc, bodies) for kc in kins))
+            tension = _solve_tensions(kin_all, np.concatenate(rhs, axis=0))
+            del rhs
+            parts = []
+            for j, (kc, k0) in enumerate(zip(kins, range(0, nt, step))):
+                pair = forces_from_tensions(structure, kc, bodies, loads[j],
+                                            tension[k0:k0 + step])
+                parts.append(_steps(structure, kc, bodies, act_idx, forces=pair, **opts)[1:])
+            kin = kin_all
+            kin.compat = None          # factorisations are not kept
+            f, fs, sf, ss, st, sts, mid, act_force, act_static, cmoment = (
+                _concat([p[i] for p in parts]) for i in range(len(parts[0])))
+        else:
+            parts = [_steps(structure, compute_kinematics(
+                structure, _slice_motion(motion, k0, min(nt, k0 + step)), scheme=scheme,
+                coords=X[k0:k0 + step]), bodies, act_idx, **opts) for k0 in starts]
+            kin, f, fs, sf, ss, st, sts, mid, act_force, act_static, cmoment = (
+                _concat([p[i] for p in parts]) for i in range(len(parts[0])))
     else:
         X = solve_motion_positions(structure, motion, progress=progress) if nt > 1 else None
         (kin, f, fs, sf, ss, st, sts, mid, act_force, act_static,
-         cmoment) = _steps(structure, motion, X, scheme, bodies, act_idx, **opts)
+         cmoment) = _steps(structure, compute_kinematics(structure, motion, scheme=scheme,
+                                                         coords=X),
+                           bodies, act_idx, **opts)
     buck = buckling_check(structure, sf.tension, bodies.tube_length, buckling_constants)
     res = SimulationResult(structure=structure, motion=motion, kinematics=kin, bodies=bodies,
                            forces=f, static_forces=fs, sections=sf, static_sections=ss,
@@ -199,17 +225,27 @@ def simulate(structure: Structure, motion: Motion | None = None, *, scheme: str 
 CHUNK_ENTRIES = 1 << 17
 
 
-def _steps(structure, motion, X, scheme, bodies, act_idx, *, n_sections, full_length_inertia,
-           shear_factor):
-    """Kinematics, forces, sections, stresses and actuator force for a block of steps."""
-    kin = compute_kinematics(structure, motion, scheme=scheme, coords=X)
-    still = kin.at_rest()
-    f = nodal_forces(structure, kin, bodies)
-    fs = nodal_forces(structure, still, bodies)
+def _solve_tensions(kin: Kinematics, rhs: np.ndarray) -> np.ndarray:
+    """``Bᵀ t = rhs`` (nt, n_free, r) with the kinematics' direct factorisation."""
+    try:
+        return kin.compat.solve(rhs, transpose=True)
+    except SingularStep as s:                                  # pragma: no cover
+        raise AnalysisError(f"step {s.step} (t = {kin.time[s.step]:.6g} s)",
+                            "the truss is at a singular position (its equilibrium matrix is "
+                            "rank deficient): the member forces are not determined there"
+                            ) from None
+
+
+def _steps(structure, kin, bodies, act_idx, *, n_sections, full_length_inertia,
+           shear_factor, forces=None):
+    """Forces, sections, stresses and actuator force for a block of steps of kinematics
+    ``kin``; the static ones are those of the same positions at rest.  ``forces``: the
+    (dynamic, static) nodal forces if already known."""
+    f, fs = nodal_forces_with_static(structure, kin, bodies) if forces is None else forces
     sf = section_forces(structure, kin, f, bodies, n_sections,
                         full_length_inertia=full_length_inertia)
-    ss = section_forces(structure, still, fs, bodies, n_sections,
-                        full_length_inertia=full_length_inertia)
+    ss = section_forces(structure, kin, fs, bodies, n_sections,
+                        full_length_inertia=full_length_inertia, at_rest=True)
     if n_sections == 1 or n_sections % 2:
         mid = sf.tension[:, :, (sf.tension.shape[2] - 1) // 2]
     else:
@@ -219,9 +255,19 @@ def _steps(structure, motion, X, scheme, bodies, act_idx, *, n_sections, full_le
     sts = section_stresses(structure, ss, shear_factor=shear_factor)
     # The cantilever connection: the cut at u = L_tube of an active member, where the
     # piece is the whole leadscrew tube; its axial force is the actuator force.
-    act_force, act_static, cmoment = _cantilever(structure, kin, still, f, fs, bodies, act_idx)
+    act_force, act_static, cmoment = _cantilever(structure, kin, f, fs, bodies, act_idx)
     kin.compat = None                  # factorisations of one block are not kept
     return kin, f, fs, sf, ss, st, sts, mid, act_force, act_static, cmoment
+
+
+def _slice_kinematics(kin: Kinematics, k0: int, k1: int) -> Kinematics:
+    """Steps ``k0:k1`` of ``kin`` (views) with their factorisations."""
+    values = {}
+    for name in kin.__dataclass_fields__:
+        v = getattr(kin, name)
+        values[name] = v[k0:k1] if isinstance(v, np.ndarray) else v
+    values["compat"] = None if kin.compat is None else kin.compat.subset(k0, k1)
+    return Kinematics(**values)
 
 
 def _slice_motion(motion: Motion, k0: int, k1: int) -> Motion:
@@ -245,7 +291,7 @@ def _concat(items: list):
     return type(first)(**values)
 
 
-def _cantilever(structure, kin, still, f, fs, bodies, act_idx):
+def _cantilever(structure, kin, f, fs, bodies, act_idx):
     """Actuator force (dynamic and static) and cantilever moment of the active members."""
     nt = kin.n_steps
     if act_idx.size == 0:
@@ -253,7 +299,8 @@ def _cantilever(structure, kin, still, f, fs, bodies, act_idx):
         return z, z.copy(), z.copy()
     pos = bodies.tube_length[act_idx, None].copy()
     cf = section_forces(structure, kin, f, bodies, positions=pos, members=act_idx)
-    cs = section_forces(structure, still, fs, bodies, positions=pos, members=act_idx)
+    cs = section_forces(structure, kin, fs, bodies, positions=pos, members=act_idx,
+                        at_rest=True)
     # N·e = −T: positive when the base pushes the tube outward (Lacy ``actfor``).
     return -cf.tension[:, :, 0], -cs.tension[:, :, 0], cf.moment_magnitude[:, :, 0]
 

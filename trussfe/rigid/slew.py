@@ -320,7 +320,13 @@ def rotation_motion(spec: dict, structure: Structure, *, steps: int | None = Non
             raise InputError(f"{item}.top_nodes", f"unknown node {exc}") from None
     else:
         top = list(np.argsort(structure.coords[:, -1])[-3:])
+    if steps is not None and (isinstance(steps, bool) or not isinstance(steps, int)
+                              or steps < 1):
+        raise InputError("--steps", f"must be a positive integer, got {steps!r}")
     if "angle" in spec or "time" in spec:
+        if steps is not None:
+            raise InputError("--steps", "a rotation given by time and angle samples has its "
+                             "own steps; --steps applies to start/end/duration rotations")
         try:
             t = np.asarray(spec["time"], dtype=float).reshape(-1)
             ang = np.radians(np.asarray(spec["angle"], dtype=float).reshape(-1))
