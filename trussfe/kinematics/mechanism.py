@@ -577,7 +577,26 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
             if not np.allclose(pred[dcols], S, rtol=1e-6, atol=1e-12 * Lmax):
                 raise AnalysisError(item, "the drives are not independent degrees of freedom "
                                           "of the mechanism; choose other drive coordinates")
-            if nullity > nd:
+            finite = nullity
+            if nullity <= nd and conn.shape[0] > rank:
+                # Self-stress states at the start: B at the state *plus* the prescribed
+                # increments (as in section 4) tells how many freedoms are finite.
+                finite = f - _dense_null(compatibility_matrix(x + full(pred), conn, free),
+                                         rtol)[0]
+            if finite < nd and conn.shape[0] > rank:
+                # Section 6: a folded assembly with more infinitesimal mechanisms than finite
+                # freedoms.  The coordinate of the largest prescribed displacement is the
+                # independent one; the prescription is moved onto the nearest second-order
+                # unfolding direction and a second-order prediction starts the corrector.
+                from .unfolding import project_to_cone, second_order_prediction
+                bif_here = True
+                p = int(dcols[int(np.argmax(np.abs(S)))])
+                v = project_to_cone(x, conn, free, pred, p, rtol=rtol)
+                pred = second_order_prediction(x, conn, free, v, p)
+                indep = np.array([p])
+                events.append({"step": k - 1, "kind": "bifurcation", "branches": int(nullity),
+                               "unfolding": True, "independent": names[fidx[p]]})
+            elif nullity > nd:
                 # More infinitesimal than finite freedoms: only the coordinate of the largest
                 # displacement is independent in the corrector (section 6).
                 bif_here = True
