@@ -440,14 +440,24 @@ def _test_function(x, conn, free, c, rows=None) -> float:
         return 0.0
     sign = int(np.prod(np.sign(diag)))
     sign *= (-1) ** (_perm_parity(lu.perm_r) + _perm_parity(lu.perm_c))
-    v = np.random.default_rng(0).normal(size=A.shape[0])
+    return float(sign * _lu_smallest_singular(lu))
+
+
+def _lu_smallest_singular(lu) -> float:
+    """Smallest singular value of a SuperLU-factorised matrix A, estimated by two steps of power
+    iteration on ``(AᵀA)⁻¹`` (two solves each) from a fixed start: an estimate from above,
+    within a small factor — enough to see the test function dip towards zero."""
+    n = lu.shape[0]
+    v = np.random.default_rng(0).normal(size=n)
     v /= np.linalg.norm(v)
     lam = 1.0
-    for _ in range(4):                                     # power iteration on (AᵀA)⁻¹
+    for _ in range(2):
         z = lu.solve(lu.solve(v, trans="T"))
         lam = float(np.linalg.norm(z))
+        if not np.isfinite(lam) or lam == 0.0:
+            return 0.0
         v = z / lam
-    return float(sign / np.sqrt(lam))
+    return float(1.0 / np.sqrt(lam))
 
 
 def _refine_interval(xa, xm, xb, conn, L, free, rows, tolerance, max_iterations,
@@ -497,6 +507,7 @@ def _check_double_crossing(phi, j, path, conn, L, free, rows, tolerance, max_ite
         return
     if abs(fm) >= DIP_RATIO * min(abs(fa), abs(fb)):
         return
+    log.info("trace: sharp minimum of the test function at state %d; refining", j - 1)
     found = _refine_interval(path[j - 2], path[j - 1], path[j], conn, L, free, rows,
                              tolerance, max_iterations)
     if found is None:
@@ -747,6 +758,7 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
             c = prev_tau if prev_tau is not None else np.sign(S[0]) * np.eye(f)[dcols[0]]
             Br = B[rows] if rows.size != B.shape[0] else B
             chord = None
+            phi_lu = None
             if not dense and square and prev_tau is not None and nd == 1:
                 # One factorisation per step: [B; e_pᵀ] with p the coordinate of largest
                 # velocity of the last step gives the tangent (τ_p = 1), the determinant sign
@@ -759,6 +771,9 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
                     if tau @ prev_tau < 0:
                         tau = -tau
                     sign *= int(np.sign(tau[p0]))
+                    # test function from the same factorisation: [B; e_pᵀ] is singular where
+                    # B loses rank, and τ_p is the largest velocity, so not at limit points
+                    phi_lu = sign * _lu_smallest_singular(lu)
                     if abs(tau[p0]) >= 0.5 * np.abs(tau).max():
                         chord = (lu, p0)
             elif Br.shape[0] + 1 == f:
@@ -812,6 +827,12 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
                     pred = h * tau / abs(tau[p])           # forward along the oriented tangent
             prev_sign = sign
             indep = np.array([p])
+            if prev_tau is not None and switch is None:
+                j = len(path) - 1
+                phi[j] = phi_lu if phi_lu is not None else _test_function(x, conn, free, tau,
+                                                                          rows)
+                _check_double_crossing(phi, j, path, conn, L, free, rows, tolerance,
+                                       max_iterations, events)
 
         # Corrector with step halving down to the minimum step.
         while True:
@@ -850,11 +871,6 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
             if bif_here:
                 prev_sign = 0                              # restart the determinant record
             prev_tau = new_tau
-            j = len(path) - 1
-            if not bif_here and k > 1:
-                phi[j] = _test_function(x, conn, free, new_tau, rows)
-                _check_double_crossing(phi, j, path, conn, L, free, rows, tolerance,
-                                       max_iterations, events)
             ddir = np.sign(d[dcols[0]]) if abs(d[dcols[0]]) > 1e-12 * norm else 0.0
             if prev_drive_dir and ddir and ddir != prev_drive_dir:
                 events.append({"step": k - 1, "kind": "limit_point",
