@@ -106,3 +106,14 @@ def test_validation_entry_counts():
     for key in ("minus1", "minus3"):
         assert r[key]["infinitesimal"] == 4 and r[key]["shapes"] == 4
         assert r[key]["rank_after_min"] == 7 and r[key]["misfit"] < 1e-9
+
+
+def test_direction_count_sweep_never_gives_two():
+    """Seed finding (section 6): folded states of the section-6 graph with a ground bar removed
+    have 0 or 8 real unfolding directions (a flat four-bar with two branches carrying two
+    dyads that open both ways or not at all), never the 2 the text's "two shapes and their
+    symmetric pairs" needs.  Small deterministic sample of the documented sweep."""
+    from trussfe.kinematics.reproductions import section6_direction_counts
+    hist = section6_direction_counts(samples=4, seed=0)
+    assert sum(hist.values()) >= 12
+    assert set(hist) <= {0, 8} and 8 in hist

@@ -473,3 +473,38 @@ def hortobagyi_section6(figures: bool = True) -> dict:
     if figures:
         out["figures"] = _section6_figure(results)
     return out
+
+
+def section6_direction_counts(samples: int = 200, seed: int = 0, starts: int = 150) -> dict:
+    """How many real unfolding directions folded assemblies of the section-6 graph have.
+
+    Random folded states of the graph of :func:`trussfe.models.mechanisms.section6_foldable`
+    (inner and ground joints at distinct half-integer positions in [0, 6]), each ground bar
+    removed in turn; only states where the eight-bar assembly is second-order rigid (cannot
+    move, as the text requires) and the reduced one has simple roots only are counted.
+
+    Returns
+    -------
+    dict
+        Number of real unfolding directions (lines; each with its mirror image) → number of
+        (state, removed bar) pairs.  The text's "two unfolding shapes, symmetrical pairs of
+        these are the other two" needs 2.
+    """
+    from .unfolding import tangent_cone
+    rng = np.random.default_rng(seed)
+    bars = np.array([(0, 4), (1, 5), (2, 6), (3, 7), (0, 1), (1, 2), (2, 3), (3, 0)])
+    free = np.zeros((8, 2), bool)
+    free[:4] = True
+    hist: dict = {}
+    done = 0
+    while done < samples:
+        xs = rng.choice(np.arange(13) / 2.0, 8, replace=False)
+        X = np.column_stack([xs, np.zeros(8)])
+        if len(tangent_cone(X, bars, free, starts=20).directions):
+            continue                                       # the full assembly must be rigid
+        done += 1
+        for k in range(4):
+            c = tangent_cone(X, np.delete(bars, k, axis=0), free, starts=starts, seed=done)
+            if c.simple.all():
+                hist[len(c.directions)] = hist.get(len(c.directions), 0) + 1
+    return dict(sorted(hist.items()))

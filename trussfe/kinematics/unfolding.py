@@ -120,26 +120,34 @@ def tangent_cone(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarray,
     if s == 0:
         return TangentCone(N.T.copy(), np.ones(m, bool), m, 0)
     rng = np.random.default_rng(seed)
+    n, dim = x.shape
+    fidx = np.flatnonzero(np.asarray(free, bool).ravel())
+    Nf = np.zeros((n * dim, m))
+    Nf[fidx] = N
+    Nf = Nf.reshape(n, dim, m)
+    L = np.linalg.norm(x[conn[:, 1]] - x[conn[:, 0]], axis=1)
+    dN = Nf[conn[:, 1]] - Nf[conn[:, 0]]                   # (b, dim, m)
+    W = np.einsum("bs,bdm->sbdm", Om / L[:, None], dN)      # stress-weighted, (s, b, dim, m)
+    # ωᵀq(N a) = aᵀ M a with M_k = Σ_b ω_kb/l_b ΔN_bᵀ ΔN_b: the quadrics, shape (s, m, m)
+    M = np.einsum("sbdm,bdn->smn", W, dN)
+    A = rng.normal(size=(starts, m))
+    A /= np.linalg.norm(A, axis=1, keepdims=True)
+    for _it in range(60):                                  # Newton on all starts at once
+        MA = np.einsum("kmn,tn->tkm", M, A)                # (starts, s, m)
+        F = np.concatenate([np.einsum("tkm,tm->tk", MA, A),
+                            (np.einsum("tm,tm->t", A, A) - 1.0)[:, None]], axis=1)
+        J = np.concatenate([2.0 * MA, 2.0 * A[:, None, :]], axis=1)
+        A = A - np.einsum("tmk,tk->tm", np.linalg.pinv(J), F)
+    MA = np.einsum("kmn,tn->tkm", M, A)
+    res = np.abs(np.einsum("tkm,tm->tk", MA, A)).max(axis=1)
+    scale = np.abs(M).max()
     found: list[np.ndarray] = []
     simple: list[bool] = []
-    for _ in range(starts):
-        a = rng.normal(size=m)
-        a /= np.linalg.norm(a)
-        for _it in range(60):
-            q, dq = _quadric_terms(x, conn, free, N, a)
-            F = np.concatenate([Om.T @ q, [a @ a - 1.0]])
-            J = np.vstack([Om.T @ dq, 2.0 * a])
-            step = np.linalg.lstsq(J, -F, rcond=None)[0]
-            a = a + step
-            if np.linalg.norm(step) < 1e-14:
-                break
-        q, dq = _quadric_terms(x, conn, free, N, a)
-        if np.linalg.norm(Om.T @ q) > 1e-10 * max(1.0, float(np.abs(q).max())):
-            continue
-        a /= np.linalg.norm(a)
+    for t in np.flatnonzero(res <= 1e-10 * max(scale, 1e-300)):
+        a = A[t] / np.linalg.norm(A[t])
         if any(abs(a @ b) > 1 - 1e-8 for b in found):
             continue
-        J = np.vstack([Om.T @ dq, 2.0 * a])
+        J = np.vstack([2.0 * np.einsum("kmn,n->km", M, a), 2.0 * a])
         sv = np.linalg.svd(J, compute_uv=False)
         found.append(a)
         simple.append(bool(sv[-1] > 1e-6 * sv[0]) and J.shape[0] >= m)
