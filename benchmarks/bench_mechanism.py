@@ -96,7 +96,8 @@ def main() -> None:
         misfit = np.max(np.abs(np.linalg.norm(xe[bars[:, 1]] - xe[bars[:, 0]], axis=1)
                                - np.linalg.norm(X[bars[:, 1]] - X[bars[:, 0]], axis=1)))
         rows.append((f"trace {n} joints ({3 * n} coords, {len(bars)} bars)",
-                     f"{steps / dt:.1f} steps/s ({steps / dc:.1f} cpu)", "≥ 10 steps/s" if n == 1000 else "",
+                     f"{steps / dt:.1f} steps/s ({steps / dc:.1f} cpu)",
+                     "≥ 10 steps/s" if n == 1000 else "",
                      f"misfit {misfit:.1e} m"))
     cases = [("3-D", lambda: lattice(6, 6, 6))]
     if not args.quick:

@@ -83,7 +83,8 @@ def test_projection_keeps_the_independent_increment():
 def test_four_unfolding_shapes(remove):
     """Section 6: four prescribed vertical increments, one trace per inner joint leading; each
     unfolds to a one-degree-of-freedom finite mechanism (ρ(B) 4 → 7), keeps every bar length
-    to the corrector tolerance, and the four final shapes differ (> 0.1 m apart after 0.3 m of lead motion)."""
+    to the corrector tolerance, and the four final shapes differ (> 0.1 m apart after 0.3 m of
+    lead motion)."""
     e, cone, traces = section6_unfolding_traces(remove, steps=6)
     L0 = np.linalg.norm(e.coords[e.bars[:, 1]] - e.coords[e.bars[:, 0]], axis=1)
     finals = []

@@ -316,7 +316,7 @@ def _inertia_factorisation(shifted: sp.csc_matrix, backend: str):
             A = sp.triu(shifted, format="csr")
             A.sort_indices()
             ps = pypardiso.PyPardisoSolver(mtype=-2)       # real symmetric indefinite
-            ps.set_iparm(13, 1)                            # weighted matching: fewer perturbed pivots
+            ps.set_iparm(13, 1)                            # weighted matching (fewer perturbed)
             try:
                 ps.factorize(A)
                 pos, neg, perturbed = int(ps.iparm[21]), int(ps.iparm[22]), int(ps.iparm[13])
