@@ -396,7 +396,7 @@ def _section6_figure(results: dict) -> dict:
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(len(results), 4, figsize=(14, 1.6 + 1.5 * len(results)), squeeze=False)
+    fig, axes = plt.subplots(len(results), 4, figsize=(14, 1.0 + 1.3 * len(results)), squeeze=False)
     colours = ["tab:blue", "tab:orange", "tab:green", "tab:red"]
     for row, (remove, (e, _cone, traces)) in enumerate(results.items()):
         for col, (S, t) in enumerate(traces):
@@ -410,7 +410,7 @@ def _section6_figure(results: dict) -> dict:
                         label=f"P{j + 1}", zorder=3)
             ax.plot(X[0, 4:, 0], X[0, 4:, 1], "k^", ms=6, zorder=4)
             ax.set_aspect("equal")
-            ax.set_title(f"bar {remove + 1} removed: P{col + 1} leads", fontsize=9)
+            ax.set_title(f"bar {remove + 1} removed: direction nearest P{col + 1} up", fontsize=9)
             ax.tick_params(labelsize=7)
     axes[0, 0].legend(fontsize=7, loc="upper left")
     fig.suptitle("Hortobágyi section 6 (construction): four unfolding shapes from the folded "
