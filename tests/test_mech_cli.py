@@ -96,3 +96,34 @@ def test_trace_divergence_message(capsys):
                "--step", "0.02", "--steps", "10"])
     err = capsys.readouterr().err
     assert rc == 2 and "leaves the motion region" in err
+
+
+def test_mechanism_vtk_reads_back_values(tmp_path):
+    """The VTK written through trussfe.io.vtk holds the values of the JSON: the mechanism shape
+    (padded to 3 components), the self-stress tensions, and along a trace the positions and
+    the displacement from the start state; the .pvd lists the path parameter as time."""
+    from trussfe.io.vtk import read_pvd
+    out = tmp_path / "r.json"
+    assert main(["mechanism", str(mesh_path("mech_bricard.toml")), "--json", str(out),
+                 "--vtk", str(tmp_path / "m")]) == 0
+    doc = json.loads(out.read_text())
+    m = meshio.read(tmp_path / "m" / "mechanism_01.vtu")
+    shape = np.zeros((6, 3))
+    for nid, v in doc["mechanism_modes"][0].items():     # JSON lists the moving nodes
+        shape[int(nid) - 1] = v
+    np.testing.assert_allclose(m.point_data["displacement"], shape, atol=1e-12)
+    assert np.linalg.norm(m.point_data["displacement"]) > 0.1
+    s = meshio.read(tmp_path / "m" / "self_stress_01.vtu")
+    assert s.cell_data["member_id"][0].tolist() == list(range(12))
+    t = tmp_path / "t.json"
+    assert main(["trace", str(mesh_path("mech_fourbar.toml")), "--drive", "2:y", "--step",
+                 "0.05", "--steps", "3", "--json", str(t), "--vtk", str(tmp_path / "t")]) == 0
+    doc = json.loads(t.read_text())
+    entries = read_pvd(tmp_path / "t" / "path.pvd")
+    assert [e[0] for e in entries] == pytest.approx([p["parameter"] for p in doc["path"]])
+    last = meshio.read(entries[-1][1])
+    pos = np.array([doc["path"][-1]["positions"][str(i)] for i in range(1, 5)])
+    np.testing.assert_allclose(last.points[:, :2], pos, rtol=1e-12, atol=1e-12)
+    first = np.array([doc["path"][0]["positions"][str(i)] for i in range(1, 5)])
+    np.testing.assert_allclose(last.point_data["displacement"][:, :2], pos - first, atol=1e-12)
+    assert np.all(last.point_data["displacement"][:, 2] == 0)

@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: MIT
-"""VTK output of the mechanism commands, written through meshio (ParaView opens it as is).
+"""VTK output of the mechanism commands, written with :mod:`trussfe.io.vtk` (ParaView opens it
+as is).
 
 Line cells are the members; point data ``displacement`` holds a mechanism shape (or the motion
 from the start state along a trace); cell data ``self_stress`` a state of self-stress.  A set of
@@ -8,35 +9,20 @@ shapes or a path is a ``.pvd`` collection of ``.vtu`` files.
 from __future__ import annotations
 
 from pathlib import Path
-from xml.sax.saxutils import quoteattr
 
-import meshio
 import numpy as np
 
 from ..io.output import atomic_dir
+from ..io.vtk import write_pvd, write_vtu
 
 
-def _points3(coords: np.ndarray) -> np.ndarray:
-    x = np.asarray(coords, float)
-    return np.column_stack([x, np.zeros((x.shape[0], 3 - x.shape[1]))]) if x.shape[1] < 3 else x
-
-
-def _write_vtu(path: Path, coords, connectivity, point_data=None, cell_data=None) -> None:
-    mesh = meshio.Mesh(_points3(coords), [("line", np.asarray(connectivity, dtype=np.int64))],
-                       point_data={k: _points3(v) if np.ndim(v) == 2 else np.asarray(v)
-                                   for k, v in (point_data or {}).items()},
-                       cell_data={k: [np.asarray(v, float)] for k, v in (cell_data or {}).items()})
-    meshio.write(str(path), mesh, file_format="vtu")
+def _write_vtu(path: Path, structure, coords=None, point_data=None, cell_data=None) -> None:
+    """One configuration through :func:`trussfe.io.vtk.write_vtu` (2-D vectors padded)."""
+    write_vtu(path, structure, coords=coords, point_data=point_data, cell_data=cell_data)
 
 
 def _write_pvd(path: Path, entries: list[tuple[float, str]]) -> None:
-    lines = ['<?xml version="1.0"?>',
-             '<VTKFile type="Collection" version="0.1" byte_order="LittleEndian">',
-             "  <Collection>"]
-    lines += [f'    <DataSet timestep="{t:.12g}" part="0" file={quoteattr(f)}/>'
-              for t, f in entries]
-    lines += ["  </Collection>", "</VTKFile>", ""]
-    path.write_text("\n".join(lines))
+    write_pvd(path, entries)
 
 
 def write_rank_vtk(directory: str | Path, structure, result) -> None:
@@ -51,7 +37,7 @@ def write_rank_vtk(directory: str | Path, structure, result) -> None:
                 d = np.zeros(n * dim)
                 d[fidx] = basis[:, k]
                 name = f"{prefix}_{k + 1:02d}.vtu"
-                _write_vtu(tmp / name, structure.coords, structure.connectivity,
+                _write_vtu(tmp / name, structure,
                            point_data={"displacement": d.reshape(n, dim)})
                 entries.append((len(entries), name))
         if entries:
@@ -60,11 +46,11 @@ def write_rank_vtk(directory: str | Path, structure, result) -> None:
             st = []
             for k in range(result.self_stress_basis.shape[1]):
                 name = f"self_stress_{k + 1:02d}.vtu"
-                _write_vtu(tmp / name, structure.coords, structure.connectivity,
+                _write_vtu(tmp / name, structure,
                            cell_data={"self_stress": result.self_stress_basis[:, k]})
                 st.append((k, name))
             _write_pvd(tmp / "self_stress.pvd", st)
-        _write_vtu(tmp / "structure.vtu", structure.coords, structure.connectivity)
+        _write_vtu(tmp / "structure.vtu", structure)
 
 
 def write_trace_vtk(directory: str | Path, structure, trace) -> None:
@@ -74,7 +60,7 @@ def write_trace_vtk(directory: str | Path, structure, trace) -> None:
         entries = []
         for k, x in enumerate(trace.coords):
             name = f"step_{k:04d}.vtu"
-            _write_vtu(tmp / name, x, structure.connectivity,
+            _write_vtu(tmp / name, structure, coords=x,
                        point_data={"displacement": x - trace.coords[0]})
             entries.append((float(trace.parameter[k]), name))
         _write_pvd(tmp / "path.pvd", entries)

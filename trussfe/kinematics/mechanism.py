@@ -403,6 +403,123 @@ def _switch_branch(x_prev, x, conn, L, free, tau, h, branch, tolerance, max_iter
     return xb, sgn * h * w / abs(w[q]), q
 
 
+#: A step whose middle state has the smallest singular value of ``[B; τᵀ]`` below this
+#: fraction of its neighbours' (with no sign change of the determinant) is re-traced in
+#: sub-steps: two bifurcations crossed in one step cancel in the sign test.
+DIP_RATIO = 0.5
+#: Sub-steps per step of the re-traced interval.
+REFINE_SUBSTEPS = 8
+
+
+def _test_function(x, conn, free, c, rows=None) -> float:
+    """Signed smallest singular value of ``[B; ĉᵀ]`` (ĉ = c/|c|, c along the tangent).
+
+    It vanishes where B loses rank on the path (a bifurcation) and, unlike det B11, not at
+    a limit point.  Its sign is that of the determinant (by LU with the permutations' parity,
+    never the determinant's value, which under- or overflows); the magnitude comes from an
+    exact SVD up to the dense limit and from four steps of inverse iteration on ``AᵀA`` with
+    the same LU above it.  Returns 0.0 when the matrix is exactly singular or not square.
+    """
+    B = compatibility_matrix(x, conn, free)
+    if rows is not None and rows.size != B.shape[0]:
+        B = B[rows]
+    c = np.asarray(c, float) / np.linalg.norm(c)
+    A = sp.vstack([B, sp.csr_matrix(c[None, :])]).tocsc()
+    if A.shape[0] != A.shape[1]:
+        return 0.0
+    if A.shape[0] <= DENSE_LIMIT + 1:
+        Ad = A.toarray()
+        sign = np.linalg.slogdet(Ad)[0]
+        return float(sign * np.linalg.svd(Ad, compute_uv=False)[-1])
+    try:
+        lu = spla.splu(A)
+    except RuntimeError:
+        return 0.0
+    diag = lu.U.diagonal()
+    if np.any(diag == 0):
+        return 0.0
+    sign = int(np.prod(np.sign(diag)))
+    sign *= (-1) ** (_perm_parity(lu.perm_r) + _perm_parity(lu.perm_c))
+    return float(sign * _lu_smallest_singular(lu))
+
+
+def _lu_smallest_singular(lu) -> float:
+    """Smallest singular value of a SuperLU-factorised matrix A, estimated by two steps of power
+    iteration on ``(AᵀA)⁻¹`` (two solves each) from a fixed start: an estimate from above,
+    within a small factor — enough to see the test function dip towards zero."""
+    n = lu.shape[0]
+    v = np.random.default_rng(0).normal(size=n)
+    v /= np.linalg.norm(v)
+    lam = 1.0
+    for _ in range(2):
+        z = lu.solve(lu.solve(v, trans="T"))
+        lam = float(np.linalg.norm(z))
+        if not np.isfinite(lam) or lam == 0.0:
+            return 0.0
+        v = z / lam
+    return float(1.0 / np.sqrt(lam))
+
+
+def _refine_interval(xa, xm, xb, conn, L, free, rows, tolerance, max_iterations,
+                     sub: int = REFINE_SUBSTEPS) -> list[float] | None:
+    """Re-trace the two steps ``xa → xm → xb`` in ``2·sub`` sub-steps and return where the
+    sign of the test function changes (in steps from ``xa``), or None if a sub-step fails.
+
+    The sub-states are corrected from ``xa`` along the quadratic through the three states with
+    the coordinate of largest motion prescribed (Hortobágyi eq. 4–7); the test function's
+    vector is the quadratic's derivative, which stays on the side of the true tangent.
+    """
+    fidx = np.flatnonzero(free.ravel())
+    n, dim = xa.shape
+    da = (xm - xa).ravel()[fidx]
+    db = (xb - xa).ravel()[fidx]
+    b2 = (db - 2.0 * da) / 2.0                             # q(s) = a s + b2 s², q(1)=da, q(2)=db
+    a1 = da - b2
+    p = int(np.argmax(np.abs(db)))
+    svals = np.linspace(0.0, 2.0, 2 * sub + 1)
+    phis = []
+    for sv in svals:
+        if sv == 0.0:
+            x = xa
+        else:
+            res = hortobagyi_step(xa, conn, L, free, [p], a1 * sv + b2 * sv * sv,
+                                  tolerance=tolerance, max_iterations=max_iterations)
+            if not res.converged:
+                return None
+            u = np.zeros(n * dim)
+            u[fidx] = res.increments
+            x = xa + u.reshape(n, dim)
+        phis.append(_test_function(x, conn, free, a1 + 2.0 * b2 * sv, rows))
+    sg = np.sign(phis)
+    return [float(svals[i]) for i in range(len(sg) - 1) if sg[i] and sg[i + 1]
+            and sg[i] != sg[i + 1]]
+
+
+def _check_double_crossing(phi, j, path, conn, L, free, rows, tolerance, max_iterations,
+                           events) -> None:
+    """If state ``j − 1`` is a sharp minimum of |test function| with no sign change around it,
+    re-trace states ``j − 2 … j`` in sub-steps and report every sign change found as a
+    bifurcation (two bifurcations crossed in one step cancel in the plain sign test)."""
+    if not all(i in phi for i in (j - 2, j - 1, j)):
+        return
+    fa, fm, fb = phi[j - 2], phi[j - 1], phi[j]
+    if not (fa and fm and fb) or len({np.sign(fa), np.sign(fm), np.sign(fb)}) != 1:
+        return
+    if abs(fm) >= DIP_RATIO * min(abs(fa), abs(fb)):
+        return
+    log.info("trace: sharp minimum of the test function at state %d; refining", j - 1)
+    found = _refine_interval(path[j - 2], path[j - 1], path[j], conn, L, free, rows,
+                             tolerance, max_iterations)
+    if found is None:
+        log.info("trace: step refinement near state %d did not converge", j - 1)
+        return
+    for sv in found:
+        events.append({"step": j - 1 + int(sv), "kind": "bifurcation",
+                       "detected_by": "step refinement (minimum of the smallest singular "
+                                      "value of [B; tangent])"})
+    phi.pop(j - 1)                                         # do not refine the same dip twice
+
+
 def _dense_null(B: sp.csr_matrix, rtol: float):
     A = B.toarray()
     if A.shape[0] == 0:
@@ -529,6 +646,7 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
         return out.reshape(n, dim)
 
     path = [x.copy()]
+    phi = {}                                               # state index → test function
     param = [0.0]
     ranks, iters, resid, indeps, events = [], [], [0.0], [], []
     prev_tau = None
@@ -577,7 +695,26 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
             if not np.allclose(pred[dcols], S, rtol=1e-6, atol=1e-12 * Lmax):
                 raise AnalysisError(item, "the drives are not independent degrees of freedom "
                                           "of the mechanism; choose other drive coordinates")
-            if nullity > nd:
+            finite = nullity
+            if nullity <= nd and conn.shape[0] > rank:
+                # Self-stress states at the start: B at the state *plus* the prescribed
+                # increments (as in section 4) tells how many freedoms are finite.
+                finite = f - _dense_null(compatibility_matrix(x + full(pred), conn, free),
+                                         rtol)[0]
+            if finite < nd and conn.shape[0] > rank:
+                # Section 6: a folded assembly with more infinitesimal mechanisms than finite
+                # freedoms.  The coordinate of the largest prescribed displacement is the
+                # independent one; the prescription is moved onto the nearest second-order
+                # unfolding direction and a second-order prediction starts the corrector.
+                from .unfolding import project_to_cone, second_order_prediction
+                bif_here = True
+                p = int(dcols[int(np.argmax(np.abs(S)))])
+                v = project_to_cone(x, conn, free, pred, p, rtol=rtol)
+                pred = second_order_prediction(x, conn, free, v, p)
+                indep = np.array([p])
+                events.append({"step": k - 1, "kind": "bifurcation", "branches": int(nullity),
+                               "unfolding": True, "independent": names[fidx[p]]})
+            elif nullity > nd:
                 # More infinitesimal than finite freedoms: only the coordinate of the largest
                 # displacement is independent in the corrector (section 6).
                 bif_here = True
@@ -621,6 +758,7 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
             c = prev_tau if prev_tau is not None else np.sign(S[0]) * np.eye(f)[dcols[0]]
             Br = B[rows] if rows.size != B.shape[0] else B
             chord = None
+            phi_lu = None
             if not dense and square and prev_tau is not None and nd == 1:
                 # One factorisation per step: [B; e_pᵀ] with p the coordinate of largest
                 # velocity of the last step gives the tangent (τ_p = 1), the determinant sign
@@ -633,6 +771,9 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
                     if tau @ prev_tau < 0:
                         tau = -tau
                     sign *= int(np.sign(tau[p0]))
+                    # test function from the same factorisation: [B; e_pᵀ] is singular where
+                    # B loses rank, and τ_p is the largest velocity, so not at limit points
+                    phi_lu = sign * _lu_smallest_singular(lu)
                     if abs(tau[p0]) >= 0.5 * np.abs(tau).max():
                         chord = (lu, p0)
             elif Br.shape[0] + 1 == f:
@@ -686,6 +827,12 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
                     pred = h * tau / abs(tau[p])           # forward along the oriented tangent
             prev_sign = sign
             indep = np.array([p])
+            if prev_tau is not None and switch is None:
+                j = len(path) - 1
+                phi[j] = phi_lu if phi_lu is not None else _test_function(x, conn, free, tau,
+                                                                          rows)
+                _check_double_crossing(phi, j, path, conn, L, free, rows, tolerance,
+                                       max_iterations, events)
 
         # Corrector with step halving down to the minimum step.
         while True:

@@ -353,3 +353,158 @@ def hortobagyi_constructions() -> dict:
     out["mech_bricard"].update(misfit=float(np.max(np.abs(L - L0))),
                                rank_min=int(t.rank.min()), rank_max=int(t.rank.max()))
     return out
+
+
+# --------------------------------------------------------------------------- Hortobágyi sec. 6
+def section6_unfolding_traces(remove: int = 0, *, step: float = 0.05, steps: int = 12):
+    """The four unfolding shapes of the section-6 construction with bar ``remove + 1`` removed.
+
+    For each inner joint Pi the unfolding direction (second-order tangent cone, see
+    :mod:`trussfe.kinematics.unfolding`) nearest its vertical infinitesimal mechanism gives the
+    four prescribed vertical increments (largest = ``step``); :func:`trace_mechanism` follows
+    the motion from the folded state with those four drives (Hortobágyi section 6: "prescribe
+    the vertical co-ordinate increments of the four inner nodes").
+
+    Returns
+    -------
+    entry : MechanismEntry
+    cone : TangentCone
+    traces : list of (increments, TraceResult)
+        One per inner joint, in joint order.
+    """
+    from ..models.mechanisms import section6_foldable
+    from .unfolding import tangent_cone
+    e = section6_foldable(remove)
+    cone = tangent_cone(e.coords, e.bars, e.free)
+    D = cone.directions                                    # rows: unit, free coords (x, y)...
+    drives = [i * 2 + 1 for i in range(4)]                 # Pi:y, flat indices
+    traces = []
+    for i in range(4):
+        line = int(np.argmax(np.abs(D[:, 2 * i + 1])))
+        vy = D[line, 1::2]
+        vy = vy * np.sign(vy[i])
+        S = step * vy / np.abs(vy).max()
+        traces.append((S, trace_mechanism(e.coords, e.bars, e.free, drives, S, steps)))
+    return e, cone, traces
+
+
+def _section6_figure(results: dict) -> dict:
+    """Node trajectories of the four unfolding shapes (two rows: the two removed bars)."""
+    import tempfile
+    from pathlib import Path
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(len(results), 4, figsize=(14, 1.0 + 1.3 * len(results)), squeeze=False)
+    colours = ["tab:blue", "tab:orange", "tab:green", "tab:red"]
+    for row, (remove, (e, _cone, traces)) in enumerate(results.items()):
+        for col, (S, t) in enumerate(traces):
+            ax = axes[row, col]
+            X = t.coords
+            for a, b in e.bars:                            # folded and final states
+                ax.plot(X[0, [a, b], 0], X[0, [a, b], 1], color="0.8", lw=3, zorder=1)
+                ax.plot(X[-1, [a, b], 0], X[-1, [a, b], 1], color="0.25", lw=1.2, zorder=2)
+            for j in range(4):
+                ax.plot(X[:, j, 0], X[:, j, 1], ".-", ms=3, color=colours[j], lw=1,
+                        label=f"P{j + 1}", zorder=3)
+            ax.plot(X[0, 4:, 0], X[0, 4:, 1], "k^", ms=6, zorder=4)
+            ax.set_aspect("equal")
+            ax.set_title(f"bar {remove + 1} removed: direction nearest P{col + 1} up", fontsize=9)
+            ax.tick_params(labelsize=7)
+    axes[0, 0].legend(fontsize=7, loc="upper left")
+    fig.suptitle("Hortobágyi section 6 (construction): four unfolding shapes from the folded "
+                 "state (grey) — trajectories of P1–P4, final state dark", fontsize=10)
+    fig.tight_layout()
+    path = Path(tempfile.mkdtemp(prefix="trussfe_sec6_")) / "section6_unfolding.png"
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return {"section6_unfolding": str(path)}
+
+
+def hortobagyi_section6(figures: bool = True) -> dict:
+    """Section 6 (construction): rank counts, unfolding directions and the four traced shapes.
+
+    Returns
+    -------
+    dict
+        ``full``: rank, μ·j − ρ(B), self-stress states and real unfolding directions of the
+        eight-bar assembly, and whether a trace is refused; per removed bar
+        (``minus1``, ``minus3``): the same counts at the folded state, ``shapes`` (distinct
+        traced shapes), ``rank_after`` (min and max of ρ(B) after the first step),
+        ``misfit`` (largest bar-length error along all four traces, m),
+        ``min_shape_distance`` (smallest distance between two final shapes, m) and
+        ``figures``.
+    """
+    from ..errors import TrussfeError
+    from ..models.mechanisms import section6_foldable
+    from .unfolding import tangent_cone
+    out: dict = {}
+    e = section6_foldable()
+    r = rank_analysis(e.coords, e.bars, e.free)
+    cone = tangent_cone(e.coords, e.bars, e.free)
+    try:
+        trace_mechanism(e.coords, e.bars, e.free, [1, 3, 5, 7], [0.05, 0.02, 0.01, 0.005], 3)
+        refused = 0
+    except TrussfeError:
+        refused = 1
+    out["full"] = {"rank": r.rank, "infinitesimal": r.infinitesimal_motions,
+                   "self_stress": r.self_stress_states, "unfolding_directions":
+                   len(cone.directions), "trace_refused": refused}
+    results = {}
+    for remove in (0, 2):
+        e, cone, traces = section6_unfolding_traces(remove)
+        results[remove] = (e, cone, traces)
+        r = rank_analysis(e.coords, e.bars, e.free)
+        L0 = np.linalg.norm(e.coords[e.bars[:, 1]] - e.coords[e.bars[:, 0]], axis=1)
+        misfit = max(float(np.abs(np.linalg.norm(t.coords[:, e.bars[:, 1]]
+                                                 - t.coords[:, e.bars[:, 0]], axis=2)
+                                  - L0).max()) for _, t in traces)
+        finals = np.array([t.coords[-1].ravel() for _, t in traces])
+        dist = np.linalg.norm(finals[:, None] - finals[None], axis=2)
+        dmin = float(dist[np.triu_indices(4, 1)].min())
+        after = np.concatenate([t.rank[1:] for _, t in traces])
+        out[f"minus{remove + 1}"] = {
+            "rank": r.rank, "infinitesimal": r.infinitesimal_motions,
+            "self_stress": r.self_stress_states, "unfolding_directions": len(cone.directions),
+            "shapes": int(np.sum(dist[np.triu_indices(4, 1)] > 1e-3) == 6) * 4,
+            "rank_after_min": int(after.min()), "rank_after_max": int(after.max()),
+            "misfit": misfit, "min_shape_distance": dmin}
+    if figures:
+        out["figures"] = _section6_figure(results)
+    return out
+
+
+def section6_direction_counts(samples: int = 200, seed: int = 0, starts: int = 150) -> dict:
+    """How many real unfolding directions folded assemblies of the section-6 graph have.
+
+    Random folded states of the graph of :func:`trussfe.models.mechanisms.section6_foldable`
+    (inner and ground joints at distinct half-integer positions in [0, 6]), each ground bar
+    removed in turn; only states where the eight-bar assembly is second-order rigid (cannot
+    move, as the text requires) and the reduced one has simple roots only are counted.
+
+    Returns
+    -------
+    dict
+        Number of real unfolding directions (lines; each with its mirror image) → number of
+        (state, removed bar) pairs.  The text's "two unfolding shapes, symmetrical pairs of
+        these are the other two" needs 2.
+    """
+    from .unfolding import tangent_cone
+    rng = np.random.default_rng(seed)
+    bars = np.array([(0, 4), (1, 5), (2, 6), (3, 7), (0, 1), (1, 2), (2, 3), (3, 0)])
+    free = np.zeros((8, 2), bool)
+    free[:4] = True
+    hist: dict = {}
+    done = 0
+    while done < samples:
+        xs = rng.choice(np.arange(13) / 2.0, 8, replace=False)
+        X = np.column_stack([xs, np.zeros(8)])
+        if len(tangent_cone(X, bars, free, starts=20).directions):
+            continue                                       # the full assembly must be rigid
+        done += 1
+        for k in range(4):
+            c = tangent_cone(X, np.delete(bars, k, axis=0), free, starts=starts, seed=done)
+            if c.simple.all():
+                hist[len(c.directions)] = hist.get(len(c.directions), 0) + 1
+    return dict(sorted(hist.items()))

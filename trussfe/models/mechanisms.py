@@ -150,32 +150,47 @@ def generic_octahedron() -> MechanismEntry:
                   "Cauchy (1813): convex polyhedra are rigid; 3·6 − 6 = 12 bars", "2:x", 0.02)
 
 
-#: Section 6 joints: ground G0, G1, G2 and inner joints P1..P4 folded on the x axis.
-_SEC6_X = [[0, 0], [1, 0], [1.5, 0], [1, 0], [2, 0], [3, 0], [4, 0]]
-_SEC6_BARS = [(0, 3), (1, 4), (2, 5), (3, 4), (3, 5), (4, 5), (4, 6), (5, 6)]
+#: Section 6: inner joints P1..P4 (nodes 1–4) and ground joints G1..G4 (nodes 5–8), folded on
+#: the x axis.
+_SEC6_X = [[1, 0], [3, 0], [2, 0], [4, 0], [0, 0], [1.5, 0], [5, 0], [0.5, 0]]
+#: Pi–Gi (bars 1–4), then the cycle P1–P2–P3–P4–P1 (bars 5–8).
+_SEC6_BARS = [(0, 4), (1, 5), (2, 6), (3, 7), (0, 1), (1, 2), (2, 3), (3, 0)]
 
 
 def section6_foldable(remove: int | None = None) -> MechanismEntry:
-    """Hortobágyi section 6 (Figs. 4, 5, 7), a construction.
+    """Hortobágyi section 6 (Figs. 4–8), a construction.
 
-    Ground joints G0 = (0, 0), G1 = (1, 0), G2 = (1.5, 0); four inner joints P1..P4 folded on
-    the x axis at 1, 2, 3, 4 (P1 on top of G1); eight bars G0–P1, G1–P2, G2–P3, P1–P2, P1–P3,
-    P2–P3, P2–P4, P3–P4.  P1..P4 stay collinear (flat triangles of bars are rigid), so the
-    assembly is a rigid coupler on three links.  Properties stated in the text and satisfied:
+    Four inner joints P1..P4 at x = 1, 3, 2, 4 and ground joints G1..G4 at x = 0, 1.5, 5, 0.5,
+    all on the x axis (the folded state); eight bars: Pi–Gi (bars 1–4) and the cycle
+    P1–P2–P3–P4–P1 (bars 5–8).
 
-    * eight bars, four inner joints, an infinitesimal mechanism: the inner joints cannot move
-      (links 1, 1, 1.5 on ground points 0, 1, 1.5 admit no motion of the coupler: rigid);
-    * removing a bar (G0–P1, Fig. 5, ``remove=0``; or G2–P3, Fig. 7, ``remove=2``) gives
-      μ·j − ρ(B) = 4 at the folded state and leaves a change-point four-bar (0.5 + 1.5 = 1 + 1,
-      resp. 1 + 2 = 1.5 + 1.5): one finite degree of freedom, two branches through the folded
-      state and their mirror images — four unfolding shapes.
+    Why this topology: in a folded state every triangle of bars (or a joint tied to two ground
+    joints) is a flat triangle whose lengths satisfy a + b = c — rigid, it never leaves the
+    line.  With four inner joints, eight bars and no such triangle, the only graph is a
+    4-cycle with each joint tied once to the ground.  Properties stated by the text, all
+    checked by tests and the validation case:
 
-    Limitation of this construction (found by computing): the flat triangles P1–P2–P3 and
-    P2–P3–P4 stay flat during the motion, so two states of self-stress and two infinitesimal
-    flutters of P1 and P4 persist after unfolding (ρ(B) = 5, not 7); the paper's assembly,
-    whose figure is missing, becomes a full-row-rank mechanism.  The rank counts at the folded
-    state are what this entry checks; tracing its unfolding with four prescribed increments is
-    not claimed.
+    * eight bars, four inner joints: an infinitesimal mechanism (ρ(B) = 4, four vertical
+      infinitesimal mechanisms, four self-stress states) that cannot move: no real
+      second-order unfolding direction (:func:`trussfe.kinematics.unfolding.tangent_cone`),
+      so it is second-order rigid, hence rigid;
+    * removing a bar (P1–G1, "Fig. 5", ``remove=0``; or P3–G3, "Fig. 7", ``remove=2``):
+      μ·j − ρ(B) = 8 − 4 = 4; after the prescribed vertical increments of the four inner
+      joints the assembly is a one-degree-of-freedom finite mechanism, B of full row rank 7;
+    * four different unfolding shapes: prescribing the four vertical increments along the
+      unfolding direction nearest the vertical mechanism of joint Pi (i = 1..4), the largest
+      being the independent coordinate, gives four distinct traced shapes.
+
+    Found by computing: the second-order cone of this construction has eight real lines per
+    removed bar (each with its mirror image y → −y).  With a ground bar removed the assembly is
+    a flat four-bar (two branches) carrying two flat dyads, each of which opens both ways or not
+    at all, so 0 or 8 lines: in a sweep of 150 random folded states of this graph
+    (:func:`trussfe.kinematics.reproductions.section6_direction_counts`, 598 counted
+    cases) the count was 0 in 444 cases and 8 in 153 (once 7, a root the multi-start missed),
+    never 2 — the paper's "two shapes, symmetrical pairs of these are the other two", read as
+    all the unfolding shapes, cannot hold together with the other properties here.  The four
+    shapes traced are the four that the four independent coordinates select, as section 6
+    controls them.
     """
     bars = list(_SEC6_BARS)
     name, title, exp = "mech_sec6_foldable", "Hortobágyi section 6: foldable assembly", \
@@ -186,9 +201,13 @@ def section6_foldable(remove: int | None = None) -> MechanismEntry:
         name = f"mech_sec6_foldable_minus{remove + 1}"
         title = f"Hortobágyi section 6, Fig. {fig}: foldable assembly with bar {remove + 1} removed"
         exp = (4, 4, 0, 3)
-    return _entry(name, title, _SEC6_X, bars, {0: "xy", 1: "xy", 2: "xy"}, exp,
-                  "Hortobágyi (1999) section 6: mu*j - rho(B) = 4 with a bar removed", "7:y",
-                  -0.05)
+    e = _entry(name, title, _SEC6_X, bars, {i: "xy" for i in range(4, 8)}, exp,
+               "Hortobágyi (1999) section 6: mu*j - rho(B) = 4 with a bar removed", "1:y", 0.05)
+    if remove is not None:
+        # four prescribed vertical increments near the unfolding direction led by P1
+        e.extra["trace"] = ("--drive 1:y --step 0.05 --drive 2:y --step 0.008 --drive 3:y "
+                            "--step 0.0015 --drive 4:y --step 0.0003 --steps 12")
+    return e
 
 
 def section8_compound(flip: bool = False) -> MechanismEntry:
@@ -300,7 +319,9 @@ def to_toml(entry: MechanismEntry) -> str:
     """The entry as a trussfe model file (CONTRACT.md §1)."""
     fmt = "{:.15g}".format
     lines = [f"# {entry.title}", f"# expected: {entry.expected}; source: {entry.source}"]
-    if entry.drive:
+    if entry.extra.get("trace"):
+        lines.append(f"# trace: trussfe trace {entry.name}.toml {entry.extra['trace']}")
+    elif entry.drive:
         lines.append(f"# trace: trussfe trace {entry.name}.toml --drive {entry.drive} "
                      f"--step {entry.step:g} --steps 20")
     lines += ["", "[model]", f'name = "{entry.name}"', f"dimension = {entry.dim}", "",
