@@ -337,7 +337,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                          "loads that the load factor λ scales")
     if monitor is None:
         fl = np.abs(m.load[: s.n_nodes * s.dim])
-        monitor = int(np.argmax(fl))
+        # the most loaded translation; with moments only, the most loaded rotation
+        monitor = int(np.argmax(fl)) if fl.max() > 0 else int(np.argmax(np.abs(m.load)))
     if not m.free[monitor]:
         raise InputError("monitor", "the monitored displacement is a supported DOF")
     if step is not None and not (np.isfinite(step) and step > 0):
