@@ -179,6 +179,51 @@ def inverse_tangent(theta: np.ndarray) -> np.ndarray:
     return _EYE - 0.5 * S + eta[..., None, None] * (S @ S)
 
 
+def tangent_operator(psi: np.ndarray) -> np.ndarray:
+    """``Tₛ(ψ) = I + c₁ S(ψ) + c₂ S(ψ)²`` with ``c₁ = (1 − cos α)/α²``, ``c₂ = (α − sin α)/α³``:
+    the spin of an additive increment of the rotation vector, ``δw = Tₛ(ψ) δψ``
+    (Crisfield vol. 2 eq. 16.39; Battini 2002 eq. 7), shape (..., 3, 3).
+
+    >>> bool(np.allclose(tangent_operator(np.array([0.2, 0.1, -0.4]))
+    ...                  @ inverse_tangent(np.array([0.2, 0.1, -0.4])), np.eye(3)))
+    True
+    """
+    c1, c2, _, _ = _c12(np.linalg.norm(psi, axis=-1))
+    S = skew(psi)
+    return _EYE + c1[..., None, None] * S + c2[..., None, None] * (S @ S)
+
+
+def _c12(a: np.ndarray):
+    """``c₁, c₂`` of :func:`tangent_operator` and ``c₁'/α, c₂'/α`` (series below α = 0.05)."""
+    a2 = a * a
+    small = a < 0.05
+    with np.errstate(divide="ignore", invalid="ignore"):
+        s, c = np.sin(a), np.cos(a)
+        c1 = np.where(small, 0.5 - a2 / 24.0 + a2 * a2 / 720.0, (1.0 - c) / a2)
+        c2 = np.where(small, 1.0 / 6.0 - a2 / 120.0 + a2 * a2 / 5040.0, (a - s) / (a2 * a))
+        d1 = np.where(small, -1.0 / 12.0 + a2 / 180.0 - a2 * a2 / 6720.0,
+                      (s / a2 - 2.0 * (1.0 - c) / (a2 * a)) / a)
+        d2 = np.where(small, -1.0 / 60.0 + a2 / 1260.0 - a2 * a2 / 60480.0,
+                      ((1.0 - c) / (a2 * a) - 3.0 * (a - s) / (a2 * a2)) / a)
+    return c1, c2, d1, d2
+
+
+def tangent_operator_derivative(psi: np.ndarray, m: np.ndarray) -> np.ndarray:
+    """``∂(Tₛ(ψ)ᵀ m)/∂ψ`` with ``m`` held, shape (..., 3, 3).
+
+    ``Tₛᵀ m = m − c₁ ψ×m + c₂[(ψ·m)ψ − α² m]``, differentiated with ``∇cᵢ = (cᵢ'/α) ψ``.
+    """
+    a = np.linalg.norm(psi, axis=-1)
+    c1, c2, d1, d2 = _c12(a)
+    pm = np.sum(psi * m, axis=-1)
+    outer = lambda x, y: x[..., :, None] * y[..., None, :]
+    S2m = pm[..., None] * psi - (a * a)[..., None] * m
+    return (c1[..., None, None] * skew(m) - d1[..., None, None] * outer(np.cross(psi, m), psi)
+            + c2[..., None, None] * (outer(psi, m) + pm[..., None, None] * _EYE
+                                     - 2.0 * outer(m, psi))
+            + d2[..., None, None] * outer(S2m, psi))
+
+
 def _kh(theta: np.ndarray, m: np.ndarray, Tinv: np.ndarray) -> np.ndarray:
     """``∂(Tₛ⁻ᵀ(θ) m)/∂θ · Tₛ⁻¹(θ)`` with ``m`` held (Battini 2002, the matrix K_h).
 

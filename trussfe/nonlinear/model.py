@@ -15,15 +15,21 @@ Global DOF vector (``point`` = joints first, then the points inside subdivided m
 
     u = [translations (point, dim) row-major | rotations (rotation slot, 1 or 3)]
 
-In 2-D a rotation slot holds one angle (updated additively).  In 3-D it holds the total
-rotation vector ψ of the point (``R = exp(S(ψ))``) while its three DOFs are *spin* components
-in the slot's basis (global axes at joints, member axes inside members): a state is advanced
-with :meth:`NonlinearModel.add`, which composes rotations multiplicatively
-(:func:`~trussfe.nonlinear.beam3d.compose`).  In 3-D a released member end is a spherical
-hinge (all three end moments free); a member released at both ends (a pinned-beam bar) would
-spin freely about its own axis, so its spin about its reference axis is held at its start end
-(:attr:`NonlinearModel.held`) — the nonlinear counterpart of the linear FE's twist-free
-pinned beam.
+In 2-D a rotation slot holds one angle (updated additively).  In 3-D a slot is either
+
+* **multiplicative** (the rule): it stores the total rotation vector ψ of the point
+  (``R = exp(S(ψ))``, global components) while its three DOFs are *spin* components in the
+  slot's basis ``Q`` (global axes at joints, member axes inside members); a state is advanced
+  with :meth:`NonlinearModel.add`, which composes rotations
+  (:func:`~trussfe.nonlinear.beam3d.compose`);
+* **additive** (where a rotation component must be held): it stores ``φ = Qᵀψ`` and its DOFs
+  are the increments of ``φ`` (``δw = Tₛ(ψ) Q δφ``), so that holding a component of ``φ`` is
+  a holonomic constraint.  These are the start ends of members released at both ends (a
+  pinned-beam bar would spin freely about its own axis, so the axial component of its start
+  rotation vector is held — the nonlinear counterpart of the linear FE's twist-free pinned
+  beam) and joints with some but not all rotations supported.
+
+In 3-D a released member end is a spherical hinge (all three end moments free).
 """
 from __future__ import annotations
 
@@ -33,7 +39,8 @@ import numpy as np
 
 from ..errors import InputError
 from ..model.structure import Structure
-from .beam3d import beam3d_matrices, compose, expm_so3, reference_frames
+from .beam3d import (beam3d_matrices, compose, expm_so3, reference_frames,
+                     tangent_operator, tangent_operator_derivative)
 from .elements import (beam2d_local, beam2d_matrices, truss_kinematics,
                        truss_matrices)
 from .failure import FailureLaws, axial_law, failure_margins
@@ -160,8 +167,9 @@ class NonlinearModel:
         tdofs = lambda pts: (pts[:, :, None] * dim + np.arange(dim)).reshape(len(pts), 2 * dim)
         self.t_dofs = tdofs(self.t_conn)
         rot0 = self.n_points * dim
-        #: DOFs whose spin is held by the model (3-D members released at both ends)
-        self.held = np.zeros(0, dtype=np.int64)
+        #: 3-D slots parametrised additively by their rotation vector in the slot basis
+        self.slot_additive = np.zeros(nslot, dtype=bool)
+        twist_free = np.zeros(0, dtype=np.int64)
         if nb and dim == 3:
             sdofs = lambda sl: rot0 + sl[:, None] * 3 + np.arange(3)
             bd = np.empty((len(self.b_conn), 12), dtype=np.int64)
@@ -179,7 +187,8 @@ class NonlinearModel:
             Q[owned[has]] = np.repeat(member_axes, k + 1, axis=0).reshape(nb, k + 1, 3, 3)[has]
             self.slot_basis = Q
             both = ~rigid_end[b_mem, 0] & ~rigid_end[b_mem, 1]
-            self.held = rot0 + 3 * slots[both, 0]          # spin about the member axis
+            self.slot_additive[slots[both, 0]] = True
+            twist_free = rot0 + 3 * slots[both, 0]          # rotation about the member axis
         elif nb:
             bd = np.empty((len(self.b_conn), 6), dtype=np.int64)
             bd[:, [0, 1, 3, 4]] = tdofs(self.b_conn)
@@ -206,15 +215,13 @@ class NonlinearModel:
             free[(loose[:, None] * dim + np.arange(dim)).ravel()] = False
         self.free = free
         if dim == 3:
-            # a fully fixed rotation is no DOF; a partly fixed one is held (its total rotation
-            # vector keeps all three components, so it must stay in the state)
+            # a partly fixed joint rotation holds components of its rotation vector: additive
             rs = s.supports[:, 3:6] & joint_has_rot[:, None]
-            full = rs.all(axis=1)
-            jn, comp = np.nonzero(rs & full[:, None])
+            part = rs.any(axis=1) & ~rs.all(axis=1)
+            self.slot_additive[joint_slot[part]] = True
+            jn, comp = np.nonzero(rs)
             free[self.n_points * dim + 3 * joint_slot[jn] + comp] = False
-            jn, comp = np.nonzero(rs & ~full[:, None])
-            self.held = np.concatenate([self.held, self.n_points * dim
-                                        + 3 * joint_slot[jn] + comp])
+            free[twist_free] = False
         f = np.zeros(self.ndof)
         f[: n * dim] = s.loads[:, :dim].ravel()
         moments = s.loads[:, dim:]
@@ -261,9 +268,19 @@ class NonlinearModel:
             return out
         t = self.n_points * self.dim
         psi = u[t:].reshape(-1, 3)
-        spin = np.einsum("sij,sj->si", self.slot_basis, du[t:].reshape(-1, 3))
-        out[t:] = compose(psi, spin).ravel()
+        mul = ~self.slot_additive
+        spin = np.einsum("sij,sj->si", self.slot_basis[mul], du[t:].reshape(-1, 3)[mul])
+        new = out[t:].reshape(-1, 3)                # additive slots: φ + δφ
+        new[mul] = compose(psi[mul], spin)
         return out
+
+    def rotation_vectors(self, u: np.ndarray) -> np.ndarray:
+        """Total rotation vectors ψ of the 3-D rotation slots (global), shape (slot, 3)."""
+        r = u[self.n_points * 3:].reshape(-1, 3)
+        add = self.slot_additive
+        psi = r.copy()
+        psi[add] = np.einsum("sij,sj->si", self.slot_basis[add], r[add])
+        return psi
 
     def joint_displacements(self, u: np.ndarray) -> np.ndarray:
         """Displacements of the structure's nodes, shape (node, dim)."""
@@ -314,8 +331,7 @@ class NonlinearModel:
         # beam elements
         if len(self.b_conn) and self.dim == 3:
             live_b = self.alive[self.b_member]
-            fb, kb, Nbm, Mb = self._beam3d(x, u[self.n_points * 3:].reshape(-1, 3),
-                                           tangent=tangent)
+            fb, kb, Nbm, Mb = self._beam3d(x, self.rotation_vectors(u), tangent=tangent)
             out.update(b_force=np.where(live_b, Nbm, 0.0), b_moment=Mb * live_b[:, None, None])
             fs.append(fb[live_b])
             ks.append(kb[live_b] if tangent else None)
@@ -330,7 +346,6 @@ class NonlinearModel:
             ks.append(kb[live_b])
             ds.append(self.b_dofs[live_b])
         F, K = _assemble_mixed(self.ndof, ds, fs, ks, tangent)
-        F, K = self._hold(F, K)
         out["internal"] = F
         out["tangent"] = K
         return out
@@ -345,33 +360,28 @@ class NonlinearModel:
         f, k, N, M = beam3d_matrices(x, conn, R[self.b_slot[:, 0]], R[self.b_slot[:, 1]], R0,
                                      L0, self.b_EA, self.b_GJ, self.b_EI, self.b_EIz,
                                      N_override=N_override, tangent=tangent)
-        # spins in the slot bases: δw = Q δφ, so f_φ = Qᵀ f_w and k_φ = Tᵀ k T
+        # DOFs of the slots: spins δw = Q δφ (multiplicative slots) or rotation-vector
+        # increments δw = Tₛ(ψ) Q δφ (additive slots); f_φ = Cᵀ f_w, k_φ = Cᵀ k C (+ the
+        # derivative of Tₛᵀ at fixed f_w on the additive slots' diagonal blocks)
         for sl, end in ((slice(3, 6), 0), (slice(9, 12), 1)):
-            Q = self.slot_basis[self.b_slot[:, end]]
-            f[:, sl] = np.einsum("eji,ej->ei", Q, f[:, sl])
+            slot = self.b_slot[:, end]
+            C = self.slot_basis[slot].copy()                         # (el, 3, 3)
+            add = self.slot_additive[slot]
+            if add.any():
+                C[add] = tangent_operator(psi[slot[add]]) @ C[add]
+                if k is not None:
+                    Q = self.slot_basis[slot[add]]
+                    dT = tangent_operator_derivative(psi[slot[add]], f[add, sl])
+                    extra = np.transpose(Q, (0, 2, 1)) @ dT @ Q
+            f[:, sl] = np.einsum("eji,ej->ei", C, f[:, sl])
             if k is not None:
-                k[:, sl, :] = np.einsum("eji,ejk->eik", Q, k[:, sl, :])
-                k[:, :, sl] = k[:, :, sl] @ Q
+                k[:, sl, :] = np.einsum("eji,ejk->eik", C, k[:, sl, :])
+                k[:, :, sl] = k[:, :, sl] @ C
+                if add.any():
+                    r = np.arange(sl.start, sl.stop)
+                    k[np.flatnonzero(add)[:, None, None], r[None, :, None],
+                      r[None, None, :]] += extra
         return f, k, N, M
-
-    def _hold(self, F, K):
-        """Held spins: no residual, an identity row and column (scaled to the diagonal) —
-        their increments are then zero in every solve."""
-        if self.held.size == 0:
-            return F, K
-        F = F.copy()
-        F[self.held] = 0.0
-        if K is not None:
-            import scipy.sparse as sp
-            keep = np.ones(self.ndof)
-            keep[self.held] = 0.0
-            P = sp.diags(keep)
-            diag = K.diagonal()
-            scale = float(np.abs(diag[self.held]).mean()) or 1.0
-            hold = np.zeros(self.ndof)
-            hold[self.held] = scale
-            K = (P @ K @ P + sp.diags(hold)).tocsr()
-        return F, K
 
     @property
     def t_len0(self) -> np.ndarray:
@@ -437,7 +447,7 @@ class NonlinearModel:
             fb, kb, _, _ = beam2d_matrices(lb, c, s_, L0, ul, th, self.b_EA, self.b_EI,
                                            N_override=Nb)
             ds.append(self.b_dofs[live_b]); fs.append(fb[live_b]); ks.append(kb[live_b])
-        return self._hold(*_assemble_mixed(self.ndof, ds, fs, ks, True))[1]
+        return _assemble_mixed(self.ndof, ds, fs, ks, True)[1]
 
     def linear_axial_forces(self, u: np.ndarray):
         """Element axial forces of the linearised kinematics, ``EA/L0 · eᵀ(u_b − u_a)``."""
