@@ -210,3 +210,37 @@ def test_cantilever_rolls_into_a_circle_under_end_moment():
     for p in res.path[1:]:
         assert_allclose(expm_so3(p.u[tip:tip + 3]), expm_so3(2 * np.pi * p.load_factor * n),
                         rtol=0, atol=1e-4)
+
+
+# ------------------------------------------------------------------------ Euler column
+@pytest.fixture(scope="module")
+def column3d():
+    from trussfe.nonlinear import reproductions as R
+    return R.euler_column_3d()
+
+
+def test_3d_euler_column_bifurcation_and_branch_follow_the_elastica(column3d):
+    """Perfect 3-D column on the oblique axis (1, 2, 2)/3: bifurcation at the extensible
+    column's P_E(1 + P_E/EA) (within the 16-element discretisation error 2.1e-6 of the linear
+    buckling load); the branch taken along the eigenvector follows the elastica (Timoshenko &
+    Gere §2.7) within the extensibility P_E/EA = 4.0e-4 (+ 1e-4), up to δ = 0.35 L."""
+    assert_allclose(column3d["reference_over_euler"], 1.0, rtol=1e-12)
+    assert_allclose(column3d["bifurcation_load_ratio"], column3d["extensible_euler_ratio"],
+                    rtol=3e-6)
+    assert_allclose(column3d["linear_buckling_ratio"], 1.0, rtol=3e-6)
+    assert column3d["branch_max_deflection"] > 0.35
+    assert column3d["branch_max_error"] < 5e-4
+
+
+def test_3d_euler_column_imperfect_path_matches_the_plane_column(column3d):
+    """Imperfect 3-D column (L/1000 in the first mode): within e0/δ of the elastica at
+    δ = 0.2 L and 0.3 L, like the plane column; and the same path as the 2-D co-rotational
+    beam (an independent, plane element: trussfe.nonlinear.elements.beam2d_matrices) to 2e-4
+    — the difference being the guide links and the path points' interpolation."""
+    from trussfe.nonlinear import reproductions as R
+    plane = R.euler_column()
+    for k, e0_over_d in ((2, 5e-3), (3, 3.4e-3)):
+        key = f"imperfect_load_ratio_at_{k}"
+        assert_allclose(column3d[key], column3d[f"elastica_load_ratio_at_{k}"],
+                        rtol=e0_over_d)
+        assert_allclose(column3d[key], plane[key], rtol=2e-4)

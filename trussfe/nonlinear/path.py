@@ -466,8 +466,12 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
             u2, lam2, res2, phi = crit
             du_prev = None
             uf, lam, res = u2, lam2, res2
-            fac1 = factorize(st.eval(uf)[2])
-            neg1 = fac1.negative
+            try:
+                fac1 = factorize(st.eval(uf)[2])
+                neg1 = fac1.negative
+            except SingularTangent:
+                # (a multiple critical point) the factor from before serves the predictor
+                fac1 = fac
             branch_dir = phi if phi @ st.f >= 0 else -phi
             ds = max(dss, branch_step * size)
             ds_max = max(ds_max, 8.0 * ds)
