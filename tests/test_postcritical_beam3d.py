@@ -244,3 +244,32 @@ def test_3d_euler_column_imperfect_path_matches_the_plane_column(column3d):
         assert_allclose(column3d[key], column3d[f"elastica_load_ratio_at_{k}"],
                         rtol=e0_over_d)
         assert_allclose(column3d[key], plane[key], rtol=2e-4)
+
+
+# ------------------------------------------------------------------------ command line
+def test_three_controls_trace_the_same_3d_path_from_the_command_line(tmp_path):
+    """``trussfe postcritical`` on the 3-D column with load, displacement and arc-length
+    control: every point of the load- and displacement-controlled paths lies on the
+    arc-length path (λ interpolated, monotone cubic, at the same top displacement: to 2e-4,
+    the interpolation error between arc-length points), and the JSON follows CONTRACT §3."""
+    from scipy.interpolate import PchipInterpolator
+    from trussfe.cli import main
+    from trussfe.cli.cmd_postcritical import analyse
+    model = str(__import__("trussfe._resources", fromlist=["mesh_path"])
+                .mesh_path("postcritical_euler_column_3d.toml"))
+    docs = {c: analyse(model, control=c, max_load_factor=1.2, **kw) for c, kw in (
+        ("arc-length", dict(steps=150, step=1e-3, max_step=4e-3)), ("load", dict(steps=12)),
+        ("displacement", dict(steps=20)))}
+
+    def top(doc):
+        return (np.array([p["load_factor"] for p in doc["path"]]),
+                np.array([-p["displacements"]["top"][2] for p in doc["path"]]))
+    lam_a, w_a = top(docs["arc-length"])
+    assert np.all(np.diff(w_a) > 0)                     # the top moves down monotonically
+    for c in ("load", "displacement"):
+        lam, w = top(docs[c])
+        assert docs[c]["command"] == "postcritical" and len(lam) > 5
+        on = w <= w_a.max()
+        assert_allclose(lam[on], PchipInterpolator(w_a, lam_a)(w[on]), rtol=0, atol=2e-4)
+    assert main(["postcritical", model, "--control", "load", "--steps", "5",
+                 "--json", str(tmp_path / "c.json")]) == 0
