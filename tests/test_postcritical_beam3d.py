@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
+from trussfe.errors import InputError
 from trussfe.fem import discretise
 from trussfe.model.sections import Material, Section
 from trussfe.model.structure import build_structure
@@ -273,3 +274,35 @@ def test_three_controls_trace_the_same_3d_path_from_the_command_line(tmp_path):
         assert_allclose(lam[on], PchipInterpolator(w_a, lam_a)(w[on]), rtol=0, atol=2e-4)
     assert main(["postcritical", model, "--control", "load", "--steps", "5",
                  "--json", str(tmp_path / "c.json")]) == 0
+
+
+def test_moment_on_a_pinned_node_in_3d_is_refused():
+    """A moment needs a rigid beam end at its node: on a pin joint it is named."""
+    s = _frame(is_beam=False, loads={1: [0.0, 0.0, 0.0, 10.0, 0.0, 0.0]})
+    with pytest.raises(InputError, match="moment on a node"):
+        NonlinearModel(s, bar_model="pinned-beam")
+
+
+def test_pinned_beam_start_holds_its_axial_rotation():
+    """A member released at both ends has its start rotation parametrised additively with the
+    component along its axis fixed (no free spin about its own axis); every other slot is a
+    multiplicative spin slot, and the linear buckling load of a pin-ended member agrees with
+    Euler's π²EI/L² (16 elements: 2.1e-6 discretisation error)."""
+    from trussfe.nonlinear import linear_buckling
+    L = 1.3
+    a = np.array([1.0, 2.0, 2.0]) / 3.0
+    # the top guided along the axis by two 50 m bars perpendicular to it
+    X = np.array([[0.0, 0.0, 0.0], L * a, L * a + 50 * np.array([2.0, -2.0, 1.0]) / 3,
+                  L * a + 50 * np.array([2.0, 1.0, -2.0]) / 3])
+    s2 = build_structure(X, [(0, 1), (1, 2), (1, 3)], section=SEC, material=MAT,
+                         supports={0: "xyz", 2: "xyz", 3: "xyz"}, loads={1: list(-a)},
+                         is_beam=np.array([True, False, False]))
+    s2.releases[0] = True                                   # both ends of the beam released
+    nl = NonlinearModel(s2, subdivisions=16)
+    start = nl.b_slot[0, 0]
+    assert nl.slot_additive.sum() == 1 and nl.slot_additive[start]
+    rot0 = nl.n_points * 3
+    assert not nl.free[rot0 + 3 * start] and nl.free[rot0 + 3 * start + 1]
+    assert_allclose(nl.slot_basis[start][:, 0], a, rtol=1e-12)
+    lam, _ = linear_buckling(nl, count=1)
+    assert_allclose(lam[0], math.pi ** 2 * MAT.E * min(SEC.Iy, SEC.Iz) / L ** 2, rtol=3e-6)

@@ -74,6 +74,12 @@ class NonlinearModel:
         Members still in the structure (failed members are removed).
     plastic : ndarray, shape (truss element,)
         Committed plastic strain of each truss element.
+    rdof : int
+        DOFs per rotation slot (1 in 2-D, 3 in 3-D).
+    slot_basis : ndarray, shape (slot, 3, 3)
+        3-D only: the basis ``Q`` (columns) of each rotation slot's DOFs.
+    slot_additive : ndarray of bool, shape (slot,)
+        3-D only: slots parametrised additively by ``φ = Qᵀψ`` (see the module notes).
     """
 
     def __init__(self, structure: Structure, bar_model: str = "truss",
