@@ -392,10 +392,7 @@ def beam3d_matrices(x: np.ndarray, conn: np.ndarray, Ra: np.ndarray, Rb: np.ndar
     g[:, 0] = 1.0 / L0
     g[:, 2], g[:, 5] = (4 * ay - by) / 30.0, (4 * by - ay) / 30.0
     g[:, 3], g[:, 6] = (4 * az - bz) / 30.0, (4 * bz - az) / 30.0
-    D = (EA * L0)[:, None, None] * g[:, :, None] * g[:, None, :] if N_override is None \
-        else np.zeros((ne, 7, 7))
-    if N_override is not None:
-        D[:, 0, 0] = EA / L0
+    D = (EA * L0)[:, None, None] * g[:, :, None] * g[:, None, :]
     for (i, j), kk in (((2, 5), ky), ((3, 6), kz)):                 # two bending planes
         D[:, i, i] += 4 * kk + 4 * NL
         D[:, j, j] += 4 * kk + 4 * NL
