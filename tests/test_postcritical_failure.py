@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from trussfe.errors import AnalysisError, InputError, MechanismError
+from trussfe.errors import InputError, MechanismError
 from trussfe.model.sections import Material, Section
 from trussfe.model.structure import build_structure
 from trussfe.nonlinear import NonlinearModel, build_failure_laws, follow_path
@@ -153,11 +153,12 @@ def test_unloaded_mechanism_is_refused():
         follow_path(NonlinearModel(s))
 
 
-def test_three_dimensional_beams_are_refused_with_a_reason():
-    """Geometrically nonlinear beams are plane only: a 3-D beam member is named."""
-    s = build_structure([[0, 0, 0], [1, 0, 0]], [(0, 1)], section=SEC, material=MAT,
+def test_three_dimensional_beam_without_torsion_constant_is_refused():
+    """A 3-D beam needs GJ: a section without J is named with the member."""
+    sec = Section(name="noj", area=A, Iy=1e-8, Iz=1e-8, c=0.01)
+    s = build_structure([[0, 0, 0], [1, 0, 0]], [(0, 1)], section=sec, material=MAT,
                         is_beam=True, supports={0: ["x", "y", "z", "rx", "ry", "rz"]})
-    with pytest.raises(AnalysisError, match="plane"):
+    with pytest.raises(InputError, match="torsion constant"):
         NonlinearModel(s)
 
 

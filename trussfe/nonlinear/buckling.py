@@ -73,9 +73,10 @@ def apply_imperfection(model: NonlinearModel, shape: np.ndarray, amplitude: floa
 
     The imperfect geometry is stress-free (an initially crooked member), as in a physical
     imperfection.  ``shape`` is a DOF vector (e.g. a buckling mode); its translations are scaled
-    so that the largest is ``amplitude`` (m).
+    so that the largest point displacement (its length, whatever its direction) is
+    ``amplitude`` (m).
     """
     tr = model.n_points * model.dim
     d = shape[:tr].reshape(-1, model.dim)
-    model.X = model.X + amplitude * d / np.abs(d).max()
+    model.X = model.X + amplitude * d / np.linalg.norm(d, axis=1).max()
     model.__dict__.pop("_t_len0", None)

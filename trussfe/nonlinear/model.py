@@ -13,9 +13,23 @@ A :class:`NonlinearModel` turns a :class:`~trussfe.model.Structure` into co-rota
 
 Global DOF vector (``point`` = joints first, then the points inside subdivided members)::
 
-    u = [translations (point, dim) row-major | rotations (rotation slot,)]
+    u = [translations (point, dim) row-major | rotations (rotation slot, 1 or 3)]
 
-Beam elements are plane (2-D) only; 3-D models may hold bar members.
+In 2-D a rotation slot holds one angle (updated additively).  In 3-D a slot is either
+
+* **multiplicative** (the rule): it stores the total rotation vector ψ of the point
+  (``R = exp(S(ψ))``, global components) while its three DOFs are *spin* components in the
+  slot's basis ``Q`` (global axes at joints, member axes inside members); a state is advanced
+  with :meth:`NonlinearModel.add`, which composes rotations
+  (:func:`~trussfe.nonlinear.beam3d.compose`);
+* **additive** (where a rotation component must be held): it stores ``φ = Qᵀψ`` and its DOFs
+  are the increments of ``φ`` (``δw = Tₛ(ψ) Q δφ``), so that holding a component of ``φ`` is
+  a holonomic constraint.  These are the start ends of members released at both ends (a
+  pinned-beam bar would spin freely about its own axis, so the axial component of its start
+  rotation vector is held — the nonlinear counterpart of the linear FE's twist-free pinned
+  beam) and joints with some but not all rotations supported.
+
+In 3-D a released member end is a spherical hinge (all three end moments free).
 """
 from __future__ import annotations
 
@@ -23,8 +37,10 @@ import logging
 
 import numpy as np
 
-from ..errors import AnalysisError, InputError
+from ..errors import InputError
 from ..model.structure import Structure
+from .beam3d import (beam3d_matrices, compose, expm_so3, reference_frames,
+                     tangent_operator, tangent_operator_derivative)
 from .elements import (beam2d_local, beam2d_matrices, truss_kinematics,
                        truss_matrices)
 from .failure import FailureLaws, axial_law, failure_margins
@@ -58,6 +74,12 @@ class NonlinearModel:
         Members still in the structure (failed members are removed).
     plastic : ndarray, shape (truss element,)
         Committed plastic strain of each truss element.
+    rdof : int
+        DOFs per rotation slot (1 in 2-D, 3 in 3-D).
+    slot_basis : ndarray, shape (slot, 3, 3)
+        3-D only: the basis ``Q`` (columns) of each rotation slot's DOFs.
+    slot_additive : ndarray of bool, shape (slot,)
+        3-D only: slots parametrised additively by ``φ = Qᵀψ`` (see the module notes).
     """
 
     def __init__(self, structure: Structure, bar_model: str = "truss",
@@ -74,11 +96,8 @@ class NonlinearModel:
         n, m = s.n_nodes, s.n_members
         conn = s.connectivity
         beam_members = s.is_beam | (bar_model == "pinned-beam")
-        if dim == 3 and beam_members.any():
-            raise AnalysisError(
-                f"members.{s.member_ids[int(np.flatnonzero(beam_members)[0])]}",
-                "geometrically nonlinear beam elements are plane (2-D) only; model the 3-D "
-                "members as bars (type = \"bar\", --bar-model truss)")
+        rdof = 1 if dim == 2 else 3                 # DOFs per rotation slot
+        self.rdof = rdof
         laws = laws if laws is not None else FailureLaws.none(m)
         bad = np.flatnonzero(beam_members & (laws.buckling > 0))
         if bad.size:
@@ -101,6 +120,7 @@ class NonlinearModel:
         nb = b_mem.size
         rigid_end = np.zeros((m, 2), dtype=bool)
         rigid_end[s.is_beam] = ~s.releases[s.is_beam]
+        self.rigid_end = rigid_end
         joint_has_rot = np.zeros(n, dtype=bool)
         np.logical_or.at(joint_has_rot, conn[rigid_end[:, 0], 0], True)
         np.logical_or.at(joint_has_rot, conn[rigid_end[:, 1], 1], True)
@@ -128,28 +148,61 @@ class NonlinearModel:
         self.b_slot = np.stack([slots[:, :-1].ravel(), slots[:, 1:].ravel()], axis=1)
         self.b_EA = (s.E * s.area)[self.b_member]
         Ib = s.Iz[self.b_member] if dim == 2 else s.Iy[self.b_member]
-        if nb and not np.all(np.isfinite(Ib)):
-            i = int(self.b_member[np.flatnonzero(~np.isfinite(Ib))[0]])
-            raise InputError(f"sections.{s.sections[i].name}",
-                             f"member {s.member_ids[i]} is a beam but its section has no "
-                             "second moment of area (Iy)")
+        props = [("second moment of area (Iy)", Ib)]
+        if dim == 3:
+            props += [("second moment of area (Iz)", s.Iz[self.b_member]),
+                      ("torsion constant (J)", s.J[self.b_member]),
+                      ("shear modulus (G)", s.G[self.b_member])]
+        for what, v in props:
+            if nb and not np.all(np.isfinite(v) & (v > 0)):
+                i = int(self.b_member[np.flatnonzero(~(np.isfinite(v) & (v > 0)))[0]])
+                raise InputError(f"members.{s.member_ids[i]}",
+                                 f"the member is modelled as a beam but its {what} is "
+                                 "missing or not positive")
         self.b_EI = s.E[self.b_member] * Ib
+        if dim == 3:
+            self.b_EIz = (s.E * s.Iz)[self.b_member]
+            self.b_GJ = (s.G * s.J)[self.b_member]
+            self.b_orientation = s.orientation[self.b_member]
 
         self.X = np.vstack([s.coords, X_inner]) if nb else s.coords.copy()
         self.n_points = self.X.shape[0]
         self.n_rot = nslot
-        self.ndof = self.n_points * dim + nslot
+        self.ndof = self.n_points * dim + nslot * rdof
         self.joint_slot = joint_slot
         tdofs = lambda pts: (pts[:, :, None] * dim + np.arange(dim)).reshape(len(pts), 2 * dim)
         self.t_dofs = tdofs(self.t_conn)
-        if nb:
+        rot0 = self.n_points * dim
+        #: 3-D slots parametrised additively by their rotation vector in the slot basis
+        self.slot_additive = np.zeros(nslot, dtype=bool)
+        twist_free = np.zeros(0, dtype=np.int64)
+        if nb and dim == 3:
+            sdofs = lambda sl: rot0 + sl[:, None] * 3 + np.arange(3)
+            bd = np.empty((len(self.b_conn), 12), dtype=np.int64)
+            bd[:, 0:3], bd[:, 6:9] = tdofs(self.b_conn)[:, :3], tdofs(self.b_conn)[:, 3:]
+            bd[:, 3:6] = sdofs(self.b_slot[:, 0])
+            bd[:, 9:12] = sdofs(self.b_slot[:, 1])
+            self.b_dofs = bd
+            # spin bases: global axes at joints, the member's axes at its own points
+            member_axes = reference_frames(s.coords, conn[b_mem], s.orientation[b_mem])
+            Q = np.broadcast_to(np.eye(3), (nslot, 3, 3)).copy()
+            owned = slots.copy()
+            owned[rigid_end[b_mem, 0], 0] = -1
+            owned[rigid_end[b_mem, 1], k] = -1
+            has = owned >= 0
+            Q[owned[has]] = np.repeat(member_axes, k + 1, axis=0).reshape(nb, k + 1, 3, 3)[has]
+            self.slot_basis = Q
+            both = ~rigid_end[b_mem, 0] & ~rigid_end[b_mem, 1]
+            self.slot_additive[slots[both, 0]] = True
+            twist_free = rot0 + 3 * slots[both, 0]          # rotation about the member axis
+        elif nb:
             bd = np.empty((len(self.b_conn), 6), dtype=np.int64)
             bd[:, [0, 1, 3, 4]] = tdofs(self.b_conn)
             bd[:, 2] = self.n_points * dim + self.b_slot[:, 0]
             bd[:, 5] = self.n_points * dim + self.b_slot[:, 1]
             self.b_dofs = bd
         else:
-            self.b_dofs = np.zeros((0, 6), dtype=np.int64)
+            self.b_dofs = np.zeros((0, 6 if dim == 2 else 12), dtype=np.int64)
 
         # ---- supports, loads
         free = np.ones(self.ndof, dtype=bool)
@@ -167,14 +220,26 @@ class NonlinearModel:
                 raise InputError(f"loads.{s.node_ids[i]}", "node is connected to no member")
             free[(loose[:, None] * dim + np.arange(dim)).ravel()] = False
         self.free = free
+        if dim == 3:
+            # a partly fixed joint rotation holds components of its rotation vector: additive
+            rs = s.supports[:, 3:6] & joint_has_rot[:, None]
+            part = rs.any(axis=1) & ~rs.all(axis=1)
+            self.slot_additive[joint_slot[part]] = True
+            jn, comp = np.nonzero(rs)
+            free[self.n_points * dim + 3 * joint_slot[jn] + comp] = False
+            free[twist_free] = False
         f = np.zeros(self.ndof)
         f[: n * dim] = s.loads[:, :dim].ravel()
         moments = s.loads[:, dim:]
-        if np.any(moments != 0):
-            if dim == 3:
-                i = int(np.flatnonzero(np.any(moments != 0, axis=1))[0])
-                raise InputError(f"loads.{s.node_ids[i]}", "nodal moments are not supported "
-                                                          "by the 3-D post-critical analysis")
+        if dim == 3 and np.any(moments != 0):
+            # a moment of fixed direction: virtual work M·δw on the joint's spin
+            bad = np.flatnonzero(np.any(moments != 0, axis=1) & ~joint_has_rot)
+            if bad.size:
+                raise InputError(f"loads.{s.node_ids[int(bad[0])]}",
+                                 "a moment on a node that no rigid beam end connects to")
+            has = np.flatnonzero(np.any(moments != 0, axis=1))
+            f[self.n_points * dim + 3 * joint_slot[has][:, None] + np.arange(3)] = moments[has]
+        elif np.any(moments != 0):
             bad = np.flatnonzero((moments[:, 0] != 0) & ~joint_has_rot)
             if bad.size:
                 raise InputError(f"loads.{s.node_ids[int(bad[0])]}",
@@ -191,6 +256,37 @@ class NonlinearModel:
     def positions(self, u: np.ndarray) -> np.ndarray:
         """Current point positions, shape (point, dim)."""
         return self.X + u[: self.n_points * self.dim].reshape(-1, self.dim)
+
+    @property
+    def additive(self) -> bool:
+        """True when states add (no 3-D rotation): ``add(u, du) == u + du``."""
+        return self.dim == 2 or self.n_rot == 0
+
+    def add(self, u: np.ndarray, du: np.ndarray) -> np.ndarray:
+        """Advance the state ``u`` by the increment ``du`` (all DOFs).
+
+        Translations (and 2-D rotations) add.  A 3-D rotation slot's increment is a spin
+        ``δw = Q δφ`` (``Q`` the slot's basis), composed multiplicatively with the total
+        rotation: ``exp(S(ψ')) = exp(S(δw)) exp(S(ψ))`` (Crisfield vol. 2 §16.4).
+        """
+        out = u + du
+        if self.additive:
+            return out
+        t = self.n_points * self.dim
+        psi = u[t:].reshape(-1, 3)
+        mul = ~self.slot_additive
+        spin = np.einsum("sij,sj->si", self.slot_basis[mul], du[t:].reshape(-1, 3)[mul])
+        new = out[t:].reshape(-1, 3)                # additive slots: φ + δφ
+        new[mul] = compose(psi[mul], spin)
+        return out
+
+    def rotation_vectors(self, u: np.ndarray) -> np.ndarray:
+        """Total rotation vectors ψ of the 3-D rotation slots (global), shape (slot, 3)."""
+        r = u[self.n_points * 3:].reshape(-1, 3)
+        add = self.slot_additive
+        psi = r.copy()
+        psi[add] = np.einsum("sij,sj->si", self.slot_basis[add], r[add])
+        return psi
 
     def joint_displacements(self, u: np.ndarray) -> np.ndarray:
         """Displacements of the structure's nodes, shape (node, dim)."""
@@ -239,7 +335,14 @@ class NonlinearModel:
             ks.append(k)
             ds.append(self.t_dofs[idx])
         # beam elements
-        if len(self.b_conn):
+        if len(self.b_conn) and self.dim == 3:
+            live_b = self.alive[self.b_member]
+            fb, kb, Nbm, Mb = self._beam3d(x, self.rotation_vectors(u), tangent=tangent)
+            out.update(b_force=np.where(live_b, Nbm, 0.0), b_moment=Mb * live_b[:, None, None])
+            fs.append(fb[live_b])
+            ks.append(kb[live_b] if tangent else None)
+            ds.append(self.b_dofs[live_b])
+        elif len(self.b_conn):
             rot = u[self.n_points * self.dim:][self.b_slot]
             lb, c, s_, L0, ul, th = beam2d_local(x, self.b_conn, rot, self.X)
             live_b = self.alive[self.b_member]
@@ -252,6 +355,39 @@ class NonlinearModel:
         out["internal"] = F
         out["tangent"] = K
         return out
+
+    def _beam3d(self, x, psi, tangent=True, N_override=None):
+        """Element forces and tangents of the 3-D beams in the slot bases (DOF order of
+        ``b_dofs``)."""
+        R = expm_so3(psi)                                            # (slot, 3, 3)
+        conn = self.b_conn
+        R0 = reference_frames(self.X, conn, self.b_orientation)
+        L0 = np.linalg.norm(self.X[conn[:, 1]] - self.X[conn[:, 0]], axis=1)
+        f, k, N, M = beam3d_matrices(x, conn, R[self.b_slot[:, 0]], R[self.b_slot[:, 1]], R0,
+                                     L0, self.b_EA, self.b_GJ, self.b_EI, self.b_EIz,
+                                     N_override=N_override, tangent=tangent)
+        # DOFs of the slots: spins δw = Q δφ (multiplicative slots) or rotation-vector
+        # increments δw = Tₛ(ψ) Q δφ (additive slots); f_φ = Cᵀ f_w, k_φ = Cᵀ k C (+ the
+        # derivative of Tₛᵀ at fixed f_w on the additive slots' diagonal blocks)
+        for sl, end in ((slice(3, 6), 0), (slice(9, 12), 1)):
+            slot = self.b_slot[:, end]
+            C = self.slot_basis[slot].copy()                         # (el, 3, 3)
+            add = self.slot_additive[slot]
+            if add.any():
+                C[add] = tangent_operator(psi[slot[add]]) @ C[add]
+                if k is not None:
+                    Q = self.slot_basis[slot[add]]
+                    dT = tangent_operator_derivative(psi[slot[add]], f[add, sl])
+                    extra = np.transpose(Q, (0, 2, 1)) @ dT @ Q
+            f[:, sl] = np.einsum("eji,ej->ei", C, f[:, sl])
+            if k is not None:
+                k[:, sl, :] = np.einsum("eji,ejk->eik", C, k[:, sl, :])
+                k[:, :, sl] = k[:, :, sl] @ C
+                if add.any():
+                    r = np.arange(sl.start, sl.stop)
+                    k[np.flatnonzero(add)[:, None, None], r[None, :, None],
+                      r[None, None, :]] += extra
+        return f, k, N, M
 
     @property
     def t_len0(self) -> np.ndarray:
@@ -304,7 +440,12 @@ class NonlinearModel:
         f, k = truss_matrices(e[live_t], l[live_t], self.t_len0[live_t], Nt[live_t],
                               self.t_EA[live_t])
         ds.append(self.t_dofs[live_t]); fs.append(f); ks.append(k)
-        if len(self.b_conn):
+        if len(self.b_conn) and self.dim == 3:
+            Nb = np.zeros(len(self.b_conn)) if axial_force_b is None else axial_force_b
+            live_b = self.alive[self.b_member]
+            fb, kb, _, _ = self._beam3d(x, np.zeros((self.n_rot, 3)), N_override=Nb)
+            ds.append(self.b_dofs[live_b]); fs.append(fb[live_b]); ks.append(kb[live_b])
+        elif len(self.b_conn):
             lb, c, s_, L0, ul, th = beam2d_local(x, self.b_conn, np.zeros_like(
                 self.b_slot, dtype=float), self.X)
             Nb = np.zeros(len(lb)) if axial_force_b is None else axial_force_b

@@ -134,6 +134,12 @@ class _Stepper:
         u[self.free] = uf
         return u
 
+    def add(self, uf, duf):
+        """Advance free DOFs by an increment (multiplicative for 3-D rotations)."""
+        if self.m.additive:
+            return uf + duf
+        return self.m.add(self.full(uf), self.full(duf))[self.free]
+
     def eval(self, uf, tangent=True):
         res = self.m.evaluate(self.full(uf), tangent=tangent)
         K = res["tangent"][self.free][:, self.free] if tangent else None
@@ -186,8 +192,8 @@ class _Stepper:
         fac, dt_fac, rprev, fresh = fac0, ut, np.inf, None
         if fac_iter is not None and modified:
             fac, dt_fac = fac_iter, fac_iter.solve(f)
+        uf = self.add(uf0, du)
         for it in range(1, (self.max_iter if refactor_ratio <= 0.5 else 2 * self.max_iter) + 1):
-            uf = uf0 + du
             lam = lam0 + dlam
             res, fint, K = self.eval(uf, tangent=not modified)
             R = fint - lam * f
@@ -228,12 +234,13 @@ class _Stepper:
             corr = dr + dl * dt
             du = du + corr
             dlam += dl
+            # the correction applies to the current iterate (rotations: composed with it)
+            uf = uf0 + du if self.m.additive else self.add(uf, corr)
             # round-off floor of the residual: accept when the correction is negligible
-            if np.linalg.norm(corr) <= 1e-13 * (np.linalg.norm(uf0 + du) + self.size):
+            if np.linalg.norm(corr) <= 1e-13 * (np.linalg.norm(uf) + self.size):
                 if np.linalg.norm(du) > jump:
                     return None
-                return (uf0 + du, lam0 + dlam, self.m.evaluate(self.full(uf0 + du)), it,
-                        fresh)
+                return (uf, lam0 + dlam, self.m.evaluate(self.full(uf)), it, fresh)
         return None
 
 
@@ -330,7 +337,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                          "loads that the load factor λ scales")
     if monitor is None:
         fl = np.abs(m.load[: s.n_nodes * s.dim])
-        monitor = int(np.argmax(fl))
+        # the most loaded translation; with moments only, the most loaded rotation
+        monitor = int(np.argmax(fl)) if fl.max() > 0 else int(np.argmax(np.abs(m.load)))
     if not m.free[monitor]:
         raise InputError("monitor", "the monitored displacement is a supported DOF")
     if step is not None and not (np.isfinite(step) and step > 0):
@@ -458,8 +466,12 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
             u2, lam2, res2, phi = crit
             du_prev = None
             uf, lam, res = u2, lam2, res2
-            fac1 = factorize(st.eval(uf)[2])
-            neg1 = fac1.negative
+            try:
+                fac1 = factorize(st.eval(uf)[2])
+                neg1 = fac1.negative
+            except SingularTangent:
+                # (a multiple critical point) the factor from before serves the predictor
+                fac1 = fac
             branch_dir = phi if phi @ st.f >= 0 else -phi
             ds = max(dss, branch_step * size)
             ds_max = max(ds_max, 8.0 * ds)
@@ -735,7 +747,7 @@ def _release(st, uf0, lam, event_tolerance=1e-6, min_increment=1.0 / 4096):
             try:
                 if not modified or held["fac"] is None or rn > 0.5 * rprev:
                     held["fac"] = factorize(K if K is not None else st.eval(u)[2])
-                u = u - held["fac"].solve(R)
+                u = st.add(u, -held["fac"].solve(R))
             except SingularTangent:
                 return None
             rprev = rn
