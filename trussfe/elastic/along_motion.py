@@ -118,7 +118,7 @@ def stacked_structure(structure: Structure, coords: np.ndarray) -> Structure:
 
 
 def _solve_block(structure: Structure, coords: np.ndarray, ml: MotionLoads,
-                 positions: np.ndarray, subdivisions: int):
+                 positions: np.ndarray, subdivisions: int, backend: str = "superlu"):
     """FE solve of one block of steps; returns displacements, reactions, section and
     station forces."""
     nt = coords.shape[0]
@@ -147,7 +147,8 @@ def _solve_block(structure: Structure, coords: np.ndarray, ml: MotionLoads,
     nodal = ml.nodal[..., :dim].reshape(nt * n, dim)
     np.add.at(f, fe.node_dofs[:, :dim], nodal)
     K = fe.stiffness()
-    fac = factorise(K, fe.free, fe=fe, item=structure.source or structure.name)
+    fac = factorise(K, fe.free, fe=fe, item=structure.source or structure.name,
+                    backend=backend)
     u = fac.solve(f)
     if not np.all(np.isfinite(u)):
         raise AnalysisError(structure.source or structure.name, "non-finite displacements")
@@ -265,3 +266,52 @@ def elastic_along_motion(structure: Structure, kin: Kinematics, *,
                            midpoint_axial_force=mid, strain=strain,
                            subdivisions=int(subdivisions), loads=ml,
                            options={"gravity": gravity, "loads": loads})
+
+
+def compare_with_rigid(rigid_sections: SectionForces, response: ElasticResponse,
+                       rigid_reactions: np.ndarray | None = None) -> dict:
+    """Largest differences between the FE and rigid-body section forces over a motion.
+
+    Each member's differences are scaled by that member's largest force (tension or shear,
+    over all steps and sections) for the forces and by its largest moment for the moments,
+    so that near-zero values do not blow the ratio up; a member whose forces are all zero
+    (to 1e-12 of the largest in the structure) is scaled by the structure's largest.
+
+    Parameters
+    ----------
+    rigid_sections : SectionForces
+        ``SimulationResult.sections`` of the same motion, at the same positions.
+    response : ElasticResponse
+    rigid_reactions : ndarray, shape (nt, n, dim), optional
+        ``SimulationResult.forces.reactions`` (scaled by the largest reaction).
+
+    Returns
+    -------
+    dict
+        ``tension``, ``shear``, ``moment`` (and ``reactions``): largest scaled difference;
+        ``max``: the largest of them; ``worst``: step, member and section of the largest
+        force difference; ``steps``: number of steps compared.
+    """
+    rs, fs = rigid_sections, response.sections
+    if rs.tension.shape != fs.tension.shape or not np.allclose(rs.position, fs.position):
+        raise AnalysisError("sections", "the rigid and FE section forces are not at the same "
+                            "steps and positions")
+    nt, m, k = rs.tension.shape
+    fmag = np.maximum(np.abs(rs.tension), np.linalg.norm(rs.shear, axis=-1))
+    f_scale = fmag.max(axis=(0, 2))                                        # (m,)
+    m_scale = np.linalg.norm(rs.moment, axis=-1).max(axis=(0, 2))
+    f_scale = np.maximum(f_scale, 1e-12 * max(f_scale.max(initial=0.0), 1e-300))
+    m_scale = np.maximum(m_scale, 1e-12 * max(m_scale.max(initial=0.0), 1e-300))
+    dT = np.abs(fs.tension - rs.tension) / f_scale[None, :, None]
+    dV = np.linalg.norm(fs.shear - rs.shear, axis=-1) / f_scale[None, :, None]
+    dM = np.linalg.norm(fs.moment - rs.moment, axis=-1) / m_scale[None, :, None]
+    out = {"tension": float(dT.max()), "shear": float(dV.max()), "moment": float(dM.max()),
+           "steps": int(nt)}
+    worst = np.unravel_index(int(np.argmax(np.maximum(dT, dV))), dT.shape)
+    out["worst"] = {"step": int(worst[0]), "member": int(worst[1]), "section": int(worst[2])}
+    if rigid_reactions is not None:
+        scale = max(np.abs(rigid_reactions).max(), 1e-300)
+        out["reactions"] = float(np.abs(response.reactions - rigid_reactions).max() / scale)
+    out["max"] = max(v for key, v in out.items() if key in ("tension", "shear", "moment",
+                                                            "reactions"))
+    return out
