@@ -315,3 +315,48 @@ def compare_with_rigid(rigid_sections: SectionForces, response: ElasticResponse,
     out["max"] = max(v for key, v in out.items() if key in ("tension", "shear", "moment",
                                                             "reactions"))
     return out
+
+
+def simulate_elastic(structure: Structure, motion=None, *, scheme: str = "exact",
+                     n_sections: int = 7, subdivisions: int | None = None,
+                     gravity: bool = True, loads: bool = True):
+    """Rigid-body simulation and FE response along the same motion, compared.
+
+    Parameters
+    ----------
+    structure : Structure
+    motion : Motion, optional
+        Active-member histories (``None``: the model at rest, one step).
+    scheme : {"exact", "thesis"}
+        Kinematics of :func:`trussfe.rigid.simulate.simulate`.
+    n_sections : int
+        Sections per member tube.
+    subdivisions : int, optional
+        Elements per member (default ``max(n_sections − 1, 2)``).
+    gravity, loads : bool
+        Passed to :func:`elastic_along_motion` (the rigid model always has both).
+
+    Returns
+    -------
+    sim : SimulationResult
+        The rigid-body result (physical section inertia).
+    response : ElasticResponse
+    comparison : dict
+        :func:`compare_with_rigid` (only meaningful with gravity and loads).
+
+    Raises
+    ------
+    InputError, AnalysisError, MechanismError
+        From the rigid solver (a motion that leaves the assembly, a mechanism or an
+        indeterminate truss) or the FE solve.
+    """
+    from ..rigid.simulate import simulate
+
+    sim = simulate(structure, motion, scheme=scheme, n_sections=n_sections,
+                   full_length_inertia=False, actuators=False)
+    k = subdivisions if subdivisions is not None else max(int(n_sections) - 1, 2)
+    resp = elastic_along_motion(structure, sim.kinematics, bodies=sim.bodies,
+                                positions=sim.sections.position, subdivisions=k,
+                                gravity=gravity, loads=loads)
+    cmp = compare_with_rigid(sim.sections, resp, sim.forces.reactions)
+    return sim, resp, cmp
