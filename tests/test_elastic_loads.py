@@ -12,7 +12,7 @@ from trussfe.model.sections import Material, Section
 from trussfe.model.structure import build_structure
 from trussfe.rigid.forces import member_bodies, nodal_forces
 from trussfe.rigid.kinematics import Kinematics
-from trussfe.rigid.reproductions import base_simulation, triangular_truss
+from trussfe.rigid.reproductions import triangular_truss
 from trussfe.rigid.motion import third_order_motion
 from trussfe.rigid.reproductions import L2, L3MIN
 from trussfe.rigid.sections import section_forces

@@ -30,9 +30,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..model.structure import Structure
-from ..rigid.kinematics import Kinematics
+from ..rigid.kinematics import Kinematics, compute_kinematics
 from ..rigid.motion import rest_motion
-from ..rigid.kinematics import compute_kinematics
 from ..rigid.sections import SectionForces, member_frames
 from .along_motion import ElasticResponse, elastic_along_motion
 
