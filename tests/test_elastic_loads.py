@@ -135,3 +135,20 @@ def test_section_forces_do_not_depend_on_subdivisions(k):
     assert_allclose(r.sections.tension, sim.sections.tension, atol=1e-9 * scale)
     assert_allclose(r.sections.moment, sim.sections.moment,
                     atol=1e-9 * np.abs(sim.sections.moment).max())
+
+
+def test_load_vectors_at_rest_equal_fe_load_vector():
+    """At rest, the motion loads on one discretisation equal the FE model's own load vector
+    (self-weight by scikit-fem's distributed-load form, nodal loads, weight of nodal masses):
+    triangular truss without its active base, 1e-12."""
+    from trussfe.elastic.loads import load_vectors
+    from trussfe.rigid.kinematics import compute_kinematics
+    from trussfe.rigid.motion import rest_motion
+    s = triangular_truss(load=-98.1)
+    s.extensions.pop("active_members")
+    kin = compute_kinematics(s, rest_motion(s)).at_rest()
+    fe = discretise(s, "pinned-beam", 4)
+    f, f_local = load_vectors(fe, motion_loads(s, kin))
+    ref = fe.load_vector()
+    assert_allclose(f[0], ref, atol=1e-12 * np.abs(ref).max())
+    assert len(f_local) == 1 and f_local[0].shape == (1, fe.groups[0].n_local)

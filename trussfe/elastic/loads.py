@@ -293,3 +293,55 @@ def rotations3(rotation: np.ndarray) -> np.ndarray:
     R[..., :2, :2] = rotation
     R[..., 2, 2] = 1.0
     return R
+
+
+def load_vectors(fe, ml: MotionLoads) -> tuple[np.ndarray, list[np.ndarray]]:
+    """Global load vectors of every step on one discretisation (a fixed configuration).
+
+    The loads of :func:`motion_loads` (global axes) are taken onto the members of ``fe`` in its
+    own configuration: the stations and member axes of ``fe``, the loads' values of each step.
+    This is the load of a linearised analysis about that configuration (e.g. transient
+    dynamics); :func:`trussfe.elastic.along_motion.elastic_along_motion` instead moves the
+    model with the motion.
+
+    Parameters
+    ----------
+    fe : FEModel
+        Pinned-beam (or all-frame) discretisation of the structure the loads belong to, every
+        member subdivided alike.
+    ml : MotionLoads
+        Loads of nt steps.
+
+    Returns
+    -------
+    f : ndarray, shape (nt, n_dof)
+        Global load vectors (member loads, nodal forces P + M(g − a)).
+    f_local : list of ndarray, one per element group, shape (nt, n_local)
+        The element part in each group's local (field) space, for
+        :meth:`FEModel.element_forces` (one step at a time).
+
+    Raises
+    ------
+    InputError
+        A discretisation with truss (axial-only) elements or unequal subdivisions.
+    """
+    from ..errors import InputError
+
+    s = fe.structure
+    nt, m, dim = ml.n_steps, s.n_members, s.dim
+    k = int(fe.member_subdivisions[0]) if m else 1
+    if np.any(fe.member_subdivisions != k) or any(g.kind != "frame" for g in fe.groups):
+        raise InputError("--bar-model", "motion loads need the pinned-beam bar model "
+                         "(every member a subdivided beam)")
+    ex = np.broadcast_to(fe.element_x.reshape(1, m, k, 2), (nt, m, k, 2))
+    R = np.broadcast_to(rotations3(fe.rotation)[None], (nt, m, 3, 3))
+    comp = element_load_components(ml, ex, R).reshape(nt, m * k, 2, 6)
+    f = np.zeros((nt, fe.n_dof))
+    f_local = []
+    for g in fe.groups:
+        c = comp[:, g.elements]
+        c = (c[..., [0, 1, 5]] if dim == 2 else c).reshape(nt, -1)
+        f += (g.G.T @ c.T).T
+        f_local.append((g.S @ c.T).T)
+    np.add.at(f, (slice(None), fe.node_dofs[:, :dim]), ml.nodal[..., :dim])
+    return f, f_local

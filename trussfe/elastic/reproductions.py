@@ -217,8 +217,8 @@ def m6_strains() -> dict:
         ``gauges``: three-gauge average − axial strain (largest, µε) and the largest single
         gauge's bending part along slew 1; ``slew1`` / ``slew2``: zeroed history at the start,
         end, maximum, at the equilibrium crossing, the static strain at equilibrium (loads
-        only) and their ratio, ε_grav,eq, and the identity check of the procedure; and
-        ``figures``.
+        only) and their ratio, ε_grav,eq, and the identity check of the procedure;
+        ``slew1_44_498``: slew 1 with 44.498 N per node; and ``figures``.
     """
     out: dict = {"table_5_5": {}}
     for load, name in ((46.0, "load_46"), (44.498, "load_44_498")):
@@ -269,6 +269,16 @@ def m6_strains() -> dict:
             res["implied_measured_start"] = res["start"] / (1 + SLEW1_TEXT["start_error"])
             res["implied_measured_end"] = res["end"] / (1 + SLEW1_TEXT["end_error"])
         out[key] = res
+        if which == 1:
+            # the same maneuver with the 44.498 N that reproduces Tables 5.2-5.4
+            s44 = double_octahedron(top_load=44.498, gravity=-9.81)
+            z44 = 1e6 * zeroed_strain(s44, r.kinematics, equilibrium, i6).zeroed
+            eq44 = out["table_5_5"]["load_44_498"]["equilibrium"]
+            out["slew1_44_498"] = {"start": float(z44[0]), "end": float(z44[-1]),
+                                   "max": float(z44.max()),
+                                   "equilibrium_crossing": float(z44[k_eq]),
+                                   "static_equilibrium": eq44,
+                                   "crossing_over_static": float(z44[k_eq] / eq44)}
         fig, ax = plt.subplots(figsize=(7.0, 4.0), dpi=110)
         ax.plot(r.time, 1e6 * z.full, ":", color="0.5", label="total (gravity + loads + motion)")
         ax.plot(r.time, 1e6 * z.no_gravity, "--", color="C1", label="without gravity")
