@@ -31,6 +31,7 @@ from ..rigid.actuator_reproductions import slew1_motion, slew1_structure
 from ..rigid.motion import Motion, third_order_motion
 from ..rigid.reproductions import (DO_POSITIONS, EQUILIBRIUM_LENGTH, L2, L3MIN,
                                    double_octahedron, triangular_truss)
+from ..rigid.sections import section_stresses
 from ..rigid.simulate import SimulationResult, simulate
 from ..rigid.slew import TopPlaneInverse
 from .along_motion import ElasticResponse, compare_with_rigid, elastic_along_motion
@@ -133,6 +134,35 @@ def _plot_rigid_fe(path: Path, t, curves, title: str, ylabel: str) -> str:
     return str(path)
 
 
+def _plot_von_mises(path: Path, r: SimulationResult, e: ElasticResponse) -> str:
+    """Follower's largest von Mises stress over its sections: rigid, FE and the thesis'
+    Base Simulation numbers (Lacy section 3.3: maximum 4.3393e6 Pa, static 3.9695e6 Pa at
+    that instant; with Appendix A's kinematics and section inertia)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    vm_r = r.stresses.von_mises[:, 0].max(axis=1)
+    vm_f = section_stresses(r.structure, e.sections).von_mises[:, 0].max(axis=1)
+    fig, ax = plt.subplots(figsize=(7.0, 4.0), dpi=110)
+    t = r.time
+    ax.plot(t, vm_r / 1e6, "-", color="C0", lw=1.6, label="rigid body (exact kinematics)")
+    ax.plot(t, vm_f / 1e6, "o", color="C0", ms=4, mfc="none", label="finite elements")
+    ax.plot(t, r.static_stresses.von_mises[:, 0].max(axis=1) / 1e6, "--", color="0.5",
+            label="static, same positions")
+    ax.axhline(4.3393, color="C3", lw=0.8, ls="-.", label="thesis: maximum 4.3393 MPa")
+    ax.axhline(3.9695, color="C2", lw=0.8, ls=":", label="thesis: static at that instant")
+    ax.set_xlabel("time, s")
+    ax.set_ylabel("follower von Mises, MPa")
+    ax.set_title("Triangular truss, Base Simulation: follower's largest von Mises stress",
+                 fontsize=10)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+    return str(path)
+
+
 # ------------------------------------------------------------------ validation entries
 def validation_triangle() -> dict:
     """Base Simulation: largest scaled FE − rigid difference (paths ``exact.max`` …) and
@@ -161,6 +191,10 @@ def validation_triangle() -> dict:
                   e.sections.moment_magnitude[:, 1, -1])],
                 "Triangular truss, Base Simulation: bending moment", "|M|, N·m")
             out["follower_mid_max_moment"] = float(e.sections.moment_magnitude[:, 0, mid].max())
+            figs["triangle_von_mises"] = _plot_von_mises(d / "triangle_von_mises.png", r, e)
+            vm_fe = section_stresses(r.structure, e.sections).von_mises[:, 0].max()
+            out["follower_max_von_mises"] = {"rigid": float(r.stresses.von_mises[:, 0].max()),
+                                             "fe": float(vm_fe)}
     out["figures"] = figs
     return out
 
