@@ -105,3 +105,14 @@ def test_at_rest_matches_fe_static():
     np.testing.assert_allclose(resp.displacements[0], st.displacements[:, :3], rtol=0,
                                atol=1e-9 * np.abs(st.displacements).max())
     assert cmp["max"] <= RTOL
+
+
+def test_comparison_needs_the_same_sections():
+    """Section forces at other positions cannot be compared: one-line AnalysisError."""
+    sim, resp = base_simulation("exact", steps=5)
+    other = type(sim.sections)(position=sim.sections.position * 0.5,
+                               tension=sim.sections.tension, shear=sim.sections.shear,
+                               moment=sim.sections.moment, unit=sim.sections.unit)
+    with pytest.raises(AnalysisError) as err:
+        compare_with_rigid(other, resp)
+    _one_line(err.value)
