@@ -33,6 +33,13 @@ def test_elastic_cli_json_and_vtk(tmp_path):
     assert d["comparison"]["max"] <= 1e-6
     assert "reaction" in d["nodes"]["O1"] and "reaction" not in d["nodes"]["B"]
     assert (tmp_path / "vtk" / "triangular_truss_motion_active.pvd").is_file()
+    import meshio
+    st = tmp_path / "vtk" / "triangular_truss_motion_active_stations"
+    frames = sorted(st.glob("*.vtu"))
+    assert len(frames) == 50
+    mesh = meshio.read(frames[10])
+    assert mesh.points.shape == (2 * 7, 3)          # 2 members x 7 stations
+    assert "moment_z" in mesh.point_data
 
 
 def test_elastic_analyse_at_rest():

@@ -88,9 +88,14 @@ def analyse(model_path, **options) -> dict:
 
 
 def write_vtk(directory, sim, resp, stem: str = "elastic") -> Path:
-    """Time series: positions of the rigid motion, point data ``displacement`` (elastic),
-    cell data ``axial_force`` (FE, midpoint), ``strain``, ``rigid_axial_force``."""
-    from ..io.vtk import write_series
+    """Two time series at the positions of the rigid motion (CONTRACT.md §4).
+
+    ``stem.pvd``: point data ``displacement`` (elastic), cell data ``axial_force`` (FE,
+    midpoint), ``strain``, ``rigid_axial_force``.  ``stem_stations.pvd``: every member as a
+    polyline through its FE stations with point data ``axial_force``, ``shear_y``,
+    ``shear_z``, ``moment_y``, ``moment_z`` (member axes, N and N·m).
+    """
+    from ..io.vtk import station_mesh, write_series
 
     s = sim.structure
     frames = ({"time": float(t), "coords": sim.kinematics.coords[k],
@@ -99,7 +104,14 @@ def write_vtk(directory, sim, resp, stem: str = "elastic") -> Path:
                              "strain": resp.strain[k],
                              "rigid_axial_force": sim.midpoint_axial_force[k]}}
               for k, t in enumerate(sim.time))
-    return write_series(directory, s, frames, stem)
+    out = write_series(directory, s, frames, stem)
+    names = {"axial_force": 0, "shear_y": 1, "shear_z": 2, "moment_y": 4, "moment_z": 5}
+    stations = ({"time": float(t), "mesh": station_mesh(
+        s, resp.station_x[k] / resp.station_x[k, :, -1:], coords=sim.kinematics.coords[k],
+        point_data={nm: resp.station_forces[k, :, :, i] for nm, i in names.items()})}
+        for k, t in enumerate(sim.time))
+    write_series(directory, s, stations, f"{stem}_stations")
+    return out
 
 
 def _run(args: argparse.Namespace) -> int:
