@@ -8,7 +8,32 @@ from trussfe.elastic.reproductions import TABLE_5_5, slew, table_5_5
 from trussfe.elastic.strains import gauge_strains, static_strain, zeroed_strain
 from trussfe.rigid.reproductions import double_octahedron
 
-from test_elastic_loads import TUBE, X_FROM_END, _bar, _rotating_kinematics
+from trussfe.model.sections import Material, Section
+from trussfe.model.structure import build_structure
+from trussfe.rigid.kinematics import Kinematics
+
+L = 2.0
+TUBE = Section.tube("tube", 0.0254, 0.022225)
+X_FROM_END = np.linspace(0.0, L, 9)[None, :]
+
+
+def _bar():
+    """A bar along x, pinned at A (x, y) with a roller at B (y)."""
+    return build_structure([[0.0, 0.0], [L, 0.0]], [(0, 1)], section=TUBE,
+                           material=Material("al", 71e9, 26.2e9, density=2711.5),
+                           supports={0: "xy", 1: "y"})
+
+
+def _spin_up(alpha: float) -> Kinematics:
+    """The bar at rest along x, starting to turn about A with angular acceleration α."""
+    z = np.zeros((1, 1, 3))
+    return Kinematics(time=np.zeros(1), coords=np.array([[[0.0, 0.0], [L, 0.0]]]),
+                      velocity=np.zeros((1, 2, 3)),
+                      acceleration=np.array([[[0.0, 0.0, 0.0], [0.0, alpha * L, 0.0]]]),
+                      length=np.full((1, 1), L), length_rate=np.zeros((1, 1)),
+                      length_acc=np.zeros((1, 1)), unit=np.array([[[1.0, 0.0, 0.0]]]),
+                      unit_rate=z.copy(), unit_acc=np.array([[[0.0, alpha, 0.0]]]),
+                      omega=z.copy(), alpha=z + [0.0, 0.0, alpha])
 
 
 def test_gauge_fibres_pure_bending():
@@ -16,7 +41,7 @@ def test_gauge_fibres_pure_bending():
     reads +|M|c/(EI) (sagging: tension below), the top one −|M|c/(EI), and three gauges at 120°
     average to the axial strain 0.  Beam theory; 1e-12 relative."""
     s = _bar()
-    r = elastic_along_motion(s, _rotating_kinematics(0.0, 5.0), positions=X_FROM_END)
+    r = elastic_along_motion(s, _spin_up(5.0), positions=X_FROM_END)
     j = 4                                                     # midspan
     M = r.sections.moment[0, 0, j, 2]
     assert M < 0                                              # sagging under the downward load
