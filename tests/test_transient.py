@@ -16,9 +16,14 @@ from numpy.testing import assert_allclose
 
 from trussfe.elastic import transient as tr
 from trussfe.elastic.transient import motion_on_grid, rayleigh, transient_response
-from trussfe.elastic.transient_fe import (assemble_block, massless_active, rigid_field)
-from trussfe.elastic.transient_studies import (cycloidal_motion, sdof_bar, sdof_check,
-                                               sdof_closed_form, triangle_slew)
+from trussfe.elastic.transient_fe import assemble_block, massless_active, rigid_field
+from trussfe.elastic.transient_studies import (
+    cycloidal_motion,
+    sdof_bar,
+    sdof_check,
+    sdof_closed_form,
+    triangle_slew,
+)
 from trussfe.errors import AnalysisError, InputError
 from trussfe.fem.discretisation import discretise
 from trussfe.fem.modal import mass_matrix

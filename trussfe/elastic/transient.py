@@ -436,7 +436,7 @@ def transient_response(structure: Structure, motion: Motion, *, bar_model: str =
     single = discretise(s0, bar_model=bar_model, subdivisions=k)
     free = single.free
     nf = free.size
-    dim, n, m = structure.dim, structure.n_nodes, structure.n_members
+    _dim, _n, m = structure.dim, structure.n_nodes, structure.n_members
 
     # Refuse a mechanism with the FE model's own diagnosis (names the moving nodes).
     first = assemble_block(structure, single, kin.coords[:1], _slice_kin(kin, slice(0, 1)),
@@ -616,7 +616,7 @@ def _member_forces(B, U: np.ndarray, acc: np.ndarray, structure: Structure, nb: 
         else:                       # truss bars: loads lumped at the joints
             f_local.append(np.zeros(g.n_local))
     fel = fe.element_forces(ub, f_local)
-    x, F = fe_section_forces(fe, ub, fel)                    # (nb·m, kmax+1, ...)
+    _x, F = fe_section_forces(fe, ub, fel)                    # (nb·m, kmax+1, ...)
     m = structure.n_members
     ksub = fe.member_subdivisions
     # Midpoint: the middle station (even k) or the mean of the two around it (odd k).

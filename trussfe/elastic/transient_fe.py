@@ -113,7 +113,7 @@ def copy_dof_map(single: FEModel, batch: FEModel, nb: int) -> np.ndarray:
         are numbered per node / point / member, and copies are consecutive in each).
     """
     out = -np.ones((nb, single.n_dof), dtype=np.int64)
-    c = np.arange(nb)[:, None]
+    np.arange(nb)[:, None]
     for a1, ab in ((single.node_dofs, batch.node_dofs),
                    (single.interior_dofs, batch.interior_dofs),
                    (single.private_dofs.reshape(single.private_dofs.shape[0], -1),

@@ -12,6 +12,7 @@
 """
 from __future__ import annotations
 
+import itertools
 import logging
 import math
 import tempfile
@@ -65,7 +66,7 @@ def cycloidal_motion(structure: Structure, stroke: float, duration: float, dt: f
     ``τ = t/T`` (zero rate and acceleration at both ends), held after T."""
     L0 = float(structure.lengths()[0])
     t_end = duration if t_end is None else t_end
-    n = int(round(t_end / dt))
+    n = round(t_end / dt)
     t = dt * np.arange(n + 1)
     tau = np.clip(t / duration, 0.0, 1.0)
     w = 2 * np.pi / duration
@@ -153,7 +154,7 @@ def triangle_slew(duration: float, dt: float = 5.0e-4, *, k: int | None = None,
     about 0.1 % of the peak, so the motion is not held beyond T).
     """
     s = triangular_truss(mass=mass)
-    steps = int(round(duration / dt))
+    steps = round(duration / dt)
     m = third_order_motion(s, [L3MIN + L2], [L3MIN + STROKE + L2], duration, steps,
                            include_end=True)
     return transient_response(s, m, dt=duration / steps, k=k, update=update, t_end=t_end,
@@ -186,8 +187,8 @@ def time_step_study(duration: float = 0.3, dts=(2.0e-3, 1.0e-3, 5.0e-4, 2.5e-4),
     """
     runs = [triangle_slew(duration, dt, update=update, k=k) for dt in dts]
     errs = []
-    for a, b in zip(runs[:-1], runs[1:]):
-        step = int(round(a.dt / b.dt))
+    for a, b in itertools.pairwise(runs):
+        step = round(a.dt / b.dt)
         errs.append(float(np.max(np.abs(a.axial_force[:, member]
                                         - b.axial_force[::step, member]))))
     ratios = np.array(errs[:-1]) / np.array(errs[1:])
