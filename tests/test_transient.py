@@ -251,3 +251,33 @@ def test_held_motion_continues_as_free_vibration():
     assert r.time[-1] == pytest.approx(0.35)
     assert np.abs(r.axial_force[:, 0] - exact).max() < 2e-4 * np.abs(exact).max()
     assert np.all(r.axial_force_qs[r.time > 0.2 + 1e-9, 0] == pytest.approx(0.0, abs=1e-9))
+
+
+# ---------------------------------------------------------------------- command line
+def test_cli_transient_json_plot_and_errors(tmp_path, capsys):
+    """``trussfe transient``: JSON with one value per step, a PNG, one-line errors (exit 2)."""
+    import json
+
+    from trussfe._resources import mesh_path
+    from trussfe.cli import main
+    from trussfe.cli.cmd_transient import analyse
+
+    model = str(mesh_path("triangular_truss_motion_active.toml"))
+    out = tmp_path / "t.json"
+    png = tmp_path / "t.png"
+    assert main(["transient", model, "--motion", "triangular_truss_motion_3s.toml",
+                 "--dt", "0.01", "--json", str(out), "--plot", str(png)]) == 0
+    doc = json.loads(out.read_text())
+    assert doc["command"] == "transient" and doc["units"] == "SI"
+    n = len(doc["time"])
+    assert n == 295                                      # 0 … 2.94 s every 0.01 s
+    for mid in ("follower", "active"):
+        assert len(doc["members"][mid]["axial_force"]) == n
+    assert png.read_bytes()[:4] == b"\x89PNG"
+    assert analyse(model, motion="triangular_truss_motion_3s.toml", dt=0.01)["time"] == \
+        doc["time"]
+    capsys.readouterr()
+    assert main(["transient", model, "--motion", "triangular_truss_motion_3s.toml",
+                 "--dt", "0"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("trussfe: error: dt:") and "\n" not in err
