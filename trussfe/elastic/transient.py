@@ -80,7 +80,7 @@ log = logging.getLogger(__name__)
 BETA, GAMMA = 0.25, 0.5
 
 #: Free-DOF count up to which the per-step systems are solved densely (batched inverses).
-DENSE_LIMIT = 600
+DENSE_LIMIT = 200
 
 #: Bytes of dense per-step matrices kept for one block of steps.
 BLOCK_BYTES = 64 << 20

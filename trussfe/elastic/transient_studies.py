@@ -161,6 +161,22 @@ def triangle_slew(duration: float, dt: float = 5.0e-4, *, k: int | None = None,
                               damping=damping)
 
 
+def double_octahedron_slew(duration: float, dt: float = 5.0e-4, *, angle: float = 10.0,
+                           top_mass: float = 4.536, update: str = "per-step",
+                           k: int | None = None) -> TransientResult:
+    """Lacy's double-octahedral bay, standing under gravity with ``top_mass`` (kg) on each top
+    node, tilting its top plane from 0 to ``angle`` degrees about n̂1 in ``duration`` s (the
+    third-order profile of :mod:`trussfe.rigid.slew`, centroid height held)."""
+    from ..rigid.reproductions import double_octahedron
+    from ..rigid.slew import rotation_motion
+
+    s = double_octahedron(top_masses=top_mass, gravity=9.81)
+    steps = round(duration / dt)
+    m = rotation_motion({"type": "rotation", "axis": "n1", "start": 0.0, "end": angle,
+                         "duration": duration, "steps": steps}, s)
+    return transient_response(s, m, update=update, k=k)
+
+
 def departure_table(results: dict[float, TransientResult]) -> list[dict]:
     """One row per slew time and member: peaks and the largest departure of the elastic
     axial force from the quasi-static and rigid-body ones."""
