@@ -213,7 +213,8 @@ def _short_motion(s, T=0.3, steps=30):
     ({"dt": 0.0}, "dt"), ({"dt": -1e-3}, "dt"), ({"dt": 1.0}, "dt"),
     ({"update": "sometimes"}, "update"), ({"bar_model": "rope"}, "bar_model"),
     ({"damping": (-1.0, 0.0)}, "damping"), ({"damping": "lots"}, "damping"),
-    ({"t_end": 0.5, "dt": 1e-2}, "motion"),
+    ({"t_end": 0.5, "dt": 1e-2}, "motion"), ({"block": 0}, "block"),
+    ({"k": 0}, "subdivisions"),
 ])
 def test_bad_options_give_one_line_errors(tri, kw, item):
     with pytest.raises(InputError) as exc:

@@ -423,6 +423,8 @@ def transient_response(structure: Structure, motion: Motion, *, bar_model: str =
         raise InputError("bar_model", f"unknown bar model {bar_model!r}; use one of "
                          + ", ".join(BAR_MODELS))
     alpha, beta = _check_damping(damping)
+    if block is not None and not (isinstance(block, (int, np.integer)) and block >= 1):
+        raise InputError("block", f"must be a positive number of steps, got {block!r}")
     grid = motion_on_grid(motion, dt, t_end)
     dt = float(grid.time[1] - grid.time[0])
     nt = grid.n_steps
@@ -500,7 +502,7 @@ def transient_response(structure: Structure, motion: Motion, *, bar_model: str =
         ekin[sl] = 0.5 * ops.quad(ops.M, Vb)
         estr[sl] = 0.5 * ops.quad(ops.K, Ub)
         _increments(ops, dense, prev, Ub, Vb, F, dt, dwork, ddiss, dpar, k0)
-        prev = (Ub[-1], Vb[-1], _last(ops.K), _last(ops.M), _last(ops.C), F[-1])
+        prev = (Ub[-1], Vb[-1], ops.K[-1], ops.M[-1], ops.C[-1], F[-1])
         # Member forces of the block (all steps at once on the batch model).
         U[sl][:, free] = Ub
         Uq[sl][:, free] = Uqb
@@ -535,10 +537,6 @@ def transient_response(structure: Structure, motion: Motion, *, bar_model: str =
         options={"bar_model": bar_model, "subdivisions": single.subdivisions, "dt": dt,
                  "update": update, "damping": (alpha, beta), "mass": mass,
                  "integrator": "Newmark average acceleration", "steps": nt})
-
-
-def _last(A):
-    return A[-1]
 
 
 def _node_disp(fe: FEModel, U: np.ndarray) -> np.ndarray:
