@@ -90,7 +90,11 @@ def write_vtk(directory: str | Path, res: SimulationResult, stem: str = "simulat
     """A ParaView time series: ``stem.pvd`` + one ``.vtu`` per step (CONTRACT.md §4).
 
     Point data ``displacement`` (from the first step), ``velocity``, ``acceleration``; cell data
-    ``axial_force`` (midpoint), ``von_mises`` and ``static_von_mises`` (maxima over sections).
+    ``axial_force`` (midpoint), ``von_mises`` and ``static_von_mises`` (maxima over sections),
+    ``buckling_utilisation`` (largest compression over the member's sections divided by its
+    Euler allowable load, eq. 2.26/4.77: 0 in tension, 1 at the allowable) and
+    ``actuator_force`` (force of the active base on the leadscrew tube; 0 on passive members,
+    which have no actuator).
     """
     import meshio
 
@@ -100,6 +104,12 @@ def write_vtk(directory: str | Path, res: SimulationResult, stem: str = "simulat
     X3 = np.concatenate([X, pad], axis=2)
     vm = res.stresses.von_mises.max(axis=2)
     vs = res.static_stresses.von_mises.max(axis=2)
+    compression = np.clip(-res.sections.tension, 0.0, None).max(axis=2)      # (nt, m)
+    utilisation = compression / res.buckling.allowable[None, :]
+    act = np.zeros_like(res.midpoint_axial_force)
+    members = [a.member for a in active_members(s)]
+    if members:
+        act[:, members] = res.actuator_force
     lines = []
     with atomic_dir(directory) as tmp:
         for k, t in enumerate(res.time):
@@ -110,7 +120,9 @@ def write_vtk(directory: str | Path, res: SimulationResult, stem: str = "simulat
                             "velocity": res.kinematics.velocity[k],
                             "acceleration": res.kinematics.acceleration[k]},
                 cell_data={"axial_force": [res.midpoint_axial_force[k]],
-                           "von_mises": [vm[k]], "static_von_mises": [vs[k]]})
+                           "von_mises": [vm[k]], "static_von_mises": [vs[k]],
+                           "buckling_utilisation": [utilisation[k]],
+                           "actuator_force": [act[k]]})
             mesh.write(tmp / name)
             lines.append(f'    <DataSet timestep="{t:.9g}" part="0" file="{name}"/>')
         (tmp / f"{stem}.pvd").write_text(
