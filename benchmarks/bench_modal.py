@@ -29,6 +29,7 @@ for _v in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_v, "1")
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
+from trussfe.allocator import tune_allocator  # noqa: E402
 from trussfe.fem import discretise  # noqa: E402
 from trussfe.fem.modal import RESOLVED_RESIDUAL, mass_matrix, solve_modes  # noqa: E402
 from trussfe.fem.solver import free_submatrix  # noqa: E402
@@ -155,6 +156,7 @@ def main(argv=None) -> None:
     ap.add_argument("--modes", type=int, default=10)
     ap.add_argument("--no-opensees", action="store_true")
     a = ap.parse_args(argv)
+    tuned = tune_allocator()    # as the trussfe command does (trussfe/allocator.py)
     rows = []
     cases = [(f"chain {b}", lambda b=b: octahedral_chain(b)) for b in a.bays]
     if a.grid:
@@ -178,6 +180,7 @@ def main(argv=None) -> None:
     print(f"\nresidual: max over the modes of ‖Kφ − ω²Mφ‖ / (ω²‖Mφ‖) with trussfe's K and M; "
           f"above {RESOLVED_RESIDUAL} a mode is not resolved in double precision "
           "(trussfe modes refuses it).")
+    print(f"allocator thresholds raised as by the trussfe command: {'yes' if tuned else 'no'}")
 
 
 if __name__ == "__main__":

@@ -5,8 +5,9 @@ The generalized eigenproblem on the free DOFs
 
 .. math:: K \\varphi = \\omega^2 M \\varphi, \\qquad \\varphi^T M \\varphi = 1
 
-is solved by shift-invert Lanczos (``scipy.sparse.linalg.eigsh``) with the factorisation of
-``K − σM`` from :mod:`trussfe.fem.linsolve`, or densely for small models.
+is solved by shift-invert Lanczos (:mod:`trussfe.fem.lanczos`; ARPACK through
+``scipy.sparse.linalg.eigsh`` when that does not converge without restarts) with the
+factorisation of ``K − σM`` from :mod:`trussfe.fem.linsolve`, or densely for small models.
 
 Mass
 ----
@@ -51,6 +52,7 @@ from threadpoolctl import threadpool_limits
 from ..errors import AnalysisError, InputError
 from ..model.structure import Structure
 from .discretisation import FEModel, discretise
+from .lanczos import shift_invert_lanczos
 from .linsolve import SingularMatrixError, factorize
 from .solver import free_submatrix, null_space
 
@@ -469,12 +471,17 @@ def generalized_eigen(Kff: sp.spmatrix, Mff: sp.spmatrix, count: int, sigma: flo
             factor = banded_factor(A) or factorize(A, symmetric=True)
         # The Lanczos iteration needs no refined solves: use the factor's plain solve.
         solve = getattr(factor, "_solve", factor.solve)
-        op = spla.LinearOperator((n, n), matvec=solve, dtype=float)
-        ncv = min(n - 1, max(2 * count + 1, count + 20))
-        # ARPACK's shift-invert mode needs only M products and the solves
-        lam, V = spla.eigsh(Kff, k=count, M=Mff, sigma=sigma, which="LM", OPinv=op, ncv=ncv)
-        order = np.argsort(lam)
-        lam, V = lam[order], V[:, order]
+        found = shift_invert_lanczos(solve, Mff, count, sigma=sigma)
+        if found is not None:
+            lam, V = found
+        else:                       # not converged without restarts: ARPACK restarts
+            op = spla.LinearOperator((n, n), matvec=solve, dtype=float)
+            ncv = min(n - 1, max(2 * count + 1, count + 20))
+            # ARPACK's shift-invert mode needs only M products and the solves
+            lam, V = spla.eigsh(Kff, k=count, M=Mff, sigma=sigma, which="LM", OPinv=op,
+                                ncv=ncv)
+            order = np.argsort(lam)
+            lam, V = lam[order], V[:, order]
     # M-normalise (eigsh returns M-orthonormal vectors already; dense returns A-normalised)
     mnorm = np.sqrt(np.einsum("ik,ik->k", V, Mff @ V))
     V = V / mnorm

@@ -1,0 +1,145 @@
+# SPDX-License-Identifier: MIT
+"""Shift-invert Lanczos for the generalized symmetric eigenproblem ``K φ = λ M φ``.
+
+A plain Lanczos iteration with full reorthogonalisation in the ``M`` inner product on the
+operator ``(K − σM)⁻¹ M`` (Ericsson & Ruhe's spectral transformation): the operator is
+self-adjoint in that inner product, and its largest eigenvalues ``μ = 1/(λ − σ)`` are the
+eigenvalues ``λ`` nearest ``σ`` from above.  Every step costs one solve with the given
+factorisation, one product with ``M`` and the reorthogonalisation; with a shift at or below
+the lowest eigenvalue the wanted modes of a structure converge within a few dozen steps, so
+no restart is needed.  When they have not converged within ``max_steps`` (clustered
+spectra), :func:`shift_invert_lanczos` returns ``None`` and the caller falls back on ARPACK
+(``scipy.sparse.linalg.eigsh``), which restarts implicitly.
+
+Against ARPACK on the same factorisation this saves most of the overhead around the solves:
+ARPACK's generalized mode asks for about three ``M`` products per solve and its
+reorthogonalisation runs vector by vector (10,000-bay chain, 180k DOFs, 10 modes:
+0.9 s → 0.4 s, benchmarks/bench_modal.py).
+"""
+from __future__ import annotations
+
+import logging
+from typing import Callable
+
+import numpy as np
+import scipy.linalg as sla
+import scipy.sparse as sp
+
+log = logging.getLogger(__name__)
+
+#: Relative residual bound ``|β_m s_mi| ≤ tol |μ_i|`` at which a Ritz pair is converged.
+#: The eigenvalue error is of the order of the square of the residual over the gap.
+LANCZOS_TOL = 1e-12
+
+
+def shift_invert_lanczos(solve: Callable[[np.ndarray], np.ndarray], M: sp.spmatrix,
+                         count: int, sigma: float = 0.0, tol: float = LANCZOS_TOL,
+                         max_steps: int | None = None, seed: int = 0
+                         ) -> tuple[np.ndarray, np.ndarray] | None:
+    """The ``count`` eigenpairs of ``K φ = λ M φ`` nearest ``σ`` from above.
+
+    Parameters
+    ----------
+    solve : callable
+        ``x = solve(b)`` solves ``(K − σM) x = b`` (a factorisation computed once).
+    M : sparse matrix, shape (n, n)
+        Symmetric positive semi-definite mass.
+    count : int
+        Number of eigenpairs.
+    sigma : float
+        The shift of the factorisation; it must lie below the wanted eigenvalues.
+    tol : float
+        Convergence bound on the Ritz residual relative to the Ritz value ``μ``.
+    max_steps : int, optional
+        Largest Krylov dimension (default ``max(3 count + 30, 60)``, at most ``n``).
+    seed : int
+        Seed of the random starting vector (results are reproducible).
+
+    Returns
+    -------
+    (eigenvalues, vectors) or None
+        ``eigenvalues`` ascending, shape (count,); ``vectors`` M-orthonormal, shape
+        (n, count).  None when the pairs did not converge within ``max_steps`` or the
+        iteration broke down before finding ``count`` of them.
+
+    Notes
+    -----
+    The starting vector is ``(K − σM)⁻¹ M r`` of a random ``r``, which removes components
+    along massless DOFs (infinite λ).  Each new vector is orthogonalised against all the
+    previous ones in the ``M`` inner product after the three-term recurrence (classical
+    Gram–Schmidt, repeated once when
+    more than half of what the three-term recurrence left cancels — Daniel, Gragg, Kaufman &
+    Stewart's criterion).
+
+    Examples
+    --------
+    Two unit masses on springs 2, −1 (fixed–free–free chain of stiffness 1):
+
+    >>> import scipy.sparse as sp
+    >>> from scipy.linalg import solve
+    >>> K = np.array([[2.0, -1.0], [-1.0, 1.0]])
+    >>> lam, V = shift_invert_lanczos(lambda b: solve(K, b), sp.identity(2), 2)
+    >>> np.round(lam, 6).tolist()          # (3 ∓ √5)/2
+    [0.381966, 2.618034]
+    """
+    n = M.shape[0]
+    count = int(count)
+    if count < 1 or count > n:
+        return None
+    m_max = min(n, max_steps if max_steps is not None else max(3 * count + 30, 60))
+    Q = np.empty((n, m_max + 1), order="F")     # Lanczos vectors, M-orthonormal
+    MQ = np.empty((n, m_max + 1), order="F")    # and their M products (reused by the solves)
+    alpha = np.zeros(m_max)
+    beta = np.zeros(m_max)
+    tmp = np.empty(n)
+    axpy = sla.blas.daxpy
+
+    q = solve(M @ np.random.default_rng(seed).standard_normal(n))
+    Mq = M @ q
+    nrm = float(np.sqrt(max(q @ Mq, 0.0)))
+    if not nrm > 0.0:
+        return None
+    Q[:, 0], MQ[:, 0] = q / nrm, Mq / nrm
+    check = min(count + 8, m_max)               # first convergence test
+    for j in range(m_max):
+        w = solve(MQ[:, j])
+        # three-term recurrence, then one full reorthogonalisation pass against Q[:, :j+1]
+        # in the M inner product to remove what round-off left.  In place through BLAS:
+        # a temporary of n doubles costs more in fresh pages than the arithmetic on it.
+        if j:
+            axpy(Q[:, j - 1], w, a=-beta[j - 1])
+        a = float(MQ[:, j] @ w)
+        axpy(Q[:, j], w, a=-a)
+        h = MQ[:, : j + 1].T @ w
+        w -= np.matmul(Q[:, : j + 1], h, out=tmp)
+        Mw = M @ w
+        b2 = float(w @ Mw)
+        if b2 < 0.5 * (float(h @ h) + b2):      # more than half cancelled: once more (DGKS)
+            h2 = MQ[:, : j + 1].T @ w
+            w -= np.matmul(Q[:, : j + 1], h2, out=tmp)
+            h += h2
+            Mw = M @ w
+            b2 = float(w @ Mw)
+        alpha[j] = a + h[j]
+        b = float(np.sqrt(max(b2, 0.0)))
+        beta[j] = b
+        steps = j + 1
+        breakdown = not b > 1e-14 * max(abs(alpha[j]), 1e-300)
+        if steps >= check or breakdown or steps == m_max:
+            if steps >= count:
+                mu, S = sla.eigh_tridiagonal(alpha[:steps], beta[: steps - 1])
+                mu, S = mu[::-1][:count], S[:, ::-1][:, :count]
+                bound = np.abs(b * S[-1]) if not breakdown else np.zeros(count)
+                if np.all(mu > 0) and np.all(bound <= tol * np.abs(mu)):
+                    V = Q[:, :steps] @ S
+                    lam = sigma + 1.0 / mu
+                    log.debug("Lanczos: %d pairs converged in %d steps", count, steps)
+                    return lam, V
+            if breakdown:
+                log.debug("Lanczos: invariant subspace of dimension %d < %d", steps, count)
+                return None
+            check = steps + 2
+        np.multiply(w, 1.0 / b, out=Q[:, j + 1])
+        np.multiply(Mw, 1.0 / b, out=MQ[:, j + 1])
+    log.debug("Lanczos: %d pairs not converged in %d steps", count, m_max)
+    return None
