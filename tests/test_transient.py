@@ -284,6 +284,50 @@ def test_cli_transient_json_plot_and_errors(tmp_path, capsys):
     assert err.startswith("trussfe: error: dt:") and "\n" not in err
 
 
+def test_cli_transient_vtk_series(tmp_path, capsys):
+    """``--vtk``: a .pvd of .vtu steps (every K-th and the last) whose arrays, read back by
+    meshio and by VTK's own reader, equal the JSON histories (CONTRACT.md §4)."""
+    import json
+
+    import meshio
+    import pyvista as pv
+
+    from trussfe._resources import mesh_path
+    from trussfe.cli import main
+    from trussfe.io.vtk import read_pvd
+
+    model = str(mesh_path("triangular_truss_motion_active.toml"))
+    out, vtk = tmp_path / "t.json", tmp_path / "vtk"
+    assert main(["transient", model, "--motion", "triangular_truss_motion_3s.toml",
+                 "--dt", "0.02", "--json", str(out), "--vtk", str(vtk),
+                 "--vtk-every", "10"]) == 0
+    doc = json.loads(out.read_text())
+    n = len(doc["time"])
+    entries = read_pvd(vtk / "triangular_truss_motion_active.pvd")
+    steps = sorted(set(range(0, n, 10)) | {n - 1})
+    assert [t for t, _ in entries] == pytest.approx([doc["time"][k] for k in steps])
+    ids = list(doc["members"])
+    nodes = list(doc["nodes"])
+    for (t, path), k in zip(entries, steps):
+        m = meshio.read(path)
+        for name, key in (("axial_force", "axial_force"),
+                          ("axial_force_rigid", "axial_force_rigid"),
+                          ("moment", "moment")):
+            np.testing.assert_allclose(m.cell_data[name][0],
+                                       [doc["members"][i][key][k] for i in ids], rtol=1e-12)
+        d = np.array([doc["nodes"][i]["displacement"][k] for i in nodes])
+        np.testing.assert_allclose(m.point_data["displacement"][:, : d.shape[1]], d,
+                                   rtol=1e-12, atol=1e-300)
+    grid = pv.read(entries[-1][1])
+    assert "axial_stress" in grid.cell_data and "displacement_quasi_static" in grid.point_data
+    capsys.readouterr()
+    assert main(["transient", model, "--motion", "triangular_truss_motion_3s.toml",
+                 "--vtk", str(tmp_path / "v2"), "--vtk-every", "0"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("trussfe: error: --vtk-every:") and "\n" not in err
+    assert not (tmp_path / "v2").exists()
+
+
 def test_double_octahedron_quasi_static_equals_rigid_body():
     """3-D (both bending planes, sparse path): the quasi-static FE axial forces and midpoint
     moments of the slewing double-octahedral bay equal the rigid-body ones (Lacy eqs. 4.20,

@@ -6,6 +6,8 @@ import argparse
 import logging
 from pathlib import Path
 
+import numpy as np
+
 from .. import rigid as _rigid  # noqa: F401  (registers [active_members])
 from ..errors import InputError
 from ..io.model_file import read_model
@@ -34,6 +36,9 @@ def register(subparsers) -> None:
                    help="Rayleigh damping C = ALPHA M + BETA K")
     p.add_argument("--json", metavar="OUT", help="write the results as JSON")
     p.add_argument("--plot", metavar="PNG", help="axial-force histories of every member")
+    p.add_argument("--vtk", metavar="DIR", help="write a .pvd time series for ParaView")
+    p.add_argument("--vtk-every", type=int, default=1, metavar="K",
+                   help="write every K-th time step to the VTK series (default 1: all)")
     p.set_defaults(func=_run)
 
 
@@ -87,6 +92,35 @@ def analyse(model_path, **options) -> dict:
     return to_json(_transient(model_path, **options))
 
 
+def write_vtk(directory, res, stem: str = "transient", every: int = 1) -> Path:
+    """The response as a time series at the positions of the rigid motion (CONTRACT.md §4).
+
+    ``stem.pvd``: point data ``displacement`` (elastic, dynamic) and
+    ``displacement_quasi_static``; cell data ``axial_force``, ``axial_stress`` (N/A),
+    ``axial_force_quasi_static``, ``axial_force_rigid`` (member midpoint, N), ``moment``,
+    ``moment_quasi_static``, ``moment_rigid`` (midpoint bending-moment magnitude, N·m).
+    Every ``every``-th step is written, and always the last one.
+    """
+    from ..io.vtk import write_series
+
+    if isinstance(every, bool) or int(every) != every or every < 1:
+        raise InputError("--vtk-every", f"must be a positive integer, got {every!r}")
+    s = res.structure
+    steps = np.unique(np.r_[np.arange(0, res.time.size, int(every)), res.time.size - 1])
+    area = s.area
+    frames = ({"time": float(res.time[k]), "coords": res.coords[k],
+               "point_data": {"displacement": res.displacement[k],
+                              "displacement_quasi_static": res.displacement_qs[k]},
+               "cell_data": {"axial_force": res.axial_force[k],
+                             "axial_stress": res.axial_force[k] / area,
+                             "axial_force_quasi_static": res.axial_force_qs[k],
+                             "axial_force_rigid": res.axial_force_rigid[k],
+                             "moment": res.moment[k], "moment_quasi_static": res.moment_qs[k],
+                             "moment_rigid": res.moment_rigid[k]}}
+              for k in steps)
+    return write_series(directory, s, frames, stem)
+
+
 def _plot(path, res) -> None:
     import matplotlib
     matplotlib.use("Agg")
@@ -109,12 +143,16 @@ def _plot(path, res) -> None:
 
 
 def _run(args: argparse.Namespace) -> int:
+    if args.vtk_every < 1:          # before a long analysis, not after it
+        raise InputError("--vtk-every", f"must be a positive integer, got {args.vtk_every}")
     res = _transient(args.model, args.motion, args.steps, args.dt, args.t_end, args.bar_model,
                      args.subdivisions, args.update, args.damping)
     if args.json:
         write_json(args.json, to_json(res))
     if args.plot:
         _plot(args.plot, res)
+    if args.vtk:
+        write_vtk(args.vtk, res, stem=Path(args.model).stem, every=args.vtk_every)
     dep = res.departure()
     worst = max(dep, key=lambda k: dep[k]["relative"])
     print(f"{res.structure.name}: {res.time.size} steps of {res.dt:.3g} s; f1 = "

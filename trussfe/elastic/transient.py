@@ -122,6 +122,9 @@ class TransientResult:
     frequencies_hz : ndarray
         Lowest natural frequencies in the initial geometry.
     options : dict
+    coords : ndarray, shape (nt, n, dim), optional
+        Node positions of the rigid-body motion, about which the elastic displacements are
+        measured.
     """
 
     time: np.ndarray
@@ -139,6 +142,7 @@ class TransientResult:
     energy: dict
     frequencies_hz: np.ndarray
     options: dict = field(default_factory=dict)
+    coords: np.ndarray | None = None
 
     @property
     def dt(self) -> float:
@@ -537,7 +541,8 @@ def transient_response(structure: Structure, motion: Motion, *, bar_model: str =
         frequencies_hz=freqs,
         options={"bar_model": bar_model, "subdivisions": single.subdivisions, "dt": dt,
                  "update": update, "damping": (alpha, beta), "mass": mass,
-                 "integrator": "Newmark average acceleration", "steps": nt})
+                 "integrator": "Newmark average acceleration", "steps": nt},
+        coords=kin.coords)
 
 
 def _node_disp(fe: FEModel, U: np.ndarray) -> np.ndarray:
