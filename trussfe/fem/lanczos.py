@@ -28,8 +28,9 @@ import scipy.sparse as sp
 log = logging.getLogger(__name__)
 
 #: Relative residual bound ``|β_m s_mi| ≤ tol |μ_i|`` at which a Ritz pair is converged.
-#: The eigenvalue error is of the order of the square of the residual over the gap.
-LANCZOS_TOL = 1e-12
+#: The eigenvalue error is of the order of the square of the residual over the gap: on a
+#: 87k-DOF space grid 1e-10 and 1e-12 give eigenvalues equal to 6e-14 (27 against 37 solves).
+LANCZOS_TOL = 1e-10
 
 
 def shift_invert_lanczos(solve: Callable[[np.ndarray], np.ndarray], M: sp.spmatrix,
