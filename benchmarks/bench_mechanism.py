@@ -13,6 +13,9 @@ import time
 import numpy as np
 
 from trussfe.kinematics import rank_analysis, trace_mechanism
+from trussfe.allocator import tune_allocator
+
+tune_allocator()   # numpy temporaries reuse heap pages, as in the trussfe command
 
 
 def spatial_mechanism(n_joints: int, seed: int = 0):

@@ -156,7 +156,7 @@ def main(argv=None) -> None:
     ap.add_argument("--modes", type=int, default=10)
     ap.add_argument("--no-opensees", action="store_true")
     a = ap.parse_args(argv)
-    tuned = tune_allocator()    # as the trussfe command does (trussfe/allocator.py)
+    tuned = tune_allocator()
     rows = []
     cases = [(f"chain {b}", lambda b=b: octahedral_chain(b)) for b in a.bays]
     if a.grid:

@@ -20,6 +20,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from trussfe.io.model_file import read_model  # noqa: E402
 from trussfe.io.model_writer import write_model  # noqa: E402
 from trussfe.models import double_octahedral_chain  # noqa: E402
+from trussfe.allocator import tune_allocator  # noqa: E402
+
+tune_allocator()   # numpy temporaries reuse heap pages, as in the trussfe command
 
 
 def _best(fn, repeat: int) -> float:

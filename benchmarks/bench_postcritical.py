@@ -24,6 +24,9 @@ from trussfe.io.model_file import read_model
 from trussfe.nonlinear import NonlinearModel, follow_path
 from trussfe.nonlinear.reproductions import double_layer_grid
 from trussfe.nonlinear.solvers import factorize
+from trussfe.allocator import tune_allocator
+
+tune_allocator()   # numpy temporaries reuse heap pages, as in the trussfe command
 
 
 def von_mises(steps: int = 200):

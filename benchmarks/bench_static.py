@@ -37,6 +37,9 @@ from trussfe import read_model  # noqa: E402
 from trussfe.fem import discretise  # noqa: E402
 from trussfe.fem.static import solve_static  # noqa: E402
 from trussfe.models import double_octahedral_chain  # noqa: E402
+from trussfe.allocator import tune_allocator  # noqa: E402
+
+tune_allocator()   # numpy temporaries reuse heap pages, as in the trussfe command
 
 
 def write_as_mesh_model(structure, folder: Path) -> Path:

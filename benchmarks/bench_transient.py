@@ -12,6 +12,9 @@ import argparse
 import time
 
 from trussfe.elastic.transient_studies import triangle_slew
+from trussfe.allocator import tune_allocator
+
+tune_allocator()   # numpy temporaries reuse heap pages, as in the trussfe command
 
 
 def run(cases) -> list[tuple]:

@@ -35,6 +35,7 @@ import numpy as np
 from ..errors import AnalysisError
 from ..kinematics.assembly import solve_positions
 from ..model.structure import Structure
+from ..threads import parallel_map, worker_count
 from .linalg import ANCHOR_SPACING, CompatSolver, SingularStep, cross, norm
 from .motion import Motion
 
@@ -195,7 +196,32 @@ def _sequential_positions(structure, motion, L, x0, steps, progress) -> np.ndarr
     return out
 
 
+#: Steps per chunk below which the batched Newton iteration is not split between threads.
+PARALLEL_NEWTON_MIN_STEPS = 200
+
+
 def _batched_newton(structure, pattern, L, X, tolerance=1e-12, iterations=30):
+    """Chord Newton on every step at once (:func:`_batched_newton_chunk`), the steps split
+    into contiguous chunks between worker threads for long motions (the steps are
+    independent given their guesses)."""
+    nt = X.shape[0]
+    chunks = min(worker_count(), nt // PARALLEL_NEWTON_MIN_STEPS)
+    if chunks < 2:
+        return _batched_newton_chunk(structure, pattern, L, X, tolerance, iterations)
+    # cut at multiples of the anchor spacing, so the chord Jacobians are those of the
+    # whole-motion iteration (and the last step of each chunk); one tolerance scale for all
+    cuts = np.unique(np.r_[(np.linspace(0, nt, chunks + 1) // ANCHOR_SPACING).astype(int)
+                           * ANCHOR_SPACING, nt])
+    scale = float(L.max())
+    parts = parallel_map(lambda ab: _batched_newton_chunk(
+        structure, pattern, L[ab[0]:ab[1]], X[ab[0]:ab[1]], tolerance, iterations, scale),
+        list(zip(cuts[:-1], cuts[1:])))
+    return (np.concatenate([p[0] for p in parts], axis=0),
+            np.concatenate([p[1] for p in parts], axis=0))
+
+
+def _batched_newton_chunk(structure, pattern, L, X, tolerance=1e-12, iterations=30,
+                          scale=None):
     """Chord (modified) Newton on the bar-length equations of every step at once.
 
     The Jacobian (the compatibility matrix) is factorised once at the interpolated guess and
@@ -208,7 +234,7 @@ def _batched_newton(structure, pattern, L, X, tolerance=1e-12, iterations=30):
     X = X.copy()
     X0 = X.copy()
     nt = X.shape[0]
-    scale = float(L.max())
+    scale = float(L.max()) if scale is None else scale
     Lk = L[:, pattern.loaded_idx]
     flat = X.reshape(nt, -1)
     d = X[:, conn[:, 1]] - X[:, conn[:, 0]]

@@ -26,6 +26,8 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 from scipy.sparse.csgraph import connected_components, maximum_bipartite_matching
 
+from ..threads import parallel_map, worker_count
+
 #: Largest system solved as a dense stack.
 DENSE_LIMIT = 36
 #: Steps per anchor factorisation of large systems (:class:`CompatSolver`).
@@ -280,6 +282,24 @@ def block_triangular_form(rows: np.ndarray, cols: np.ndarray, n: int
     return out
 
 
+#: Steps per thread below which a block substitution is not split between threads.
+PARALLEL_SOLVE_MIN_STEPS = 100
+#: Stacks of at least this many small matrices are inverted in worker threads.
+PARALLEL_INVERSE_MIN = 20_000
+
+
+def _stacked_inverse(D: np.ndarray) -> np.ndarray:
+    """``numpy.linalg.inv`` of a stack (blocks, steps, n, n), split over the steps between
+    worker threads when large (LAPACK releases the GIL; results bit-identical)."""
+    nt = D.shape[1]
+    workers = worker_count()
+    if workers < 2 or D.shape[0] * nt < PARALLEL_INVERSE_MIN or nt < 2:
+        return np.linalg.inv(D)
+    cuts = np.linspace(0, nt, min(workers, nt) + 1).astype(int)
+    parts = parallel_map(np.linalg.inv, [D[:, a:b] for a, b in zip(cuts[:-1], cuts[1:])])
+    return np.concatenate(parts, axis=1)
+
+
 def _rcond(A: np.ndarray, inv: np.ndarray) -> np.ndarray:
     """Reciprocal condition numbers from Frobenius norms of a stack and its inverses."""
     with np.errstate(over="ignore", invalid="ignore"):
@@ -310,7 +330,7 @@ class _BlockInverses:
                 D[g][:, r * size + c] = vals[:, e]
             D = D.reshape(ids.size, nt, size, size)
             try:
-                inv = np.linalg.inv(D)
+                inv = _stacked_inverse(D)
             except np.linalg.LinAlgError:
                 lam = np.linalg.eigvalsh(np.einsum("btji,btjk->btik", D, D))
                 rc = np.sqrt(np.clip(lam[..., 0], 0.0, None) / np.maximum(lam[..., -1], 1e-300))
@@ -495,7 +515,16 @@ class CompatSolver:
             sub = "tji,tj...->ti..." if transpose else "tij,tj...->ti..."
             return np.einsum(sub, self.inverse if steps is None else self.inverse[steps], rhs)
         if self.block_inverses is not None:
-            return self.block_inverses.solve(np.asarray(rhs, dtype=float), transpose, steps)
+            rhs = np.asarray(rhs, dtype=float)
+            workers = min(worker_count(), self.nt // PARALLEL_SOLVE_MIN_STEPS)
+            if steps is not None or workers < 2 or rhs.shape[0] != self.nt:
+                return self.block_inverses.solve(rhs, transpose, steps)
+            # independent steps: contiguous chunks of them in worker threads
+            cuts = np.linspace(0, self.nt, workers + 1).astype(int)
+            parts = parallel_map(
+                lambda ab: self.subset(ab[0], ab[1]).block_inverses.solve(
+                    rhs[ab[0]:ab[1]], transpose, None), list(zip(cuts[:-1], cuts[1:])))
+            return np.concatenate(parts, axis=0)
         if self.n == 0:
             return np.zeros_like(rhs, dtype=float)
         if steps is not None:
