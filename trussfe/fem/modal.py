@@ -47,11 +47,12 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 from scipy.sparse.csgraph import reverse_cuthill_mckee
-from threadpoolctl import threadpool_limits
+from threadpoolctl import ThreadpoolController
 
 from ..errors import AnalysisError, InputError
 from ..model.structure import Structure
 from .discretisation import FEModel, discretise
+from ..threads import parallel_map
 from .lanczos import shift_invert_lanczos
 from .linsolve import SingularMatrixError, factorize
 from .solver import free_submatrix, null_space
@@ -80,6 +81,18 @@ NATURAL_BANDWIDTH_OK = 32
 #: ratio is ~5e-14 for a 10,000-bay chain and ~3e-13 for 100,000 bays (measured); SuperLU's
 #: threshold, 1e-11 (:data:`trussfe.fem.linsolve.SINGULAR_PIVOT`), would refuse both.
 BANDED_LU_PIVOT = 1e-15
+
+
+_CONTROLLER: ThreadpoolController | None = None
+
+
+def _one_blas_thread():
+    """Context: BLAS on one thread.  The controller is made once — building one scans the
+    loaded libraries, ~3 ms, which a Lanczos iteration would pay at every solve."""
+    global _CONTROLLER
+    if _CONTROLLER is None:
+        _CONTROLLER = ThreadpoolController()
+    return _CONTROLLER.limit(limits=1, user_api="blas")
 
 
 def _band_layout(A: sp.spmatrix, max_bandwidth: int, anchored: np.ndarray | None = None):
@@ -167,7 +180,7 @@ class BandedCholesky:
         ab[bw + row[upper] - col[upper], col[upper]] = data[upper]
         try:
             # pbtrf works on tiny blocks: BLAS threads only add overhead (3-7x slower)
-            with threadpool_limits(limits=1, user_api="blas"):
+            with _one_blas_thread():
                 c = sla.cholesky_banded(ab, lower=False, overwrite_ab=True, check_finite=False)
         except np.linalg.LinAlgError:          # not positive definite (singular K)
             return None
@@ -178,7 +191,7 @@ class BandedCholesky:
 
     def solve(self, b: np.ndarray) -> np.ndarray:
         """Solve A x = b."""
-        with threadpool_limits(limits=1, user_api="blas"):
+        with _one_blas_thread():
             x = sla.cho_solve_banded((self.factor, False), np.asarray(b)[self.perm],
                                      check_finite=False)
         return x[self.inverse]
@@ -221,7 +234,7 @@ class BandedLU:
         perm, bw, row, col, data = layout
         ab = np.zeros((3 * bw + 1, perm.size))              # gbtrf storage, kl = ku = bw
         ab[2 * bw + row - col, col] = data
-        with threadpool_limits(limits=1, user_api="blas"):
+        with _one_blas_thread():
             lub, piv, info = sla.lapack.dgbtrf(ab, bw, bw, overwrite_ab=True)
         if info != 0:                                      # an exactly zero pivot
             return None
@@ -233,7 +246,7 @@ class BandedLU:
     def solve(self, b: np.ndarray) -> np.ndarray:
         """Solve A x = b."""
         bw = self.bandwidth
-        with threadpool_limits(limits=1, user_api="blas"):
+        with _one_blas_thread():
             x, info = sla.lapack.dgbtrs(self.lub, bw, bw, np.asarray(b, dtype=float)[self.perm],
                                         self.piv)
         return x[self.inverse]
@@ -560,14 +573,13 @@ def solve_modes(structure: Structure, count: int = 6, mass: str = "consistent",
     count = int(count)
     if fe is None:
         fe = discretise(structure, bar_model=bar_model, subdivisions=subdivisions)
-    K = fe.stiffness()
-    M = mass_matrix(fe, mass, include_nodal_masses=include_nodal_masses)
     free = fe.free
     n = free.size
     if n == 0:
         raise AnalysisError(item, "every DOF is supported: there is nothing to vibrate")
-    Kff = free_submatrix(K, free)
-    Mff = free_submatrix(M, free)
+    # K_ff and M_ff are independent: assembled in two worker threads (trussfe.threads)
+    Kff, Mff = parallel_map(lambda build: free_submatrix(build(), free), [
+        fe.stiffness, lambda: mass_matrix(fe, mass, include_nodal_masses=include_nodal_masses)])
     n_mass = int(np.count_nonzero(Mff.diagonal() > 0))
     if n_mass == 0:
         raise AnalysisError(item, "the structure has no mass: give members a density or "
