@@ -15,8 +15,9 @@ import argparse
 import os
 import time
 
-# One BLAS thread: the stacked small solves gain nothing from threads, and on a shared
-# machine oversubscribed BLAS threads slow them down twentyfold (measured).
+# One BLAS thread: the stacked small solves gain nothing from BLAS threads, and on a shared
+# machine oversubscribed BLAS threads slow them down twentyfold (measured).  trussfe's own
+# worker threads (trussfe.threads) take independent blocks of steps instead.
 for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_var, "1")
 
@@ -26,6 +27,7 @@ from trussfe.rigid.motion import third_order_motion  # noqa: E402
 from trussfe.rigid.reproductions import double_octahedral_chain, double_octahedron  # noqa: E402
 from trussfe.rigid.simulate import simulate  # noqa: E402
 from trussfe.allocator import tune_allocator  # noqa: E402
+from trussfe.threads import worker_count  # noqa: E402
 
 tune_allocator()   # numpy temporaries reuse heap pages, as in the trussfe command
 
@@ -60,6 +62,8 @@ def dense_117_per_step(structure, result, nt_total: int) -> float:
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="smaller runs (smoke test)")
+    ap.add_argument("--repeat", type=int, default=1,
+                    help="runs of the chain case; the best is shown (default 1)")
     args = ap.parse_args()
     rows = []
 
@@ -80,7 +84,7 @@ def main() -> None:
     L1 = L0.copy()
     L1[0::3] += 0.02 * (-1.0) ** np.arange(bays)
     mc = third_order_motion(c, L0, L1, 2.0, nt2)
-    tc, _ = _best(lambda: simulate(c, mc, n_sections=1), 1)
+    tc, _ = _best(lambda: simulate(c, mc, n_sections=1), max(1, args.repeat))
     # One 117 × 117 solve per bay and step (the bay-by-bay cost of Lacy's formulation).
     refc = ref / nt * nt2 * bays
     rows.append((f"{bays}-bay chain", c.n_members, nt2, *tc, 10.0, refc))
@@ -91,6 +95,8 @@ def main() -> None:
     for name, mm, n, tt, cpu, target, r in rows:
         print(f"{name:26s} {mm:8d} {n:7d} {tt:8.3f} {cpu:8.3f} {target:9.1f} "
               f"{1e6 * tt / (n * mm):17.3f} {r:17.3f} {r / tt:9.1f}")
+    print(f"worker threads: {worker_count()} (TRUSSFE_THREADS); wall and cpu: best of 3 runs "
+          f"(slew) and of {max(1, args.repeat)} (chain)")
     print("dense-117 loop: one np.linalg.solve of Lacy's 117 x 117 system (eq. 4.20) per step, "
           "assembly excluded; for the chain, one per bay and step.")
 
