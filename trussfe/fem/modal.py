@@ -626,8 +626,9 @@ def solve_modes(structure: Structure, count: int = 6, mass: str = "consistent",
                             "extremely slender structure or a near-mechanism), so its lowest "
                             "frequencies cannot be resolved; shorten the model or add supports")
     # eigen-residuals (rigid modes: 0) — see Notes
-    R = Kff @ V - (Mff @ V) * lam
-    denom = lam * np.linalg.norm(Mff @ V, axis=0)
+    MV = Mff @ V
+    R = Kff @ V - MV * lam
+    denom = lam * np.linalg.norm(MV, axis=0)
     residuals = np.zeros(count)
     el = np.arange(count) >= nz
     residuals[el] = np.linalg.norm(R[:, el], axis=0) / np.where(denom[el] > 0, denom[el], np.inf)
