@@ -61,6 +61,34 @@ def test_massless_dofs_have_no_effect():
     np.testing.assert_allclose(lam, ref, rtol=1e-10)
 
 
+def _four_chains(n: int = 500):
+    """Four identical, uncoupled fixed–free spring chains: every eigenvalue is quadruple."""
+    K = sp.block_diag([spring_chain(n)] * 4, format="csc")
+    k = np.arange(1, 4)
+    exact = np.repeat(4.0 * np.sin((2 * k - 1) * np.pi / (2 * (2 * n + 1))) ** 2, 4)
+    return K, sp.identity(4 * n, format="csr"), exact
+
+
+def test_missed_copy_of_multiple_eigenvalue_falls_back():
+    """Quadruple eigenvalues, 12 pairs: the single-vector iteration converges with only three
+    copies of the third eigenvalue; the check on the complement flags it (None), and
+    generalized_eigen then gets all twelve from ARPACK (closed form, as above)."""
+    K, M, exact = _four_chains()
+    lu = spla.splu(K)
+    assert shift_invert_lanczos(lu.solve, M, 12) is None
+    lam, _ = modal.generalized_eigen(K, M, 12, factor=lu)
+    np.testing.assert_allclose(lam, exact, rtol=1e-10)
+
+
+def test_multiple_eigenvalue_cut_by_count_is_accepted():
+    """10 of the quadruple eigenvalues: the cut falls inside the third quadruplet, the copies
+    left out equal the last one returned, so the pairs are accepted as they are."""
+    K, M, exact = _four_chains()
+    lam, V = shift_invert_lanczos(spla.splu(K).solve, M, 10)
+    np.testing.assert_allclose(lam, exact[:10], rtol=1e-10)
+    np.testing.assert_allclose(V.T @ V, np.eye(10), atol=1e-10)
+
+
 def test_not_converged_returns_none():
     """A Krylov space too small for the wanted pairs gives None (the caller falls back)."""
     n = 500

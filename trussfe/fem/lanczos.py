@@ -68,9 +68,10 @@ def shift_invert_lanczos(solve: Callable[[np.ndarray], np.ndarray], M: sp.spmatr
     The starting vector is ``(K − σM)⁻¹ M r`` of a random ``r``, which removes components
     along massless DOFs (infinite λ).  Each new vector is orthogonalised against all the
     previous ones in the ``M`` inner product after the three-term recurrence (classical
-    Gram–Schmidt, repeated once when
-    more than half of what the three-term recurrence left cancels — Daniel, Gragg, Kaufman &
-    Stewart's criterion).
+    Gram–Schmidt, repeated once when more than half of what the three-term recurrence left cancels — Daniel, Gragg, Kaufman &
+    Stewart's criterion).  Converged pairs are accepted only when a short Lanczos run on the
+    complement of their span finds no eigenvalue above the smallest accepted one
+    (:func:`_missed_copy`: copies of multiple eigenvalues).
 
     Examples
     --------
@@ -133,6 +134,9 @@ def shift_invert_lanczos(solve: Callable[[np.ndarray], np.ndarray], M: sp.spmatr
                 bound = np.abs(b * S[-1]) if not breakdown else np.zeros(count)
                 if np.all(mu > 0) and np.all(bound <= tol * np.abs(mu)):
                     V = Q[:, :steps] @ S
+                    if _missed_copy(solve, M, V, float(mu[-1]), seed + 1):
+                        log.debug("Lanczos: a copy of a multiple eigenvalue was missed")
+                        return None
                     lam = sigma + 1.0 / mu
                     log.debug("Lanczos: %d pairs converged in %d steps", count, steps)
                     return lam, V
@@ -144,3 +148,59 @@ def shift_invert_lanczos(solve: Callable[[np.ndarray], np.ndarray], M: sp.spmatr
         np.multiply(Mw, 1.0 / b, out=MQ[:, j + 1])
     log.debug("Lanczos: %d pairs not converged in %d steps", count, m_max)
     return None
+
+
+#: Lanczos steps of the check for missed copies of multiple eigenvalues.
+CHECK_STEPS = 6
+
+
+def _missed_copy(solve, M, V: np.ndarray, mu_min: float, seed: int) -> bool:
+    """Whether the operator has an eigenvalue ``μ > μ_min`` outside the span of ``V``.
+
+    A single-vector Lanczos iteration sees one direction of each eigenspace: the other copies
+    of a multiple eigenvalue (exact symmetries of a structure) enter only through round-off
+    and may not have grown when the wanted pairs converge — four identical uncoupled spring
+    chains, 12 pairs: the fourth copy of the third eigenvalue is replaced by the fourth
+    eigenvalue.  A short Lanczos run from a new random vector on the M-orthogonal complement
+    of the converged vectors finds such a copy as its largest Ritz value (it is the largest
+    eigenvalue there, and Ritz values approach it from below); a value above ``μ_min`` by more
+    than 1e-9 flags one.  A copy equal to ``μ_min`` (a multiple eigenvalue cut by ``count``)
+    changes no eigenvalue and is not flagged.
+    """
+    n, k = V.shape
+    steps = min(CHECK_STEPS, n - k)
+    if steps < 1:
+        return False
+    MV = M @ V
+
+    def deflate(x):
+        # V spans eigenvectors to the solver's tolerance: one pass per step keeps the
+        # iteration in their complement (the start vector gets two)
+        x -= V @ (MV.T @ x)
+        return x
+
+    q = deflate(deflate(solve(M @ np.random.default_rng(seed).standard_normal(n))))
+    Q = np.empty((n, steps + 1), order="F")
+    MQ = np.empty((n, steps + 1), order="F")
+    Mq = M @ q
+    nrm = float(np.sqrt(max(q @ Mq, 0.0)))
+    if not nrm > 0.0:
+        return False
+    Q[:, 0], MQ[:, 0] = q / nrm, Mq / nrm
+    alpha, beta = np.zeros(steps), np.zeros(steps)
+    for j in range(steps):
+        w = deflate(solve(MQ[:, j]))
+        h = MQ[:, : j + 1].T @ w                 # full reorthogonalisation, one pass
+        w -= Q[:, : j + 1] @ h
+        alpha[j] = h[j]
+        Mw = M @ w
+        b = float(np.sqrt(max(float(w @ Mw), 0.0)))
+        theta = sla.eigvalsh_tridiagonal(alpha[: j + 1], beta[:j]).max()
+        if theta > mu_min * (1.0 + 1e-9):
+            return True
+        if not b > 1e-14 * abs(alpha[j]):
+            return False
+        beta[j] = b
+        np.multiply(w, 1.0 / b, out=Q[:, j + 1])
+        np.multiply(Mw, 1.0 / b, out=MQ[:, j + 1])
+    return False
