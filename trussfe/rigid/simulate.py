@@ -146,6 +146,12 @@ def simulate(structure: Structure, motion: Motion | None = None, *, scheme: str 
     Returns
     -------
     SimulationResult
+
+    Notes
+    -----
+    Long motions are evaluated in blocks of steps (``CHUNK_ENTRIES`` members × steps each),
+    which worker threads take in parallel (:mod:`trussfe.threads`, ``TRUSSFE_THREADS``);
+    the results do not depend on the number of threads.
     """
     if n_sections < 1 or int(n_sections) != n_sections:
         raise InputError("sections", f"need a positive integer number of sections (1 = the "
