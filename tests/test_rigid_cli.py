@@ -223,3 +223,17 @@ def test_batched_positions_dense_and_sparse_agree(monkeypatch):
     assert_allclose(b.kinematics.coords, a.kinematics.coords, rtol=0, atol=1e-11)
     assert_allclose(b.forces.end_force, a.forces.end_force, rtol=0,
                     atol=1e-10 * np.abs(a.forces.end_force).max())
+
+
+@pytest.mark.parametrize("threads", ["1", "2"])
+def test_singular_position_in_a_later_block_names_its_step(monkeypatch, threads):
+    """A long motion evaluated in blocks of 10 steps (serially or in worker threads): the
+    flat triangle at the last of 40 steps is reported as step 39 of the whole motion."""
+    import trussfe.rigid.simulate as sim
+    monkeypatch.setattr(sim, "CHUNK_ENTRIES", 3 * 10)
+    monkeypatch.setenv("TRUSSFE_THREADS", threads)
+    s = triangular_truss()
+    L = np.linspace(3.5, 4.0, 40)[:, None]
+    m = Motion(np.linspace(0.0, 1.0, 40), [1], L, np.ones_like(L), np.zeros_like(L))
+    with pytest.raises(AnalysisError, match=r"step 39 \(t = 1 s\).*singular"):
+        simulate(s, m)

@@ -103,7 +103,7 @@ def pad3(x: np.ndarray) -> np.ndarray:
 
 
 def _step_item(motion: Motion, k: int) -> str:
-    return f"motion: step {k} (t = {motion.time[k]:.6g} s)"
+    return f"motion: step {motion.first_step + k} (t = {motion.time[k]:.6g} s)"
 
 
 def _member_lengths(structure: Structure, motion: Motion) -> np.ndarray:

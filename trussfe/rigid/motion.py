@@ -46,6 +46,9 @@ class Motion:
         Member length (m), its rate (m/s) and second rate (m/s²).
     source : str
         Where the motion came from (file name or description), for messages.
+    first_step : int
+        Index of the first sample in the whole motion when this is a block of it, so that
+        messages name the step of the whole motion.
     """
 
     time: np.ndarray
@@ -54,6 +57,7 @@ class Motion:
     velocity: np.ndarray
     acceleration: np.ndarray
     source: str = ""
+    first_step: int = 0
 
     def __post_init__(self) -> None:
         self.time = np.asarray(self.time, dtype=float).reshape(-1)

@@ -299,7 +299,8 @@ def _slice_kinematics(kin: Kinematics, k0: int, k1: int) -> Kinematics:
 def _slice_motion(motion: Motion, k0: int, k1: int) -> Motion:
     return Motion(time=motion.time[k0:k1], members=motion.members,
                   length=motion.length[k0:k1], velocity=motion.velocity[k0:k1],
-                  acceleration=motion.acceleration[k0:k1], source=motion.source)
+                  acceleration=motion.acceleration[k0:k1], source=motion.source,
+                  first_step=motion.first_step + k0)
 
 
 def _concat(items: list):
