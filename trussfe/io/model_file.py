@@ -9,13 +9,13 @@ from __future__ import annotations
 
 import difflib
 import math
-import tomllib
 from pathlib import Path
 from typing import Any, Callable
 
 import numpy as np
 
 from ..errors import InputError, TrussfeError
+from . import toml_text
 from ..model.sections import Material, Section
 from ..model.structure import DOF_NAMES, Structure
 
@@ -215,7 +215,7 @@ def parse_model(data: dict, base_dir: Path | str = ".", source: str = "") -> Str
     Parameters
     ----------
     data : dict
-        The model file as parsed by :mod:`tomllib`.
+        The model file as parsed (:func:`trussfe.io.toml_text.loads`).
     base_dir : path
         Directory against which a ``[model] mesh`` path is resolved.
     source : str
@@ -503,8 +503,8 @@ def read_model(path: str | Path) -> Structure:
     except (OSError, UnicodeDecodeError) as exc:
         raise InputError(str(path), f"cannot read file: {exc}") from None
     try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
+        data = toml_text.loads(text)
+    except toml_text.TOMLDecodeError as exc:
         raise InputError(str(path), f"malformed TOML: {exc}") from None
     try:
         return parse_model(data, base_dir=path.parent, source=str(path))
