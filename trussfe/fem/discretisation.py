@@ -92,18 +92,21 @@ def local_axes(structure: Structure, coords: np.ndarray | None = None) -> np.nda
            [ 0.,  0.,  1.],
            [ 0., -1.,  0.]])
     """
-    ex = structure.unit_vectors(coords)                      # (member, dim)
+    d = structure.member_vectors(coords)                     # (member, dim)
+    ex = d / np.sqrt(np.einsum("ij,ij->i", d, d))[:, None]
     m, dim = ex.shape
+    R = np.empty((m, dim, dim))
+    R[:, 0] = ex
     if dim == 2:
-        ey = np.stack([-ex[:, 1], ex[:, 0]], axis=1)
-        return np.stack([ex, ey], axis=1)
+        R[:, 1, 0], R[:, 1, 1] = -ex[:, 1], ex[:, 0]
+        return R
     ref = np.array(structure.orientation, dtype=float).reshape(m, 3)
     missing = ~np.all(np.isfinite(ref), axis=1)
     vertical = np.abs(ex[:, 2]) > 1.0 - 1e-9
     ref[missing & ~vertical] = (0.0, 0.0, 1.0)
     ref[missing & vertical] = (1.0, 0.0, 0.0)
-    ey = ref - np.sum(ref * ex, axis=1)[:, None] * ex
-    norm = np.linalg.norm(ey, axis=1)
+    ey = ref - np.einsum("ij,ij->i", ref, ex)[:, None] * ex
+    norm = np.sqrt(np.einsum("ij,ij->i", ey, ey))
     bad = norm < 1e-9
     if np.any(bad):
         i = int(np.flatnonzero(bad)[0])
@@ -111,8 +114,12 @@ def local_axes(structure: Structure, coords: np.ndarray | None = None) -> np.nda
                          "orientation vector is parallel to the member; give a vector "
                          "in the local x-y plane that is not along the member")
     ey /= norm[:, None]
-    ez = np.cross(ex, ey)
-    return np.stack([ex, ey, ez], axis=1)
+    R[:, 1] = ey
+    # ez = ex × ey, component by component into its row (no temporaries of np.cross)
+    R[:, 2, 0] = ex[:, 1] * ey[:, 2] - ex[:, 2] * ey[:, 1]
+    R[:, 2, 1] = ex[:, 2] * ey[:, 0] - ex[:, 0] * ey[:, 2]
+    R[:, 2, 2] = ex[:, 0] * ey[:, 1] - ex[:, 1] * ey[:, 0]
+    return R
 
 
 @dataclass
