@@ -66,7 +66,7 @@ MASS_KINDS = ("consistent", "lumped")
 
 #: Largest relative eigen-residual ‖K φ − ω² M φ‖ / (ω² ‖M φ‖) of a mode taken as resolved.
 #: Chains measured (see :func:`solve_modes`): residual 4e-3 → frequencies right to ~2e-5;
-#: 0.39 → the two equal bending frequencies split by 1.3 %; 116 → f₁ wrong by 35 %.
+#: 0.39 → the two equal bending frequencies split by 1.3 %; 36–116 → f₁ set by round-off.
 RESOLVED_RESIDUAL = 0.1
 
 #: Largest half-bandwidth (after reverse Cuthill–McKee ordering) for which ``K − σM`` is
@@ -550,7 +550,8 @@ def solve_modes(structure: Structure, count: int = 6, mass: str = "consistent",
     mode.  Measured on chains of double-octahedral bays (benchmarks/bench_modal.py): residual
     5e-7 at 100 bays, 4e-3 at 1,000 (frequencies agree with OpenSeesPy to 2e-5 and follow the
     cantilever's f ∝ L⁻² to 1e-4), 0.39 at 3,000 (the two equal bending frequencies split by
-    1.3 %), 116 at 10,000 (f₁ 35 % below the L⁻² extrapolation).
+    1.3 %), 36–116 at 10,000 (f₁ from 35 % below to 2.5 % above the L⁻² extrapolation as the
+    rounding of the member unit vectors changes: f₁ follows round-off).
 
     Examples
     --------
