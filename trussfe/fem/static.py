@@ -114,6 +114,11 @@ def section_forces(fe: FEModel, u: np.ndarray, element_forces: np.ndarray | None
     m = fe.structure.n_members
     k = fe.member_subdivisions
     kmax = int(k.max()) if m else 1
+    if kmax == 1 and fe.n_elements == m:
+        # one element per member, in member order (a truss): the two stations are its ends
+        F = fel.copy()
+        F[:, 0] *= -1.0
+        return fe.element_x.copy(), F
     x = np.full((m, kmax + 1), np.nan)
     F = np.full((m, kmax + 1, 6), np.nan)
     emem = fe.element_member
@@ -200,7 +205,8 @@ def solve_static(structure: Structure, bar_model: str = "truss",
     s = structure
     m = s.n_members
     k = fe.member_subdivisions
-    ends = np.stack([F[:, 0], F[np.arange(m), k]], axis=1)
+    # the two end sections (with one element per member, F holds exactly those)
+    ends = F if F.shape[1] == 2 else np.stack([F[:, 0], F[np.arange(m), k]], axis=1)
     # midpoint axial force: N is linear along a member under uniform distributed load
     N_mid = 0.5 * (ends[:, 0, 0] + ends[:, 1, 0])
     if np.any(fe.is_frame):
