@@ -294,6 +294,7 @@ def _node_block_matrix(n_nodes: int, dim: int, ends: np.ndarray, ref: np.ndarray
         indptr = np.concatenate([K.indptr, np.full(n_dof - K.shape[0], K.indptr[-1])])
         K = sp.csr_matrix((K.data, K.indices, indptr), shape=(n_dof, n_dof))
     K.has_sorted_indices = True
+    K.has_canonical_format = True        # sorted, one entry per position (summed above)
     return K
 
 
@@ -358,8 +359,10 @@ class FEModel:
         n, m = s.n_nodes, s.n_members
         conn = s.connectivity
         L = s.lengths()
-        self.rotation = local_axes(s)
+        self._rotation = None
         is_frame = s.is_beam.copy() if self.bar_model == "truss" else np.ones(m, dtype=bool)
+        if np.any(is_frame) or np.any(np.isfinite(s.orientation)):
+            self.rotation                      # frame axes needed now; bad orientations fail here
         self.is_frame = is_frame
         # released ends: beams as given; pinned-beam bars both ends
         released = np.where(s.is_beam[:, None], s.releases, True) & is_frame[:, None]
@@ -447,6 +450,25 @@ class FEModel:
         self.n_elements = n_el
         log.info("discretised %d members into %d elements, %d DOFs (%s model)",
                  m, n_el, self.n_dof, self.bar_model)
+
+    @property
+    def rotation(self) -> np.ndarray:
+        """Member axes, shape (m, dim, dim), rows = local x, y, (z) (:func:`local_axes`);
+        made on first use (a truss needs only the first row, :attr:`axis`)."""
+        if self._rotation is None:
+            self._rotation = local_axes(self.structure)
+        return self._rotation
+
+    @property
+    def axis(self) -> np.ndarray:
+        """Unit vector of every member from start to end node, shape (m, dim): the first
+        row of :attr:`rotation`, by the same arithmetic."""
+        if self._rotation is not None:
+            return self._rotation[:, 0]
+        if getattr(self, "_axis", None) is None:
+            d = self.structure.member_vectors()
+            self._axis = d / np.sqrt(np.einsum("ij,ij->i", d, d))[:, None]
+        return self._axis
 
     def _check_properties(self, is_frame: np.ndarray) -> None:
         s = self.structure
@@ -697,7 +719,7 @@ class FEModel:
     def _bar_geometry(self, g: _Group) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """Members, end nodes, unit vectors and lengths of the two-node bars of group ``g``."""
         mem = self.element_member[g.elements]
-        return (mem, self.structure.connectivity[mem], self.rotation[mem, 0],
+        return (mem, self.structure.connectivity[mem], self.axis[mem],
                 self.element_length[g.elements])
 
     def _bar_matrix(self, g: _Group, ref: str, scale: np.ndarray, transverse: bool = False,
@@ -729,12 +751,13 @@ class FEModel:
             out = A if out is None else out + A
         return sp.csr_matrix((self.n_dof, self.n_dof)) if out is None else out.tocsr()
 
-    def stiffness(self) -> sp.csr_matrix:
+    def stiffness(self, copy: bool = True) -> sp.csr_matrix:
         """Global elastic stiffness K = Σ Tᵀ K_local T, shape (n_dof, n_dof).
 
         Truss bars (two nodes, axial stiffness only) are assembled as EA/L times the
         scikit-fem reference matrix on ``e eᵀ`` blocks (:func:`reference_bar`); frame members
-        through their exploded local meshes.
+        through their exploded local meshes.  ``copy=False`` may return the matrix the model
+        keeps for later solves: the caller must not modify it.
         """
         s = self.structure
 
@@ -742,7 +765,7 @@ class FEModel:
             if g._K_global is None:     # kept: static recovery and later solves reuse it
                 mem, _, _, L = self._bar_geometry(g)
                 g._K_global = self._bar_matrix(g, "stiffness", (s.E * s.area)[mem] / L)
-            return g._K_global.copy()
+            return g._K_global.copy() if copy or len(self.groups) > 1 else g._K_global
         return self._sum_groups(bar, self.local_stiffness)
 
     def mass(self, kind: str = "consistent", include_nodal_masses: bool = True

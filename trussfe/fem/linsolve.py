@@ -12,10 +12,10 @@ Backends
     perturbed pivots reveal singularity.
 ``banded``
     Banded Cholesky after reverse Cuthill–McKee reordering
-    (:class:`trussfe.fem.modal.BandedCholesky`): the cheapest factorisation of long, narrow
+    (:class:`trussfe.fem.banded.BandedCholesky`): the cheapest factorisation of long, narrow
     structures such as a chain of bays (half-bandwidth 17 whatever the length).  When
     round-off leaves a pivot of a badly conditioned chain non-positive, banded LU with
-    partial pivoting (:class:`trussfe.fem.modal.BandedLU`, backend name ``banded-lu``) takes
+    partial pivoting (:class:`trussfe.fem.banded.BandedLU`, backend name ``banded-lu``) takes
     over.
 ``auto``
     Banded Cholesky when the system has at least ``BANDED_MIN_DOF`` unknowns and a reordered
@@ -36,6 +36,8 @@ from dataclasses import dataclass, field
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
+
+from .banded import banded_factor
 
 log = logging.getLogger(__name__)
 
@@ -167,8 +169,6 @@ def factorize(A: sp.spmatrix, backend: str = "auto", anchored: np.ndarray | None
     A = sp.csr_matrix(A)
     n = A.shape[0]
     if backend in ("auto", "banded"):
-        from .modal import banded_factor
-
         if backend == "banded" or n >= BANDED_MIN_DOF:
             limit = BANDED_MAX_BANDWIDTH if backend == "auto" else max(n - 1, 0)
             band = banded_factor(A, max_bandwidth=limit, anchored=anchored)

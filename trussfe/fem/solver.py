@@ -17,7 +17,9 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from ..errors import MechanismError
-from .linsolve import SINGULAR_PIVOT, SingularMatrixError, factorize
+from .banded import band_layout_free, banded_factor
+from .linsolve import (BANDED_MAX_BANDWIDTH, BANDED_MIN_DOF, PARDISO_MIN_DOF, SINGULAR_PIVOT,
+                       Factor, SingularMatrixError, factorize, pardiso_available)
 
 log = logging.getLogger(__name__)
 
@@ -113,12 +115,27 @@ def factorise(K: sp.spmatrix, free: np.ndarray, fe=None, item: str = "structure"
     backend : {"auto", "superlu", "pardiso"}
         Linear-solver backend.
     """
-    Kff = free_submatrix(K, free)
-    n = Kff.shape[0]
+    K = sp.csr_matrix(K)
+    if not K.has_canonical_format:
+        K = K.copy()
+        K.sum_duplicates()
+    free = np.asarray(free, dtype=np.int64)
+    n = free.size
     if n == 0:
         return Factorised(lu=_Empty(), free=free, n_dof=K.shape[0])
-    d = Kff.diagonal()
-    if np.any(d <= 0):                     # a DOF nothing is attached to
+    if backend == "banded" or (backend == "auto" and n >= BANDED_MIN_DOF):
+        # long, narrow structures: band storage straight from K's free rows and columns.  A
+        # DOF nothing is attached to has an empty row: both band factorisations refuse it.
+        limit = BANDED_MAX_BANDWIDTH if backend == "auto" else max(n - 1, 0)
+        layout = band_layout_free(K, free, limit)
+        band = banded_factor(layout=layout) if layout is not None else None
+        if band is not None:
+            lu = Factor(matrix=FreeBlock(K, free), backend=band.kind, n=n, _solve=band.solve)
+            log.debug("factorised %d free DOFs (%s)", n, lu.backend)
+            return Factorised(lu=lu, free=free, n_dof=K.shape[0])
+        backend = "pardiso" if n >= PARDISO_MIN_DOF and pardiso_available() else "superlu"
+    Kff = free_submatrix(K, free)
+    if np.any(Kff.diagonal() <= 0):        # a DOF nothing is attached to
         _raise_mechanism(Kff, free, fe, item)
     try:
         lu = factorize(Kff, backend=backend, anchored=_anchored(K, free), symmetric=True)
@@ -126,6 +143,27 @@ def factorise(K: sp.spmatrix, free: np.ndarray, fe=None, item: str = "structure"
         _raise_mechanism(Kff, free, fe, item)
     log.debug("factorised %d free DOFs (%s)", n, lu.backend)
     return Factorised(lu=lu, free=free, n_dof=K.shape[0])
+
+
+class FreeBlock:
+    """``K[free][:, free]`` as an operator: products without forming the submatrix.
+
+    Examples
+    --------
+    >>> K = sp.csr_matrix(np.arange(9.0).reshape(3, 3))
+    >>> FreeBlock(K, np.array([0, 2])) @ np.array([1.0, 1.0])
+    array([ 2., 14.])
+    """
+
+    def __init__(self, K: sp.csr_matrix, free: np.ndarray):
+        self.K, self.free = K, free
+        self.shape = (free.size, free.size)
+
+    def __matmul__(self, x: np.ndarray) -> np.ndarray:
+        x = np.asarray(x, dtype=float)
+        full = np.zeros((self.K.shape[0],) + x.shape[1:])
+        full[self.free] = x
+        return (self.K @ full)[self.free]
 
 
 def _anchored(K: sp.spmatrix, free: np.ndarray) -> np.ndarray:

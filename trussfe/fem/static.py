@@ -179,7 +179,7 @@ def solve_static(structure: Structure, bar_model: str = "truss",
     """
     if fe is None:
         fe = discretise(structure, bar_model=bar_model, subdivisions=subdivisions)
-    K = fe.stiffness()
+    K = fe.stiffness(copy=False)             # read only here
     f = fe.load_vector(self_weight=self_weight, loads=loads)
     fac = factorise(K, fe.free, fe=fe, item=structure.source or structure.name,
                     backend=backend)
@@ -222,12 +222,15 @@ def solve_static(structure: Structure, bar_model: str = "truss",
         # (von_mises with V = M = 0), computed directly for large pin-jointed models
         s1 = np.abs(F[..., 0]) / s.area[:, None]
         s2 = s1.copy()
-    vm = np.fmax(s1, s2)
+    if F.shape[1] == 2:                      # two stations (no NaN padding): the larger
+        max_vm = np.fmax(np.fmax(s1[:, 0], s1[:, 1]), np.fmax(s2[:, 0], s2[:, 1]))
+    else:
+        max_vm = np.nanmax(np.fmax(s1, s2), axis=1) if m else np.zeros(0)
     result = StaticResult(
         fe=fe, u=u, f=f, displacements=fe.node_values(u), reactions=fe.node_values(reac),
         axial_force=N_mid, axial_stress=N_mid / s.area, strain=N_mid / (s.E * s.area),
         end_forces=ends, station_x=x, section_forces=F, von_mises_s1=s1, von_mises_s2=s2,
-        max_von_mises=np.nanmax(vm, axis=1) if m else np.zeros(0),
+        max_von_mises=max_vm,
         element_axial_force=0.5 * (fel[:, 1, 0] - fel[:, 0, 0]), residual=residual,
         backend=getattr(fac.lu, "backend", "none"))
     log.info("static solve: %d DOFs, residual %.2e", fe.n_dof, residual)
