@@ -16,6 +16,7 @@ import numpy as np
 
 from ..errors import InputError, TrussfeError
 from . import toml_text
+from ..model.ids import IdIndex, IdRange, id_index
 from ..model.sections import Material, Section
 from ..model.structure import DOF_NAMES, Structure
 
@@ -56,6 +57,8 @@ def _load_extensions() -> None:
 
 
 def _suggest(word: str, choices) -> str:
+    if isinstance(choices, IdIndex):            # a mesh model: nodes are the point indices
+        return f"; the mesh's nodes are 0 … {len(choices) - 1}"
     close = difflib.get_close_matches(str(word), list(choices), n=1, cutoff=0.5)
     return f"; did you mean '{close[0]}'?" if close else f"; valid: {', '.join(choices)}"
 
@@ -277,7 +280,7 @@ def parse_model(data: dict, base_dir: Path | str = ".", source: str = "") -> Str
         group_code = None
 
     n = len(node_ids)
-    node_index = {k: i for i, k in enumerate(node_ids)}
+    node_index = id_index(node_ids)
     _check_geometry(coords, conn, member_ids, node_ids)
 
     ndof = 3 if dim == 2 else 6
@@ -472,8 +475,9 @@ def _mesh_geometry(mesh_name, base_dir, dim, data, sections, materials):
     mat_obj = np.empty(len(names), dtype=object)
     for c in used:
         sec_obj[c], mat_obj[c] = sec_of[c], mat_of[c]
-    node_ids = list(map(str, range(coords.shape[0])))
-    member_ids = list(map(str, range(m)))
+    # mesh items are named by their index: ids made on demand, not a string per item
+    node_ids = IdRange(coords.shape[0])
+    member_ids = IdRange(m)
     return (node_ids, coords, member_ids, conn, sec_obj[code].tolist(),
             mat_obj[code].tolist(), beam_of[code], rel_of[code], orient_of[code], code)
 

@@ -19,6 +19,7 @@ from typing import Any
 
 import numpy as np
 
+from .ids import IdRange, id_index
 from .sections import Material, Section
 
 #: Names of the nodal DOFs, in the order of the ``supports`` and ``loads`` columns.
@@ -35,12 +36,13 @@ class Structure:
         Model name.
     dim : int
         Spatial dimension, 2 or 3.
-    node_ids : list of str
-        Node ids, index = node number.
+    node_ids : sequence of str
+        Node ids, index = node number (a list, or an :class:`~trussfe.model.ids.IdRange` for
+        a mesh model's "0", "1", …).
     coords : ndarray, shape (n, dim)
         Node coordinates, m.
-    member_ids : list of str
-        Member ids, index = member number.
+    member_ids : sequence of str
+        Member ids, index = member number (list or :class:`~trussfe.model.ids.IdRange`).
     connectivity : ndarray of int, shape (m, 2)
         Start and end node of each member.
     sections, materials : list
@@ -109,13 +111,13 @@ class Structure:
     def node_index(self, node_id: str) -> int:
         """Index of the node with id ``node_id`` (KeyError if absent)."""
         if self._node_index is None:
-            self._node_index = {k: i for i, k in enumerate(self.node_ids)}
+            self._node_index = id_index(self.node_ids)
         return self._node_index[str(node_id)]
 
     def member_index(self, member_id: str) -> int:
         """Index of the member with id ``member_id`` (KeyError if absent)."""
         if self._member_index is None:
-            self._member_index = {k: i for i, k in enumerate(self.member_ids)}
+            self._member_index = id_index(self.member_ids)
         return self._member_index[str(member_id)]
 
     # ------------------------------------------------------------------ member properties
@@ -215,8 +217,8 @@ class Structure:
         """A deep-enough copy: arrays copied, sections and materials shared."""
         return replace(
             self,
-            node_ids=list(self.node_ids), coords=self.coords.copy(),
-            member_ids=list(self.member_ids), connectivity=self.connectivity.copy(),
+            node_ids=_copy_ids(self.node_ids), coords=self.coords.copy(),
+            member_ids=_copy_ids(self.member_ids), connectivity=self.connectivity.copy(),
             sections=list(self.sections), materials=list(self.materials),
             is_beam=self.is_beam.copy(), releases=self.releases.copy(),
             supports=self.supports.copy(), loads=self.loads.copy(), masses=self.masses.copy(),
@@ -309,3 +311,8 @@ def build_structure(
         is_beam=np.broadcast_to(np.asarray(is_beam, dtype=bool), (m,)).copy(),
         releases=np.zeros((m, 2), dtype=bool), supports=sup, loads=ld, masses=ms, gravity=g,
     )
+
+
+def _copy_ids(ids):
+    # an IdRange is immutable: share it rather than spell out every id
+    return ids if isinstance(ids, IdRange) else list(ids)
