@@ -358,7 +358,12 @@ class FEModel:
         self.nrot = nrot
         n, m = s.n_nodes, s.n_members
         conn = s.connectivity
-        L = s.lengths()
+        # one pass over the member vectors for the lengths (as Structure.lengths) and the
+        # unit vectors (as local_axes' first row)
+        d = s.member_vectors()
+        L = np.linalg.norm(d, axis=1)
+        self._axis = d / np.sqrt(np.einsum("ij,ij->i", d, d))[:, None]
+        del d
         self._rotation = None
         is_frame = s.is_beam.copy() if self.bar_model == "truss" else np.ones(m, dtype=bool)
         if np.any(is_frame) or np.any(np.isfinite(s.orientation)):
@@ -718,6 +723,9 @@ class FEModel:
     # ------------------------------------------------------------------ global matrices
     def _bar_geometry(self, g: _Group) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """Members, end nodes, unit vectors and lengths of the two-node bars of group ``g``."""
+        if g.elements.size == self.structure.n_members == self.n_elements:
+            # every member one bar (a truss): the member arrays themselves, read only
+            return (g.elements, self.structure.connectivity, self.axis, self.element_length)
         mem = self.element_member[g.elements]
         return (mem, self.structure.connectivity[mem], self.axis[mem],
                 self.element_length[g.elements])
