@@ -183,6 +183,10 @@ def band_layout_free(K: sp.csr_matrix, free: np.ndarray,
     free : ndarray of int
         Increasing indices of the kept rows and columns.
     """
+    K = sp.csr_matrix(K)
+    if not K.has_canonical_format:
+        K = K.copy()
+        K.sum_duplicates()
     N = K.shape[0]
     n = free.size
     it = K.indices.dtype

@@ -52,10 +52,10 @@ from ..model.structure import Structure
 from .discretisation import FEModel, discretise
 from ..threads import parallel_map
 from .banded import (BANDED_MAX_BANDWIDTH, BandedCholesky, BandedLU,  # noqa: F401
-                     banded_factor)
+                     band_layout_free, banded_factor)
 from .lanczos import shift_invert_lanczos
 from .linsolve import SingularMatrixError, factorize
-from .solver import free_submatrix, null_space
+from .solver import FreeBlock, free_submatrix, null_space
 
 log = logging.getLogger(__name__)
 
@@ -269,8 +269,13 @@ def generalized_eigen(Kff: sp.spmatrix, Mff: sp.spmatrix, count: int, sigma: flo
     [0.381966, 2.618034]
     """
     n = Kff.shape[0]
-    A = (Kff - sigma * Mff).tocsr() if sigma else Kff.tocsr()
+
+    def shifted():
+        # K_ff may be a FreeBlock (products only): its sparse matrix is formed when needed
+        return (Kff.tocsr() - sigma * Mff).tocsr() if sigma else Kff.tocsr()
+
     if n <= DENSE_MODAL_LIMIT or count >= n - 1:
+        A = shifted()
         Ad, Md = A.toarray(), Mff.toarray()
         try:
             mu, V = sla.eigh(Md, Ad, subset_by_index=[n - count, n - 1])
@@ -285,6 +290,7 @@ def generalized_eigen(Kff: sp.spmatrix, Mff: sp.spmatrix, count: int, sigma: flo
         lam = sigma + 1.0 / mu
     else:
         if factor is None:
+            A = shifted()
             factor = banded_factor(A) or factorize(A, symmetric=True)
         # The Lanczos iteration needs no refined solves: use the factor's plain solve.
         solve = getattr(factor, "_solve", factor.solve)
@@ -295,8 +301,8 @@ def generalized_eigen(Kff: sp.spmatrix, Mff: sp.spmatrix, count: int, sigma: flo
             op = spla.LinearOperator((n, n), matvec=solve, dtype=float)
             ncv = min(n - 1, max(2 * count + 1, count + 20))
             # ARPACK's shift-invert mode needs only M products and the solves
-            lam, V = spla.eigsh(Kff, k=count, M=Mff, sigma=sigma, which="LM", OPinv=op,
-                                ncv=ncv)
+            lam, V = spla.eigsh(Kff.tocsr(), k=count, M=Mff, sigma=sigma, which="LM",
+                                OPinv=op, ncv=ncv)
             order = np.argsort(lam)
             lam, V = lam[order], V[:, order]
     # M-normalise (eigsh returns M-orthonormal vectors already; dense returns A-normalised)
@@ -382,9 +388,26 @@ def solve_modes(structure: Structure, count: int = 6, mass: str = "consistent",
     n = free.size
     if n == 0:
         raise AnalysisError(item, "every DOF is supported: there is nothing to vibrate")
-    # K_ff and M_ff are independent: assembled in two worker threads (trussfe.threads)
-    Kff, Mff = parallel_map(lambda build: free_submatrix(build(), free), [
-        fe.stiffness, lambda: mass_matrix(fe, mass, include_nodal_masses=include_nodal_masses)])
+    dense = n <= DENSE_MODAL_LIMIT or count >= n - 1
+
+    def stiffness_and_band():
+        K = fe.stiffness(copy=False)                 # read only
+        if not dense:
+            # a long, narrow structure: the banded factor of K_ff straight from K's free rows
+            # and columns (K_ff itself is formed only if a later step needs it), made while M
+            # is assembled
+            layout = band_layout_free(K, free)
+            band = banded_factor(layout=layout) if layout is not None else None
+            if band is not None:
+                return FreeBlock(K, free), band
+        return (free_submatrix(K, free) if n < fe.n_dof else K.copy()), None
+
+    def mass_ff():
+        return free_submatrix(mass_matrix(fe, mass, include_nodal_masses=include_nodal_masses),
+                              free)
+
+    # K_ff (and its factor) and M_ff are independent: two worker threads (trussfe.threads)
+    (Kff, band), Mff = parallel_map(lambda task: task(), [stiffness_and_band, mass_ff])
     n_mass = int(np.count_nonzero(Mff.diagonal() > 0))
     if n_mass == 0:
         raise AnalysisError(item, "the structure has no mass: give members a density or "
@@ -398,11 +421,11 @@ def solve_modes(structure: Structure, count: int = 6, mass: str = "consistent",
     sigma = 0.0
     factor = None
     kd = Kff.diagonal()
-    dense = n <= DENSE_MODAL_LIMIT or count >= n - 1
-    if dense or np.any(kd <= 0):
+    if band is not None:                           # positive definite: no mechanism
+        factor = band
+    elif dense or np.any(kd <= 0):
         rigid = null_space(Kff).shape[1]
     else:
-        factor = banded_factor(Kff)
         if factor is None:
             try:
                 factor = factorize(Kff, symmetric=True)

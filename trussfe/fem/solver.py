@@ -158,12 +158,23 @@ class FreeBlock:
     def __init__(self, K: sp.csr_matrix, free: np.ndarray):
         self.K, self.free = K, free
         self.shape = (free.size, free.size)
+        self._csr: sp.csr_matrix | None = None
 
     def __matmul__(self, x: np.ndarray) -> np.ndarray:
         x = np.asarray(x, dtype=float)
         full = np.zeros((self.K.shape[0],) + x.shape[1:])
         full[self.free] = x
         return (self.K @ full)[self.free]
+
+    def diagonal(self) -> np.ndarray:
+        """The diagonal of the block."""
+        return self.K.diagonal()[self.free]
+
+    def tocsr(self) -> sp.csr_matrix:
+        """The block as a sparse matrix (formed once, on first request)."""
+        if self._csr is None:
+            self._csr = free_submatrix(self.K, self.free)
+        return self._csr
 
 
 def _anchored(K: sp.spmatrix, free: np.ndarray) -> np.ndarray:
