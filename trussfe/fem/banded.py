@@ -19,6 +19,7 @@ the way into LAPACK.
 """
 from __future__ import annotations
 
+from contextlib import nullcontext
 from dataclasses import dataclass
 
 import numpy as np
@@ -26,6 +27,8 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 from scipy.sparse.csgraph import reverse_cuthill_mckee
 from threadpoolctl import ThreadpoolController
+
+from ..threads import parallel_map, worker_count
 
 #: Largest half-bandwidth (after reordering) for which :func:`banded_factor` factorises.
 BANDED_MAX_BANDWIDTH = 400
@@ -43,13 +46,21 @@ BANDED_LU_PIVOT = 1e-15
 #: factor (pivot ratio 1e-16: numerically singular).
 CHOLESKY_PIVOT = 1e-8
 
+#: Order from which :func:`banded_factor` runs the LU factorisation in a second thread while
+#: the Cholesky factorisation is tried: round-off leaves chains of more than ~20,000 bays
+#: (360,000 DOFs) numerically indefinite, and the Cholesky attempt then only costs time.
+CONCURRENT_LU_MIN = 400_000
+
 _CONTROLLER: ThreadpoolController | None = None
 
 
 def one_blas_thread():
     """Context: BLAS on one thread.  The band routines work on tiny blocks, where BLAS threads
-    only add overhead (3–7x slower); the controller is made once — building one scans the
-    loaded libraries, ~3 ms, which a Lanczos iteration would pay at every solve."""
+    only add overhead (3–7x slower).  The controller is made once — building one scans the
+    loaded libraries, ~3 ms, which a Lanczos iteration would pay at every solve.  The limit
+    must be lifted by the thread that set it (OpenBLAS ignores a restore from another
+    thread), so contexts are not to overlap across threads: :func:`banded_factor` sets it
+    once around its two concurrent factorisations."""
     global _CONTROLLER
     if _CONTROLLER is None:
         _CONTROLLER = ThreadpoolController()
@@ -234,13 +245,15 @@ class BandedCholesky:
 
     @classmethod
     def build(cls, A: sp.spmatrix | None = None, max_bandwidth: int = BANDED_MAX_BANDWIDTH,
-              layout: BandLayout | None = None) -> "BandedCholesky | None":
+              layout: BandLayout | None = None, blas_limit: bool = True
+              ) -> "BandedCholesky | None":
         """Factorise ``A`` (or the matrix of ``layout``), or return None (bandwidth above
-        ``max_bandwidth``, or not numerically positive definite)."""
+        ``max_bandwidth``, or not numerically positive definite).  ``blas_limit=False``: the
+        caller has set :func:`one_blas_thread`."""
         layout = band_layout(A, max_bandwidth) if layout is None else layout
         if layout is None:
             return None
-        with one_blas_thread():
+        with one_blas_thread() if blas_limit else nullcontext():
             c, info = sla.lapack.dpbtrf(layout.upper_band(), lower=0, overwrite_ab=1)
         if info != 0:                          # a non-positive pivot: not positive definite
             return None
@@ -286,14 +299,16 @@ class BandedLU:
 
     @classmethod
     def build(cls, A: sp.spmatrix | None = None, max_bandwidth: int = BANDED_MAX_BANDWIDTH,
-              layout: BandLayout | None = None) -> "BandedLU | None":
+              layout: BandLayout | None = None, blas_limit: bool = True
+              ) -> "BandedLU | None":
         """Factorise ``A`` (or the matrix of ``layout``) or return None (bandwidth too large,
-        or numerically singular)."""
+        or numerically singular).  ``blas_limit=False``: the caller has set
+        :func:`one_blas_thread`."""
         layout = band_layout(A, max_bandwidth) if layout is None else layout
         if layout is None:
             return None
         bw = layout.bandwidth
-        with one_blas_thread():
+        with one_blas_thread() if blas_limit else nullcontext():
             lub, piv, info = sla.lapack.dgbtrf(layout.general_band(), bw, bw, overwrite_ab=1)
         if info != 0:                                      # an exactly zero pivot
             return None
@@ -321,5 +336,11 @@ def banded_factor(A: sp.spmatrix | None = None, max_bandwidth: int = BANDED_MAX_
         layout = band_layout(A, max_bandwidth, anchored)
     if layout is None:
         return None
+    if layout.n >= CONCURRENT_LU_MIN and worker_count() >= 2:
+        # LAPACK and numpy's indexing release the GIL: the LU costs only the spare core
+        with one_blas_thread():
+            chol, lu = parallel_map(lambda build: build(layout=layout, blas_limit=False),
+                                    [BandedCholesky.build, BandedLU.build])
+        return chol or lu
     return (BandedCholesky.build(layout=layout)
             or BandedLU.build(layout=layout))
