@@ -21,19 +21,3 @@ def test_environment_wins():
                          env={"MALLOC_MMAP_THRESHOLD_": "1048576", "PATH": ""}, check=True,
                          cwd=str(__import__("pathlib").Path(__file__).resolve().parents[1]))
     assert out.stdout.strip() == "False"
-
-
-def test_huge_page_advice_off():
-    """After tuning, numpy no longer advises huge pages (its switch reports False), unless
-    NUMPY_MADVISE_HUGEPAGE is set, which then stands."""
-    code = ("import numpy as np; from trussfe.allocator import tune_allocator; "
-            "ok = tune_allocator(); print(ok, np._core.multiarray._set_madvise_hugepage(True))")
-    root = str(__import__("pathlib").Path(__file__).resolve().parents[1])
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         env={"PATH": ""}, check=True, cwd=root)
-    tuned, advice = out.stdout.split()
-    if tuned == "True":                       # glibc: the allocator was tuned, advice off
-        assert advice == "False"
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         env={"PATH": "", "NUMPY_MADVISE_HUGEPAGE": "1"}, check=True, cwd=root)
-    assert out.stdout.split()[1] == "True"

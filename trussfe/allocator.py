@@ -15,8 +15,7 @@ it at start-up; a program using trussfe as a library may call it too, or set the
 through the environment before Python starts (``MALLOC_MMAP_THRESHOLD_=536870912
 MALLOC_TRIM_THRESHOLD_=1073741824``).  The price is that up to 1 GiB of freed memory stays
 with the process until it exits.  It does nothing where the C library is not glibc, or when
-the environment already sets either threshold.  It also turns off numpy's transparent
-huge-page advice (see :func:`_no_huge_page_advice`).
+the environment already sets either threshold.
 """
 from __future__ import annotations
 
@@ -75,29 +74,6 @@ def _apply() -> bool:
     else:
         return False
     ok = bool(mallopt(_M_TRIM_THRESHOLD, TRIM_THRESHOLD))
-    _no_huge_page_advice()
     log.debug("allocator: mmap threshold %d, trim threshold %d (%s)", threshold,
               TRIM_THRESHOLD, "set" if ok else "refused")
     return ok
-
-
-def _no_huge_page_advice() -> None:
-    """Stop numpy from asking for transparent huge pages on its large arrays.
-
-    Where the kernel's huge-page policy is ``madvise`` with ``defrag = madvise`` (this
-    machine's), a fault in an advised region compacts memory to find a 2 MiB page: the first
-    touch of 32 MB took 49 ms with the advice against 25 ms without, while later passes over
-    the same memory ran at the same speed.  The environment variable numpy reads at import,
-    ``NUMPY_MADVISE_HUGEPAGE``, wins when it is set.
-    """
-    if os.environ.get("NUMPY_MADVISE_HUGEPAGE") is not None:
-        return
-    try:
-        import numpy as np
-
-        setter = getattr(np._core.multiarray, "_set_madvise_hugepage", None) \
-            if hasattr(np, "_core") else getattr(np.core.multiarray, "_set_madvise_hugepage", None)
-        if setter is not None:
-            setter(False)
-    except Exception:          # a numpy without the switch: keep its default
-        pass
