@@ -279,9 +279,20 @@ def _node_block_matrix(n_nodes: int, dim: int, ends: np.ndarray, ref: np.ndarray
     nodes = np.flatnonzero(touched)
     rows = np.concatenate([nodes, a, b])
     cols = np.concatenate([nodes, b, a])
-    data = np.concatenate([diag[nodes], ref[0, 1] * flat, ref[1, 0] * flat])
     order = np.argsort(rows * n_nodes + cols, kind="stable")
-    rows, cols, data = rows[order], cols[order], data[order]
+    rows, cols = rows[order], cols[order]
+    # blocks written once, without temporaries, then permuted as whole blocks (one
+    # dim·dim-double record each): fresh memory is the main cost of large models
+    nn = nodes.size
+    data = np.empty((nn + 2 * ne, dim * dim))
+    data[:nn] = diag[nodes]
+    np.multiply(flat, ref[0, 1], out=data[nn:nn + ne])
+    if ref[1, 0] == ref[0, 1]:                 # symmetric reference (always, in practice)
+        data[nn + ne:] = data[nn:nn + ne]
+    else:
+        np.multiply(flat, ref[1, 0], out=data[nn + ne:])
+    record = np.dtype((np.void, data.itemsize * dim * dim))
+    data = data.view(record).ravel()[order].view(np.float64).reshape(-1, dim * dim)
     indptr = np.zeros(n_nodes + 1, dtype=np.int64)
     np.cumsum(np.bincount(rows, minlength=n_nodes), out=indptr[1:])
     K = sp.bsr_matrix((data.reshape(-1, dim, dim), cols, indptr),
@@ -745,9 +756,10 @@ class FEModel:
         if full:
             blocks = np.broadcast_to(np.eye(dim), (ex.shape[0], dim, dim)) * scale[:, None, None]
         else:
-            P = ex[:, :, None] * ex[:, None, :]                      # (bar, dim, dim) e eᵀ
-            blocks = (np.eye(dim)[None] - P) if transverse else P
-            blocks = blocks * scale[:, None, None]
+            blocks = ex[:, :, None] * ex[:, None, :]                 # (bar, dim, dim) e eᵀ
+            if transverse:
+                np.subtract(np.eye(dim)[None], blocks, out=blocks)   # I − e eᵀ
+            blocks *= scale[:, None, None]                           # in place: no new memory
         return _node_block_matrix(self.structure.n_nodes, dim, ends, reference_bar()[ref],
                                   blocks, self.n_dof)
 
