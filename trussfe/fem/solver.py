@@ -9,7 +9,8 @@ mechanisms there are and which nodes move in them.
 from __future__ import annotations
 
 import logging
-from dataclasses import dataclass
+import time
+from dataclasses import dataclass, field
 
 import numpy as np
 import scipy.linalg as sla
@@ -41,11 +42,15 @@ class Factorised:
         Global indices of the free DOFs.
     n_dof : int
         Size of the global system.
+    timings : dict
+        Seconds spent gathering the stiffness (``assemble``) and factorising, where the
+        factorisation assembled it itself (:func:`factorise_truss`).
     """
 
     lu: object
     free: np.ndarray
     n_dof: int
+    timings: dict = field(default_factory=dict)
 
     def solve(self, f: np.ndarray) -> np.ndarray:
         """Solve K u = f on the free DOFs; fixed DOFs get 0.  ``f`` (n_dof,) or (n_dof, r)."""
@@ -175,6 +180,51 @@ class FreeBlock:
         if self._csr is None:
             self._csr = free_submatrix(self.K, self.free)
         return self._csr
+
+
+class _TrussOperator:
+    """K_ff of a plain truss as an operator: products bar by bar
+    (:func:`trussfe.fem.truss_band.internal_forces`)."""
+
+    def __init__(self, fe):
+        self.fe, self.free = fe, fe.free
+        self.shape = (fe.free.size, fe.free.size)
+
+    def __matmul__(self, x: np.ndarray) -> np.ndarray:
+        from .truss_band import internal_forces
+
+        x = np.asarray(x, dtype=float)
+        full = np.zeros((self.fe.n_dof,) + x.shape[1:])
+        full[self.free] = x
+        return internal_forces(self.fe, full)[self.free]
+
+
+def factorise_truss(fe, backend: str = "auto") -> Factorised | None:
+    """Banded factorisation of K_ff of a plain truss straight from its bars, without the
+    global sparse K (:mod:`trussfe.fem.truss_band`); None where that path does not apply (not
+    a truss of single bars, too few DOFs for ``auto``, a DOF order that is not narrow, or
+    both band factorisations refuse the matrix) — :func:`factorise` then takes over and, for
+    a singular K, names the mechanism.
+    """
+    from .truss_band import is_plain_truss, truss_band_layout
+
+    n = fe.free.size
+    if not (backend == "banded" or (backend == "auto" and n >= BANDED_MIN_DOF)):
+        return None
+    if n == 0 or not is_plain_truss(fe):
+        return None
+    limit = BANDED_MAX_BANDWIDTH if backend == "auto" else max(n - 1, 0)
+    t0 = time.perf_counter()
+    layout = truss_band_layout(fe, limit)
+    t1 = time.perf_counter()
+    band = banded_factor(layout=layout) if layout is not None else None
+    if band is None:
+        return None
+    lu = Factor(matrix=_TrussOperator(fe), backend=band.kind, n=n, _solve=band.solve)
+    log.debug("factorised %d free DOFs of a truss from its bars (%s)", n, lu.backend)
+    # the bars' node blocks gathered for the band ("assemble"); band fill + LAPACK
+    return Factorised(lu=lu, free=fe.free, n_dof=fe.n_dof,
+                      timings={"assemble": t1 - t0, "factorise": time.perf_counter() - t1})
 
 
 def _anchored(K: sp.spmatrix, free: np.ndarray) -> np.ndarray:

@@ -15,14 +15,16 @@ Sign conventions
 from __future__ import annotations
 
 import logging
-from dataclasses import dataclass
+import time
+from dataclasses import dataclass, field
 
 import numpy as np
 
 from ..errors import AnalysisError, InputError
 from ..model.structure import DOF_NAMES, Structure
 from .discretisation import FEModel, discretise
-from .solver import factorise
+from .solver import factorise, factorise_truss
+from .truss_band import internal_forces
 from .stress import von_mises
 
 log = logging.getLogger(__name__)
@@ -72,6 +74,10 @@ class StaticResult:
         ‖K u − f‖ / ‖f‖ over the free DOFs.
     backend : str
         Linear-solver backend that factorised K_ff (:mod:`trussfe.fem.linsolve`).
+    timings : dict
+        Wall-clock seconds of the steps: ``assemble`` (load vector and stiffness: the sparse
+        K, or for a long truss the bars' blocks that go to band storage), ``factorise``,
+        ``solve`` (with refinement and the residual), ``recover`` (forces and stresses).
     """
 
     fe: FEModel
@@ -91,6 +97,7 @@ class StaticResult:
     element_axial_force: np.ndarray
     residual: float
     backend: str = ""
+    timings: dict = field(default_factory=dict)
 
     @property
     def structure(self) -> Structure:
@@ -179,12 +186,23 @@ def solve_static(structure: Structure, bar_model: str = "truss",
     """
     if fe is None:
         fe = discretise(structure, bar_model=bar_model, subdivisions=subdivisions)
-    K = fe.stiffness(copy=False)             # read only here
+    t0 = time.perf_counter()
     f = fe.load_vector(self_weight=self_weight, loads=loads)
-    fac = factorise(K, fe.free, fe=fe, item=structure.source or structure.name,
-                    backend=backend)
+    # a long truss of single bars: K_ff banded straight from the bars, K·u bar by bar
+    fac = factorise_truss(fe, backend)
+    if fac is not None:
+        K = None
+        t2 = time.perf_counter()
+        t1 = t2 - fac.timings["factorise"]   # band fill and factorisation after the blocks
+    else:
+        K = fe.stiffness(copy=False)         # read only here
+        t1 = time.perf_counter()
+        fac = factorise(K, fe.free, fe=fe, item=structure.source or structure.name,
+                        backend=backend)
+        t2 = time.perf_counter()
     u = fac.solve(f)
-    r_all = K @ u - f
+    r_all = (internal_forces(fe, u) if K is None else K @ u) - f
+    t3 = time.perf_counter()
     nf = np.linalg.norm(f[fe.free])
     residual = float(np.linalg.norm(r_all[fe.free]) / nf) if nf > 0 else \
         float(np.linalg.norm(r_all[fe.free]))
@@ -194,6 +212,7 @@ def solve_static(structure: Structure, bar_model: str = "truss",
         # hidden by round-off (or worse) — say which, never return such displacements
         from .solver import _raise_mechanism, free_submatrix
 
+        K = fe.stiffness(copy=False) if K is None else K
         _raise_mechanism(free_submatrix(K, fe.free), fe.free, fe,
                          structure.source or structure.name)
     if not np.all(np.isfinite(u)):
@@ -233,6 +252,11 @@ def solve_static(structure: Structure, bar_model: str = "truss",
         max_von_mises=max_vm,
         element_axial_force=0.5 * (fel[:, 1, 0] - fel[:, 0, 0]), residual=residual,
         backend=getattr(fac.lu, "backend", "none"))
+    t4 = time.perf_counter()
+    # wall-clock seconds: load vector and stiffness (sparse K, or the bars' blocks for the
+    # band), factorisation (band fill included), solve with refinement and residual, recovery
+    result.timings = {"assemble": t1 - t0, "factorise": t2 - t1, "solve": t3 - t2,
+                      "recover": t4 - t3}
     log.info("static solve: %d DOFs, residual %.2e", fe.n_dof, residual)
     return result
 

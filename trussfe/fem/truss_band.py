@@ -1,0 +1,186 @@
+# SPDX-License-Identifier: MIT
+"""The banded stiffness of a pin-jointed truss straight from its bars, and K·u bar by bar.
+
+For a model of truss bars only (one element per member, no frames), the static solve does
+not need the global sparse K: the free-DOF stiffness goes from the bars' ``EA/L · e eᵀ``
+blocks directly into LAPACK band storage, and the products K·u of the iterative refinement,
+the residual and the reactions are the bars' internal forces assembled at the nodes,
+
+.. math:: (K u)_a = \\sum_{e \\ni a} \\mp \\frac{EA}{L} e\\,e^T (u_b - u_a),
+
+the same stiffness as :meth:`FEModel.stiffness` (the reference element of
+:func:`~trussfe.fem.discretisation.reference_bar` is ``[[1, −1], [−1, 1]]``).  On a chain of
+100,000 bays this skips the sparse matrix of 27 million entries, its extraction and its
+reordering: the memory the model touches, which is what costs time on a virtual machine.
+"""
+from __future__ import annotations
+
+import numpy as np
+import scipy.sparse as sp
+
+from .banded import NATURAL_BANDWIDTH_OK, BandLayout
+from .discretisation import FEModel, reference_bar
+
+
+def is_plain_truss(fe: FEModel) -> bool:
+    """True when every member is one two-node bar (the ``truss`` model without beams)."""
+    ref = reference_bar()["stiffness"]
+    # K = Bᵀ diag(EA/L) B holds for the P1 bar's [[1, −1], [−1, 1]]
+    return (len(fe.groups) == 1 and fe.groups[0].kind == "bar"
+            and fe.n_elements == fe.structure.n_members
+            and bool(np.allclose(ref, [[1.0, -1.0], [-1.0, 1.0]], rtol=1e-14, atol=0.0)))
+
+
+def _bar_blocks(fe: FEModel) -> np.ndarray:
+    """``EA/L · e eᵀ`` of every bar, shape (m, dim, dim)."""
+    s = fe.structure
+    mem, _, ex, L = fe._bar_geometry(fe.groups[0])
+    blocks = ex[:, :, None] * ex[:, None, :]
+    blocks *= ((s.E * s.area)[mem] / L)[:, None, None]
+    return blocks
+
+
+def _elongation_operator(fe: FEModel):
+    """``(B, k)``: the sparse matrix of the bars' elongations ``e·(u_b − u_a)`` (one row per
+    bar, shape (m, n_dof)) and the bars' stiffnesses ``EA/L``, so that ``K = Bᵀ diag(k) B``.
+    Made once per model: ``2·dim`` entries per bar against ~17 per DOF in K."""
+    op = getattr(fe, "_elongation", None)
+    if op is None:
+        s = fe.structure
+        dim = fe.ndim
+        _, ends, ex, L = fe._bar_geometry(fe.groups[0])
+        m = ex.shape[0]
+        cols = fe.node_dofs[ends][:, :, :dim].reshape(m, 2 * dim)   # (bar, start | end)
+        data = np.concatenate([-ex, ex], axis=1)
+        B = sp.csr_matrix((data.ravel(), cols.ravel(), np.arange(0, 2 * dim * m + 1, 2 * dim)),
+                          shape=(m, fe.n_dof))
+        op = fe._elongation = (B, (s.E * s.area) / L)
+    return op
+
+
+def internal_forces(fe: FEModel, u: np.ndarray) -> np.ndarray:
+    """``K @ u`` of a plain truss (:func:`is_plain_truss`) as ``Bᵀ (k · B u)``: the bars'
+    axial forces from their elongations, assembled at the nodes.
+
+    Parameters
+    ----------
+    fe : FEModel
+    u : ndarray, shape (n_dof,) or (n_dof, r)
+
+    Returns
+    -------
+    ndarray, same shape as ``u``
+    """
+    B, k = _elongation_operator(fe)
+    u = np.asarray(u, dtype=float)
+    N = B @ u
+    N *= k if u.ndim == 1 else k[:, None]
+    return B.T @ N
+
+
+class TrussBandLayout(BandLayout):
+    """A :class:`~trussfe.fem.banded.BandLayout` whose entries are the bars' node blocks in
+    the upper triangle (``row ≤ col``; −1 in ``row`` marks an entry on a fixed DOF, which is
+    left out).  A position may occur more than once (every bar at a node adds to its diagonal
+    block), so the band arrays are summed with ``bincount``; ``reversed`` says the band
+    numbering is ``n − 1 −`` the free-DOF numbering of ``row`` and ``col``."""
+
+    def __init__(self, perm, bandwidth, row, col, data, reversed_: bool):
+        super().__init__(perm, bandwidth, row, col, data)
+        self.reversed = reversed_
+
+    def _band_rc(self):
+        # (row, col) in the band numbering with row ≤ col; left-out entries at row −1
+        n = self.n
+        if not self.reversed:
+            return self.row, self.col
+        lo = np.where(self.row >= 0, n - 1 - self.col, -1).astype(self.row.dtype)
+        return lo, (n - 1 - self.row).astype(self.col.dtype)
+
+    def upper_band(self) -> np.ndarray:
+        bw, n = self.bandwidth, self.n
+        size = (bw + 1) * n
+        r, c = self._band_rc()
+        # Fortran position of (bw + i − j, j) is bw·(j + 1) + i; left-out entries go to a
+        # spare slot past the end (no compressed copies of the entry arrays)
+        idx = c.astype(np.int64)
+        idx *= bw
+        idx += bw
+        idx += r
+        idx[r < 0] = size
+        flat = np.bincount(idx, weights=self.data, minlength=size + 1)[:size]
+        return flat.reshape((bw + 1, n), order="F")
+
+    def general_band(self) -> np.ndarray:
+        bw, n = self.bandwidth, self.n
+        size = (3 * bw + 1) * n
+        r, c = self._band_rc()
+        out = r < 0
+        # (i, j) at 3bw·j + 2bw + i, and its mirror (j, i) off the diagonal
+        up = c.astype(np.int64) * (3 * bw) + 2 * bw + r
+        mirror = (r != c) & ~out
+        low = r[mirror].astype(np.int64) * (3 * bw) + 2 * bw + c[mirror]
+        up[out] = size
+        idx = np.concatenate([up, low])
+        w = np.concatenate([self.data, self.data[mirror]])
+        flat = np.bincount(idx, weights=w, minlength=size + 1)[:size]
+        return flat.reshape((3 * bw + 1, n), order="F")
+
+
+def truss_band_layout(fe: FEModel, max_bandwidth: int) -> TrussBandLayout | None:
+    """The band layout of K_ff of a plain truss from its bars, or None when the DOF order is
+    not narrow (half-bandwidth above :data:`~trussfe.fem.banded.NATURAL_BANDWIDTH_OK` or
+    ``max_bandwidth``: the general path then reorders the sparse K_ff).
+
+    The ordering is the DOF numbering restricted to the free DOFs, reversed when that puts the
+    DOFs coupled to a support towards the end (as :func:`~trussfe.fem.banded.band_layout`).
+    Entries: the upper half of every node's diagonal block (Σ of its bars' blocks) and one
+    off-diagonal block per bar, each entry moved to the upper triangle (K is symmetric).
+    """
+    s = fe.structure
+    dim = fe.ndim
+    n_nodes = s.n_nodes
+    free = fe.free
+    nfree = free.size
+    it = np.int32 if fe.n_dof < 2**31 else np.int64
+    new = np.full(fe.n_dof, -1, dtype=it)
+    new[free] = np.arange(nfree, dtype=it)
+    ndof = new[fe.node_dofs[:, :dim]]                          # (node, dim), −1 = fixed
+    ends = s.connectivity
+    ref = reference_bar()["stiffness"]
+    blocks = _bar_blocks(fe).reshape(-1, dim * dim)            # (bar, dim²)
+    iu, ju = np.triu_indices(dim)
+    diag = np.empty((n_nodes, iu.size))                        # upper half of node blocks
+    for q, (i, j) in enumerate(zip(iu, ju)):
+        col = blocks[:, i * dim + j]
+        diag[:, q] = (ref[0, 0] * np.bincount(ends[:, 0], col, minlength=n_nodes)
+                      + ref[1, 1] * np.bincount(ends[:, 1], col, minlength=n_nodes))
+    blocks *= ref[0, 1]                                        # the off-diagonal blocks
+    A, B = ndof[ends[:, 0]], ndof[ends[:, 1]]                  # (bar, dim)
+    nd = n_nodes * iu.size
+    E = nd + blocks.size
+    row = np.empty(E, dtype=it)
+    col = np.empty(E, dtype=it)
+    np.minimum(ndof[:, iu], ndof[:, ju], out=row[:nd].reshape(n_nodes, -1))
+    np.maximum(ndof[:, iu], ndof[:, ju], out=col[:nd].reshape(n_nodes, -1))
+    np.minimum(A[:, :, None], B[:, None, :], out=row[nd:].reshape(-1, dim, dim))
+    np.maximum(A[:, :, None], B[:, None, :], out=col[nd:].reshape(-1, dim, dim))
+    data = np.concatenate([diag.ravel(), blocks.ravel()])
+    del blocks, diag
+    nonzero = data != 0.0
+    kept = row >= 0                                            # both DOFs free
+    width = col - row
+    width[~(kept & nonzero)] = 0
+    bw = int(width.max()) if E else 0
+    del width
+    if bw > min(NATURAL_BANDWIDTH_OK, max_bandwidth):
+        return None
+    # DOFs coupled to a support: a nonzero entry between a free and a fixed DOF
+    anchored = np.zeros(nfree, dtype=bool)
+    anchored[col[~kept & nonzero & (col >= 0)]] = True
+    reverse = bool(np.any(anchored)) and np.mean(np.flatnonzero(anchored)) < 0.5 * (nfree - 1)
+    # eliminate a cantilever from its free end (see trussfe.fem.banded.band_layout)
+    perm = np.arange(nfree, dtype=np.int64)
+    if reverse:
+        perm = perm[::-1].copy()
+    return TrussBandLayout(perm, bw, row, col, data, reverse)
