@@ -182,23 +182,6 @@ class FreeBlock:
         return self._csr
 
 
-class _TrussOperator:
-    """K_ff of a plain truss as an operator: products bar by bar
-    (:func:`trussfe.fem.truss_band.internal_forces`)."""
-
-    def __init__(self, fe):
-        self.fe, self.free = fe, fe.free
-        self.shape = (fe.free.size, fe.free.size)
-
-    def __matmul__(self, x: np.ndarray) -> np.ndarray:
-        from .truss_band import internal_forces
-
-        x = np.asarray(x, dtype=float)
-        full = np.zeros((self.fe.n_dof,) + x.shape[1:])
-        full[self.free] = x
-        return internal_forces(self.fe, full)[self.free]
-
-
 def factorise_truss(fe, backend: str = "auto") -> Factorised | None:
     """Banded factorisation of K_ff of a plain truss straight from its bars, without the
     global sparse K (:mod:`trussfe.fem.truss_band`); None where that path does not apply (not
@@ -206,7 +189,7 @@ def factorise_truss(fe, backend: str = "auto") -> Factorised | None:
     both band factorisations refuse the matrix) — :func:`factorise` then takes over and, for
     a singular K, names the mechanism.
     """
-    from .truss_band import is_plain_truss, truss_band_layout
+    from .truss_band import TrussStiffness, is_plain_truss, truss_band_layout
 
     n = fe.free.size
     if not (backend == "banded" or (backend == "auto" and n >= BANDED_MIN_DOF)):
@@ -220,7 +203,7 @@ def factorise_truss(fe, backend: str = "auto") -> Factorised | None:
     band = banded_factor(layout=layout) if layout is not None else None
     if band is None:
         return None
-    lu = Factor(matrix=_TrussOperator(fe), backend=band.kind, n=n, _solve=band.solve)
+    lu = Factor(matrix=TrussStiffness(fe), backend=band.kind, n=n, _solve=band.solve)
     log.debug("factorised %d free DOFs of a truss from its bars (%s)", n, lu.backend)
     # the bars' node blocks gathered for the band ("assemble"); band fill + LAPACK
     return Factorised(lu=lu, free=fe.free, n_dof=fe.n_dof,

@@ -78,6 +78,46 @@ def internal_forces(fe: FEModel, u: np.ndarray) -> np.ndarray:
     return B.T @ N
 
 
+class TrussStiffness:
+    """K_ff of a plain truss as an operator, from its bars: products (:func:`internal_forces`),
+    the diagonal, and the sparse matrix only when a caller asks for it.
+
+    Examples
+    --------
+    >>> from trussfe.models import double_octahedral_chain
+    >>> from trussfe.fem import discretise
+    >>> fe = discretise(double_octahedral_chain(3), "truss")
+    >>> op, K = TrussStiffness(fe), fe.stiffness()[fe.free][:, fe.free]
+    >>> x = np.linspace(0.0, 1.0, fe.free.size)
+    >>> bool(np.allclose(op @ x, K @ x)), bool(np.allclose(op.diagonal(), K.diagonal()))
+    (True, True)
+    """
+
+    def __init__(self, fe: FEModel):
+        self.fe, self.free = fe, fe.free
+        self.shape = (fe.free.size, fe.free.size)
+        self._csr = None
+
+    def __matmul__(self, x: np.ndarray) -> np.ndarray:
+        x = np.asarray(x, dtype=float)
+        full = np.zeros((self.fe.n_dof,) + x.shape[1:])
+        full[self.free] = x
+        return internal_forces(self.fe, full)[self.free]
+
+    def diagonal(self) -> np.ndarray:
+        """``K_ii`` of the free DOFs: Σ over the bars at the node of ``EA/L · e_j²``."""
+        B, k = _elongation_operator(self.fe)
+        return (B.multiply(B).T @ k)[self.free]
+
+    def tocsr(self) -> sp.csr_matrix:
+        """The sparse K_ff (assembled on first request)."""
+        if self._csr is None:
+            from .solver import free_submatrix
+
+            self._csr = free_submatrix(self.fe.stiffness(copy=False), self.free)
+        return self._csr
+
+
 class TrussBandLayout(BandLayout):
     """A :class:`~trussfe.fem.banded.BandLayout` whose entries are the bars' node blocks in
     the upper triangle (``row ≤ col``; −1 in ``row`` marks an entry on a fixed DOF, which is
