@@ -143,8 +143,8 @@ class TrussBandLayout(BandLayout):
         r, c = self._band_rc()
         # Fortran position of (bw + i − j, j) is bw·(j + 1) + i; left-out entries go to a
         # spare slot past the end (no compressed copies of the entry arrays)
-        idx = c.astype(np.int64)
-        idx *= bw
+        idx = np.empty(r.size, dtype=np.int64)
+        np.multiply(c, bw, out=idx)
         idx += bw
         idx += r
         idx[r < 0] = size
@@ -156,13 +156,21 @@ class TrussBandLayout(BandLayout):
         size = (3 * bw + 1) * n
         r, c = self._band_rc()
         out = r < 0
-        # (i, j) at 3bw·j + 2bw + i, and its mirror (j, i) off the diagonal
-        up = c.astype(np.int64) * (3 * bw) + 2 * bw + r
-        mirror = (r != c) & ~out
-        low = r[mirror].astype(np.int64) * (3 * bw) + 2 * bw + c[mirror]
-        up[out] = size
-        idx = np.concatenate([up, low])
-        w = np.concatenate([self.data, self.data[mirror]])
+        mirror = np.flatnonzero((r != c) & ~out)
+        E = r.size
+        # (i, j) at 3bw·j + 2bw + i and, off the diagonal, its mirror (j, i): written into one
+        # preallocated index and weight array (memory, not arithmetic, is the cost here)
+        idx = np.empty(E + mirror.size, dtype=np.int64)
+        w = np.empty(E + mirror.size)
+        np.multiply(c, 3 * bw, out=idx[:E])
+        idx[:E] += 2 * bw
+        idx[:E] += r
+        idx[:E][out] = size
+        np.multiply(r[mirror], 3 * bw, out=idx[E:])
+        idx[E:] += 2 * bw
+        idx[E:] += c[mirror]
+        w[:E] = self.data
+        np.take(self.data, mirror, out=w[E:])
         flat = np.bincount(idx, weights=w, minlength=size + 1)[:size]
         return flat.reshape((3 * bw + 1, n), order="F")
 
