@@ -76,24 +76,22 @@ def test_cholesky_and_lu_solve():
     assert g.kind == "banded-lu" and np.abs(B @ y - 1.0).max() < 1e-10
 
 
-def test_concurrent_lu(monkeypatch):
-    """From CONCURRENT_LU_MIN on, the LU runs beside the Cholesky attempt: the Cholesky factor
-    is still taken when it succeeds, the LU when it fails."""
-    monkeypatch.setattr(banded, "CONCURRENT_LU_MIN", 10)
-    monkeypatch.setattr(banded, "worker_count", lambda: 2)
-    assert banded.banded_factor(_random_band(200, 4, seed=5)).kind == "banded"
-    assert banded.banded_factor(_random_band(200, 4, seed=5, shift=-0.5)).kind == "banded-lu"
+@pytest.mark.parametrize("n,bw", [(1, 0), (2, 1), (5, 1), (7, 3), (30, 5), (6, 5), (40, 12)])
+def test_general_band_from_upper(n, bw):
+    """The LU storage copied from the upper band equals the one filled from the entries."""
+    L = banded.band_layout(_random_band(n, bw, seed=n + bw))
+    gb = banded.general_from_upper(L.upper_band())
+    assert gb.flags.f_contiguous
+    assert np.array_equal(gb, L.general_band())
 
 
 def _blas_threads() -> list[int]:
     return [p["num_threads"] for p in threadpool_info() if p["user_api"] == "blas"]
 
 
-def test_concurrent_lu_restores_blas_threads(monkeypatch):
-    """The concurrent factorisations leave the BLAS thread count as they found it, also when
-    called from a worker thread (OpenBLAS keeps a limit lifted by another thread)."""
-    monkeypatch.setattr(banded, "CONCURRENT_LU_MIN", 10)
-    monkeypatch.setattr(banded, "worker_count", lambda: 2)
+def test_factor_restores_blas_threads():
+    """The banded factorisations leave the BLAS thread count as they found it, also when
+    called from a worker thread (as modal analysis does)."""
     before = _blas_threads()
     banded.banded_factor(_random_band(200, 4, seed=6, shift=-0.5))
     assert _blas_threads() == before

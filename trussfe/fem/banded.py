@@ -19,7 +19,6 @@ the way into LAPACK.
 """
 from __future__ import annotations
 
-from contextlib import nullcontext
 from dataclasses import dataclass
 
 import numpy as np
@@ -28,7 +27,6 @@ import scipy.sparse as sp
 from scipy.sparse.csgraph import reverse_cuthill_mckee
 from threadpoolctl import ThreadpoolController
 
-from ..threads import parallel_map, worker_count
 
 #: Largest half-bandwidth (after reordering) for which :func:`banded_factor` factorises.
 BANDED_MAX_BANDWIDTH = 400
@@ -46,11 +44,6 @@ BANDED_LU_PIVOT = 1e-15
 #: factor (pivot ratio 1e-16: numerically singular).
 CHOLESKY_PIVOT = 1e-8
 
-#: Order from which :func:`banded_factor` runs the LU factorisation in a second thread while
-#: the Cholesky factorisation is tried: round-off leaves chains of more than ~20,000 bays
-#: (360,000 DOFs) numerically indefinite, and the Cholesky attempt then only costs time.
-CONCURRENT_LU_MIN = 400_000
-
 _CONTROLLER: ThreadpoolController | None = None
 
 
@@ -59,8 +52,7 @@ def one_blas_thread():
     only add overhead (3–7x slower).  The controller is made once — building one scans the
     loaded libraries, ~3 ms, which a Lanczos iteration would pay at every solve.  The limit
     must be lifted by the thread that set it (OpenBLAS ignores a restore from another
-    thread), so contexts are not to overlap across threads: :func:`banded_factor` sets it
-    once around its two concurrent factorisations."""
+    thread), so contexts are not to overlap across threads."""
     global _CONTROLLER
     if _CONTROLLER is None:
         _CONTROLLER = ThreadpoolController()
@@ -218,6 +210,41 @@ def band_layout_free(K: sp.csr_matrix, free: np.ndarray,
     return _finish(n, row, col, data, max_bandwidth, anchored, matrix=matrix)
 
 
+def general_from_upper(ab: np.ndarray) -> np.ndarray:
+    """LAPACK ``gbtrf`` storage (kl = ku = bw, Fortran order) of the symmetric matrix whose
+    upper band storage is ``ab`` (shape (bw + 1, n), Fortran order).
+
+    ``gb[2bw + i − j, j] = A[i, j]``: rows bw … 2bw are ``ab`` itself; row 2bw + d holds the
+    d-th subdiagonal, ``A[j + d, j] = ab[bw − d, j + d]``, read through a strided view of
+    ``ab``; rows 0 … bw − 1 are zeros, LAPACK's room for the fill-in.
+
+    Examples
+    --------
+    >>> A = np.array([[4.0, 1.0, 0.0], [1.0, 5.0, 2.0], [0.0, 2.0, 6.0]])
+    >>> ab = np.asfortranarray([[0.0, 1.0, 2.0], [4.0, 5.0, 6.0]])
+    >>> general_from_upper(ab)[1:].tolist()        # rows: superdiagonal, diagonal, sub
+    [[0.0, 1.0, 2.0], [4.0, 5.0, 6.0], [1.0, 2.0, 0.0]]
+    """
+    bw1, n = ab.shape
+    bw = bw1 - 1
+    G = np.empty((n, 3 * bw + 1))             # C order: G.T is the Fortran (3bw + 1, n) array
+    G[:, :bw] = 0.0
+    G[:, bw:2 * bw + 1] = ab.T
+    if bw:
+        flat = ab.reshape(-1, order="F")      # ab[k, j] at (bw + 1)·j + k
+        # G[j, 2bw + d] = ab[bw − d, j + d] = flat[(bw + 1)·j + bw + bw·d], d = 1 … bw
+        full = max(n - bw, 0)
+        step = flat.strides[0]
+        sub = np.lib.stride_tricks.as_strided(flat[2 * bw:], shape=(full, bw),
+                                              strides=((bw + 1) * step, bw * step),
+                                              writeable=False)
+        G[:full, 2 * bw + 1:] = sub
+        j = np.arange(full, n)                # the last bw columns: a short tail
+        for d in range(1, bw + 1):
+            G[j, 2 * bw + d] = np.where(j + d < n, ab[bw - d, np.minimum(j + d, n - 1)], 0.0)
+    return G.T
+
+
 class BandedCholesky:
     """Banded Cholesky factorisation of a sparse symmetric positive definite matrix (cost
     n·b² to factorise, n·b per solve, b the half-bandwidth).
@@ -245,16 +272,17 @@ class BandedCholesky:
 
     @classmethod
     def build(cls, A: sp.spmatrix | None = None, max_bandwidth: int = BANDED_MAX_BANDWIDTH,
-              layout: BandLayout | None = None, blas_limit: bool = True
+              layout: BandLayout | None = None, upper: np.ndarray | None = None
               ) -> "BandedCholesky | None":
         """Factorise ``A`` (or the matrix of ``layout``), or return None (bandwidth above
-        ``max_bandwidth``, or not numerically positive definite).  ``blas_limit=False``: the
-        caller has set :func:`one_blas_thread`."""
+        ``max_bandwidth``, or not numerically positive definite).  ``upper``: the layout's
+        band array, already made; it is left unchanged (the factor goes to a copy)."""
         layout = band_layout(A, max_bandwidth) if layout is None else layout
         if layout is None:
             return None
-        with one_blas_thread() if blas_limit else nullcontext():
-            c, info = sla.lapack.dpbtrf(layout.upper_band(), lower=0, overwrite_ab=1)
+        ab = layout.upper_band() if upper is None else upper
+        with one_blas_thread():
+            c, info = sla.lapack.dpbtrf(ab, lower=0, overwrite_ab=int(upper is None))
         if info != 0:                          # a non-positive pivot: not positive definite
             return None
         d = np.abs(c[layout.bandwidth])
@@ -299,17 +327,18 @@ class BandedLU:
 
     @classmethod
     def build(cls, A: sp.spmatrix | None = None, max_bandwidth: int = BANDED_MAX_BANDWIDTH,
-              layout: BandLayout | None = None, blas_limit: bool = True
+              layout: BandLayout | None = None, upper: np.ndarray | None = None
               ) -> "BandedLU | None":
         """Factorise ``A`` (or the matrix of ``layout``) or return None (bandwidth too large,
-        or numerically singular).  ``blas_limit=False``: the caller has set
-        :func:`one_blas_thread`."""
+        or numerically singular).  ``upper``: the layout's upper band array, already made
+        (the LU storage is then copied from it instead of filled from the entries)."""
         layout = band_layout(A, max_bandwidth) if layout is None else layout
         if layout is None:
             return None
         bw = layout.bandwidth
-        with one_blas_thread() if blas_limit else nullcontext():
-            lub, piv, info = sla.lapack.dgbtrf(layout.general_band(), bw, bw, overwrite_ab=1)
+        gb = layout.general_band() if upper is None else general_from_upper(upper)
+        with one_blas_thread():
+            lub, piv, info = sla.lapack.dgbtrf(gb, bw, bw, overwrite_ab=1)
         if info != 0:                                      # an exactly zero pivot
             return None
         d = np.abs(lub[2 * bw])
@@ -336,11 +365,8 @@ def banded_factor(A: sp.spmatrix | None = None, max_bandwidth: int = BANDED_MAX_
         layout = band_layout(A, max_bandwidth, anchored)
     if layout is None:
         return None
-    if layout.n >= CONCURRENT_LU_MIN and worker_count() >= 2:
-        # LAPACK and numpy's indexing release the GIL: the LU costs only the spare core
-        with one_blas_thread():
-            chol, lu = parallel_map(lambda build: build(layout=layout, blas_limit=False),
-                                    [BandedCholesky.build, BandedLU.build])
-        return chol or lu
-    return (BandedCholesky.build(layout=layout)
-            or BandedLU.build(layout=layout))
+    # one band array: Cholesky factorises a copy, LU (if needed) is laid out from it — a
+    # second fill from the entries would cost more (1.6 s against 2.6 s at 1.8 M unknowns)
+    upper = layout.upper_band()
+    return (BandedCholesky.build(layout=layout, upper=upper)
+            or BandedLU.build(layout=layout, upper=upper))
