@@ -388,9 +388,10 @@ def _check_geometry(coords, conn, member_ids, node_ids) -> None:
     n = len(node_ids)
     key = np.sort(conn, axis=1)
     flat = key[:, 0] * n + key[:, 1]
-    _, first, counts = np.unique(flat, return_index=True, return_counts=True)
-    if np.any(counts > 1):
-        dup = flat[first[np.argmax(counts > 1)]]
+    ordered = np.sort(flat)                 # a plain sort: no index or count arrays needed
+    repeated = ordered[1:][ordered[1:] == ordered[:-1]]
+    if repeated.size:
+        dup = repeated.min()                # the same pair unique() would name first
         same = np.flatnonzero(flat == dup)
         raise InputError(f"members.{member_ids[same[1]]}",
                          f"duplicates member '{member_ids[same[0]]}' (same two nodes)")
