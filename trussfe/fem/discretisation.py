@@ -938,6 +938,14 @@ class FEModel:
         for g, fl in zip(self.groups, f_local):
             if g.kind == "bar" and not np.any(fl):
                 # axial field only: end forces ∓EA/L e·(u_b − u_a) (reference_bar stiffness)
+                op = getattr(self, "_elongation", None)
+                if op is not None and len(self.groups) == 1:
+                    # a truss solved from its bars (trussfe.fem.truss_band): N = k · B u
+                    B, kb = op
+                    N = kb * (B @ u_global)
+                    out[g.elements, 0, 0] = -N
+                    out[g.elements, 1, 0] = N
+                    continue
                 mem, ends, ex, L = self._bar_geometry(g)
                 # node translations are the first n·dim global DOFs (see _build)
                 U = u_global[: s.n_nodes * dim].reshape(s.n_nodes, dim)

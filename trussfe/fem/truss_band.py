@@ -196,25 +196,28 @@ def truss_band_layout(fe: FEModel, max_bandwidth: int) -> TrussBandLayout | None
     ndof = new[fe.node_dofs[:, :dim]]                          # (node, dim), −1 = fixed
     ends = s.connectivity
     ref = reference_bar()["stiffness"]
-    blocks = _bar_blocks(fe).reshape(-1, dim * dim)            # (bar, dim²)
     iu, ju = np.triu_indices(dim)
-    diag = np.empty((n_nodes, iu.size))                        # upper half of node blocks
-    for q, (i, j) in enumerate(zip(iu, ju)):
-        col = blocks[:, i * dim + j]
-        diag[:, q] = (ref[0, 0] * np.bincount(ends[:, 0], col, minlength=n_nodes)
-                      + ref[1, 1] * np.bincount(ends[:, 1], col, minlength=n_nodes))
+    nd = n_nodes * iu.size
+    m = ends.shape[0]
+    E = nd + m * dim * dim
+    data = np.empty(E)
+    # the off-diagonal blocks straight into their place in the entry array
+    blocks = data[nd:].reshape(m, dim * dim)
+    blocks[:] = _bar_blocks(fe).reshape(m, dim * dim)
+    # upper half of the node blocks: node-by-bar incidence (ref₀₀ at the start, ref₁₁ at the
+    # end) times the bars' blocks, one sparse product
+    incidence = sp.csc_matrix((np.tile([ref[0, 0], ref[1, 1]], m), ends.ravel(),
+                               np.arange(0, 2 * m + 1, 2)), shape=(n_nodes, m))
+    data[:nd].reshape(n_nodes, iu.size)[:] = incidence @ blocks[:, iu * dim + ju]
     blocks *= ref[0, 1]                                        # the off-diagonal blocks
     A, B = ndof[ends[:, 0]], ndof[ends[:, 1]]                  # (bar, dim)
-    nd = n_nodes * iu.size
-    E = nd + blocks.size
     row = np.empty(E, dtype=it)
     col = np.empty(E, dtype=it)
     np.minimum(ndof[:, iu], ndof[:, ju], out=row[:nd].reshape(n_nodes, -1))
     np.maximum(ndof[:, iu], ndof[:, ju], out=col[:nd].reshape(n_nodes, -1))
     np.minimum(A[:, :, None], B[:, None, :], out=row[nd:].reshape(-1, dim, dim))
     np.maximum(A[:, :, None], B[:, None, :], out=col[nd:].reshape(-1, dim, dim))
-    data = np.concatenate([diag.ravel(), blocks.ravel()])
-    del blocks, diag
+    del blocks
     nonzero = data != 0.0
     kept = row >= 0                                            # both DOFs free
     width = col - row
