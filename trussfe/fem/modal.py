@@ -51,8 +51,7 @@ from ..errors import AnalysisError, InputError
 from ..model.structure import Structure
 from .discretisation import FEModel, discretise
 from ..threads import parallel_map
-from .banded import (BANDED_MAX_BANDWIDTH, BandedCholesky, BandedLU,  # noqa: F401
-                     band_layout_free, banded_factor)
+from .banded import band_layout_free, banded_factor
 from .lanczos import shift_invert_lanczos
 from .linsolve import SingularMatrixError, factorize
 from .solver import FreeBlock, free_submatrix, null_space
