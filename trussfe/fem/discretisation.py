@@ -67,6 +67,12 @@ BAR_MODELS = ("truss", "pinned-beam")
 _INTORDER = 6
 
 
+def _unit_rows(d: np.ndarray) -> np.ndarray:
+    """Rows of ``d`` scaled to unit length (the members' axes from their end-to-end
+    vectors; one arithmetic for :func:`local_axes` and :attr:`FEModel.axis`)."""
+    return d / np.sqrt(np.einsum("ij,ij->i", d, d))[:, None]
+
+
 def local_axes(structure: Structure, coords: np.ndarray | None = None) -> np.ndarray:
     """Rotation matrices from global to member axes.
 
@@ -92,8 +98,7 @@ def local_axes(structure: Structure, coords: np.ndarray | None = None) -> np.nda
            [ 0.,  0.,  1.],
            [ 0., -1.,  0.]])
     """
-    d = structure.member_vectors(coords)                     # (member, dim)
-    ex = d / np.sqrt(np.einsum("ij,ij->i", d, d))[:, None]
+    ex = _unit_rows(structure.member_vectors(coords))        # (member, dim)
     m, dim = ex.shape
     R = np.empty((m, dim, dim))
     R[:, 0] = ex
@@ -153,6 +158,7 @@ class _Group:
     _G: sp.csr_matrix | None = None
     _K_local: sp.csr_matrix | None = None
     _K_global: sp.csr_matrix | None = None   # bar groups: global stiffness, once assembled
+    _elongation: tuple | None = None         # bar groups: (B, EA/L), FEModel.bar_elongation
 
     def _part(self, name: str):
         if self._parts is None:
@@ -240,6 +246,28 @@ def reference_bar() -> dict:
     return _REFERENCE
 
 
+def node_diagonal_blocks(n_nodes: int, ends: np.ndarray, ref: np.ndarray,
+                         blocks: np.ndarray) -> np.ndarray:
+    """Σ over the bars at each node of ``ref[0, 0]`` (bar starts there) or ``ref[1, 1]``
+    (bar ends there) times the bar's block: one product with the node-by-bar incidence.
+
+    Parameters
+    ----------
+    ends : ndarray of int, shape (e, 2)
+    ref : ndarray, shape (2, 2)
+    blocks : ndarray, shape (e, c)
+        Any number ``c`` of block entries per bar.
+
+    Returns
+    -------
+    ndarray, shape (n_nodes, c)
+    """
+    ne = ends.shape[0]
+    incidence = sp.csc_matrix((np.tile([ref[0, 0], ref[1, 1]], ne), ends.ravel(),
+                               np.arange(0, 2 * ne + 1, 2)), shape=(n_nodes, ne))
+    return incidence @ blocks
+
+
 def _node_block_matrix(n_nodes: int, dim: int, ends: np.ndarray, ref: np.ndarray,
                        blocks: np.ndarray, n_dof: int) -> sp.csr_matrix:
     """Σ over bars of ``ref ⊗ blocks[e]`` on the translations of the bars' two end nodes.
@@ -272,10 +300,7 @@ def _node_block_matrix(n_nodes: int, dim: int, ends: np.ndarray, ref: np.ndarray
     ne = a.size
     flat = blocks.reshape(-1, dim * dim)                          # (bar, dim·dim)
     touched = np.bincount(ends.ravel(), minlength=n_nodes) > 0
-    # diagonal blocks: node-by-bar incidence (ref00 at the start, ref11 at the end) @ blocks
-    incidence = sp.csc_matrix((np.tile([ref[0, 0], ref[1, 1]], ne), ends.ravel(),
-                               np.arange(0, 2 * ne + 1, 2)), shape=(n_nodes, ne))
-    diag = incidence @ flat                                       # (node, dim·dim)
+    diag = node_diagonal_blocks(n_nodes, ends, ref, flat)         # (node, dim·dim)
     nodes = np.flatnonzero(touched)
     rows = np.concatenate([nodes, a, b])
     cols = np.concatenate([nodes, b, a])
@@ -373,7 +398,7 @@ class FEModel:
         # unit vectors (as local_axes' first row)
         d = s.member_vectors()
         L = np.linalg.norm(d, axis=1)
-        self._axis = d / np.sqrt(np.einsum("ij,ij->i", d, d))[:, None]
+        self._axis = _unit_rows(d)
         del d
         self._rotation = None
         is_frame = s.is_beam.copy() if self.bar_model == "truss" else np.ones(m, dtype=bool)
@@ -479,11 +504,6 @@ class FEModel:
     def axis(self) -> np.ndarray:
         """Unit vector of every member from start to end node, shape (m, dim): the first
         row of :attr:`rotation`, by the same arithmetic."""
-        if self._rotation is not None:
-            return self._rotation[:, 0]
-        if getattr(self, "_axis", None) is None:
-            d = self.structure.member_vectors()
-            self._axis = d / np.sqrt(np.einsum("ij,ij->i", d, d))[:, None]
         return self._axis
 
     def _check_properties(self, is_frame: np.ndarray) -> None:
@@ -751,17 +771,40 @@ class FEModel:
         Equal to ``Tᵀ K_local T`` of the general path to round-off (tested), without building
         bases or ``T``.
         """
-        _, ends, ex, _ = self._bar_geometry(g)
+        _, ends, _, _ = self._bar_geometry(g)
+        return _node_block_matrix(self.structure.n_nodes, self.ndim, ends, reference_bar()[ref],
+                                  self.bar_blocks(g, scale, transverse, full), self.n_dof)
+
+    def bar_blocks(self, g: _Group, scale: np.ndarray, transverse: bool = False,
+                   full: bool = False) -> np.ndarray:
+        """Per bar of group ``g``: ``scale · e eᵀ`` (axial), ``scale · (I − e eᵀ)``
+        (``transverse``) or ``scale · I`` (``full``), shape (bar, dim, dim)."""
+        _, _, ex, _ = self._bar_geometry(g)
         dim = self.ndim
         if full:
-            blocks = np.broadcast_to(np.eye(dim), (ex.shape[0], dim, dim)) * scale[:, None, None]
-        else:
-            blocks = ex[:, :, None] * ex[:, None, :]                 # (bar, dim, dim) e eᵀ
-            if transverse:
-                np.subtract(np.eye(dim)[None], blocks, out=blocks)   # I − e eᵀ
-            blocks *= scale[:, None, None]                           # in place: no new memory
-        return _node_block_matrix(self.structure.n_nodes, dim, ends, reference_bar()[ref],
-                                  blocks, self.n_dof)
+            return np.broadcast_to(np.eye(dim), (ex.shape[0], dim, dim)) * scale[:, None, None]
+        blocks = ex[:, :, None] * ex[:, None, :]                     # (bar, dim, dim) e eᵀ
+        if transverse:
+            np.subtract(np.eye(dim)[None], blocks, out=blocks)       # I − e eᵀ
+        blocks *= scale[:, None, None]                               # in place: no new memory
+        return blocks
+
+    def bar_elongation(self, g: _Group) -> tuple[sp.csr_matrix, np.ndarray]:
+        """``(B, k)`` of the bars of group ``g``: the sparse matrix of their elongations
+        ``e·(u_b − u_a)`` (one row per bar, shape (bar, n_dof)) and their stiffnesses
+        ``EA/L``, so that the group's stiffness is ``Bᵀ diag(k) B`` (the reference bar's
+        ``[[1, −1], [−1, 1]]``).  Made once per group: ``2·dim`` entries per bar."""
+        if g._elongation is None:
+            s = self.structure
+            dim = self.ndim
+            mem, ends, ex, L = self._bar_geometry(g)
+            nb = ex.shape[0]
+            cols = self.node_dofs[ends][:, :, :dim].reshape(nb, 2 * dim)   # start | end
+            data = np.concatenate([-ex, ex], axis=1)
+            B = sp.csr_matrix((data.ravel(), cols.ravel(),
+                               np.arange(0, 2 * dim * nb + 1, 2 * dim)), shape=(nb, self.n_dof))
+            g._elongation = (B, (s.E * s.area)[mem] / L)
+        return g._elongation
 
     def _sum_groups(self, bar, general) -> sp.csr_matrix:
         """Σ over groups: ``bar(g)`` for the bar group, ``general(g)`` = Tᵀ X_local T else."""
@@ -785,7 +828,7 @@ class FEModel:
             if g._K_global is None:     # kept: static recovery and later solves reuse it
                 mem, _, _, L = self._bar_geometry(g)
                 g._K_global = self._bar_matrix(g, "stiffness", (s.E * s.area)[mem] / L)
-            return g._K_global.copy() if copy or len(self.groups) > 1 else g._K_global
+            return g._K_global.copy() if copy else g._K_global
         return self._sum_groups(bar, self.local_stiffness)
 
     def mass(self, kind: str = "consistent", include_nodal_masses: bool = True
@@ -938,10 +981,9 @@ class FEModel:
         for g, fl in zip(self.groups, f_local):
             if g.kind == "bar" and not np.any(fl):
                 # axial field only: end forces ∓EA/L e·(u_b − u_a) (reference_bar stiffness)
-                op = getattr(self, "_elongation", None)
-                if op is not None and len(self.groups) == 1:
-                    # a truss solved from its bars (trussfe.fem.truss_band): N = k · B u
-                    B, kb = op
+                if g._elongation is not None:
+                    # made for a truss solved from its bars (trussfe.fem.truss_band): N = k·Bu
+                    B, kb = g._elongation
                     N = kb * (B @ u_global)
                     out[g.elements, 0, 0] = -N
                     out[g.elements, 1, 0] = N

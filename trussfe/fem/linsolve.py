@@ -139,6 +139,22 @@ class Factor:
         return x
 
 
+def banded_limit(backend: str, n: int) -> int | None:
+    """Largest half-bandwidth a banded factorisation may have under ``backend`` for ``n``
+    unknowns, or None when ``backend`` does not try one (``auto``: from
+    :data:`BANDED_MIN_DOF` unknowns, up to :data:`BANDED_MAX_BANDWIDTH`; ``banded``: always)."""
+    if backend == "banded":
+        return max(n - 1, 0)
+    if backend == "auto" and n >= BANDED_MIN_DOF:
+        return BANDED_MAX_BANDWIDTH
+    return None
+
+
+def general_backend(n: int) -> str:
+    """The sparse backend ``auto`` uses when no banded factorisation applies."""
+    return "pardiso" if n >= PARDISO_MIN_DOF and pardiso_available() else "superlu"
+
+
 def factorize(A: sp.spmatrix, backend: str = "auto", anchored: np.ndarray | None = None,
               symmetric: bool = False) -> Factor:
     """Factorise a sparse square matrix.
@@ -172,12 +188,12 @@ def factorize(A: sp.spmatrix, backend: str = "auto", anchored: np.ndarray | None
     A = sp.csr_matrix(A)
     n = A.shape[0]
     if backend in ("auto", "banded"):
-        if backend == "banded" or n >= BANDED_MIN_DOF:
-            limit = BANDED_MAX_BANDWIDTH if backend == "auto" else max(n - 1, 0)
+        limit = banded_limit(backend, n)
+        if limit is not None:
             band = banded_factor(A, max_bandwidth=limit, anchored=anchored)
             if band is not None:
                 return Factor(matrix=A, backend=band.kind, n=n, _solve=band.solve)
-        backend = "pardiso" if n >= PARDISO_MIN_DOF and pardiso_available() else "superlu"
+        backend = general_backend(n)
     if backend == "pardiso":
         return _pardiso(A, symmetric=symmetric)
     if backend != "superlu":

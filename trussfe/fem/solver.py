@@ -19,8 +19,8 @@ import scipy.sparse.linalg as spla
 
 from ..errors import MechanismError
 from .banded import band_layout_free, banded_factor
-from .linsolve import (BANDED_MAX_BANDWIDTH, BANDED_MIN_DOF, PARDISO_MIN_DOF, SINGULAR_PIVOT,
-                       Factor, SingularMatrixError, factorize, pardiso_available)
+from .linsolve import (SINGULAR_PIVOT, Factor, SingularMatrixError, banded_limit, factorize,
+                       general_backend)
 
 log = logging.getLogger(__name__)
 
@@ -128,17 +128,17 @@ def factorise(K: sp.spmatrix, free: np.ndarray, fe=None, item: str = "structure"
     n = free.size
     if n == 0:
         return Factorised(lu=_Empty(), free=free, n_dof=K.shape[0])
-    if backend == "banded" or (backend == "auto" and n >= BANDED_MIN_DOF):
+    limit = banded_limit(backend, n)
+    if limit is not None:
         # long, narrow structures: band storage straight from K's free rows and columns.  A
         # DOF nothing is attached to has an empty row: both band factorisations refuse it.
-        limit = BANDED_MAX_BANDWIDTH if backend == "auto" else max(n - 1, 0)
         layout = band_layout_free(K, free, limit)
         band = banded_factor(layout=layout) if layout is not None else None
         if band is not None:
             lu = Factor(matrix=FreeBlock(K, free), backend=band.kind, n=n, _solve=band.solve)
             log.debug("factorised %d free DOFs (%s)", n, lu.backend)
             return Factorised(lu=lu, free=free, n_dof=K.shape[0])
-        backend = "pardiso" if n >= PARDISO_MIN_DOF and pardiso_available() else "superlu"
+        backend = general_backend(n)
     Kff = free_submatrix(K, free)
     if np.any(Kff.diagonal() <= 0):        # a DOF nothing is attached to
         _raise_mechanism(Kff, free, fe, item)
@@ -160,25 +160,34 @@ class FreeBlock:
     array([ 2., 14.])
     """
 
-    def __init__(self, K: sp.csr_matrix, free: np.ndarray):
+    def __init__(self, K: sp.csr_matrix | None, free: np.ndarray, n_dof: int | None = None):
         self.K, self.free = K, free
+        self.n_dof = K.shape[0] if K is not None else int(n_dof)
         self.shape = (free.size, free.size)
         self._csr: sp.csr_matrix | None = None
 
+    def _product(self, full: np.ndarray) -> np.ndarray:
+        """The whole matrix times a vector over all DOFs (subclasses: without a matrix)."""
+        return self.K @ full
+
+    def _matrix(self) -> sp.csr_matrix:
+        """The whole sparse matrix."""
+        return self.K
+
     def __matmul__(self, x: np.ndarray) -> np.ndarray:
         x = np.asarray(x, dtype=float)
-        full = np.zeros((self.K.shape[0],) + x.shape[1:])
+        full = np.zeros((self.n_dof,) + x.shape[1:])
         full[self.free] = x
-        return (self.K @ full)[self.free]
+        return self._product(full)[self.free]
 
     def diagonal(self) -> np.ndarray:
         """The diagonal of the block."""
-        return self.K.diagonal()[self.free]
+        return self._matrix().diagonal()[self.free]
 
     def tocsr(self) -> sp.csr_matrix:
         """The block as a sparse matrix (formed once, on first request)."""
         if self._csr is None:
-            self._csr = free_submatrix(self.K, self.free)
+            self._csr = free_submatrix(self._matrix(), self.free)
         return self._csr
 
 
@@ -192,11 +201,9 @@ def factorise_truss(fe, backend: str = "auto") -> Factorised | None:
     from .truss_band import TrussStiffness, is_plain_truss, truss_band_layout
 
     n = fe.free.size
-    if not (backend == "banded" or (backend == "auto" and n >= BANDED_MIN_DOF)):
+    limit = banded_limit(backend, n)
+    if limit is None or n == 0 or not is_plain_truss(fe):
         return None
-    if n == 0 or not is_plain_truss(fe):
-        return None
-    limit = BANDED_MAX_BANDWIDTH if backend == "auto" else max(n - 1, 0)
     t0 = time.perf_counter()
     layout = truss_band_layout(fe, limit)
     t1 = time.perf_counter()

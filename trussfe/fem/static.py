@@ -241,10 +241,8 @@ def solve_static(structure: Structure, bar_model: str = "truss",
         # (von_mises with V = M = 0), computed directly for large pin-jointed models
         s1 = np.abs(F[..., 0]) / s.area[:, None]
         s2 = s1.copy()
-    if F.shape[1] == 2:                      # two stations (no NaN padding): the larger
-        max_vm = np.fmax(np.fmax(s1[:, 0], s1[:, 1]), np.fmax(s2[:, 0], s2[:, 1]))
-    else:
-        max_vm = np.nanmax(np.fmax(s1, s2), axis=1) if m else np.zeros(0)
+    # largest over the stations; fmax skips the NaN padding past a member's own stations
+    max_vm = np.fmax.reduce(np.fmax(s1, s2), axis=1)
     result = StaticResult(
         fe=fe, u=u, f=f, displacements=fe.node_values(u), reactions=fe.node_values(reac),
         axial_force=N_mid, axial_stress=N_mid / s.area, strain=N_mid / (s.E * s.area),

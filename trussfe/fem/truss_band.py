@@ -18,8 +18,9 @@ from __future__ import annotations
 import numpy as np
 import scipy.sparse as sp
 
-from .banded import NATURAL_BANDWIDTH_OK, BandLayout
-from .discretisation import FEModel, reference_bar
+from .banded import NATURAL_BANDWIDTH_OK, BandLayout, general_from_upper
+from .discretisation import FEModel, node_diagonal_blocks, reference_bar
+from .solver import FreeBlock
 
 
 def is_plain_truss(fe: FEModel) -> bool:
@@ -31,36 +32,10 @@ def is_plain_truss(fe: FEModel) -> bool:
             and bool(np.allclose(ref, [[1.0, -1.0], [-1.0, 1.0]], rtol=1e-14, atol=0.0)))
 
 
-def _bar_blocks(fe: FEModel) -> np.ndarray:
-    """``EA/L · e eᵀ`` of every bar, shape (m, dim, dim)."""
-    s = fe.structure
-    mem, _, ex, L = fe._bar_geometry(fe.groups[0])
-    blocks = ex[:, :, None] * ex[:, None, :]
-    blocks *= ((s.E * s.area)[mem] / L)[:, None, None]
-    return blocks
-
-
-def _elongation_operator(fe: FEModel):
-    """``(B, k)``: the sparse matrix of the bars' elongations ``e·(u_b − u_a)`` (one row per
-    bar, shape (m, n_dof)) and the bars' stiffnesses ``EA/L``, so that ``K = Bᵀ diag(k) B``.
-    Made once per model: ``2·dim`` entries per bar against ~17 per DOF in K."""
-    op = getattr(fe, "_elongation", None)
-    if op is None:
-        s = fe.structure
-        dim = fe.ndim
-        _, ends, ex, L = fe._bar_geometry(fe.groups[0])
-        m = ex.shape[0]
-        cols = fe.node_dofs[ends][:, :, :dim].reshape(m, 2 * dim)   # (bar, start | end)
-        data = np.concatenate([-ex, ex], axis=1)
-        B = sp.csr_matrix((data.ravel(), cols.ravel(), np.arange(0, 2 * dim * m + 1, 2 * dim)),
-                          shape=(m, fe.n_dof))
-        op = fe._elongation = (B, (s.E * s.area) / L)
-    return op
-
-
 def internal_forces(fe: FEModel, u: np.ndarray) -> np.ndarray:
-    """``K @ u`` of a plain truss (:func:`is_plain_truss`) as ``Bᵀ (k · B u)``: the bars'
-    axial forces from their elongations, assembled at the nodes.
+    """``K @ u`` of a plain truss (:func:`is_plain_truss`) as ``Bᵀ (k · B u)``
+    (:meth:`FEModel.bar_elongation`): the bars' axial forces from their elongations,
+    assembled at the nodes.
 
     Parameters
     ----------
@@ -71,14 +46,14 @@ def internal_forces(fe: FEModel, u: np.ndarray) -> np.ndarray:
     -------
     ndarray, same shape as ``u``
     """
-    B, k = _elongation_operator(fe)
+    B, k = fe.bar_elongation(fe.groups[0])
     u = np.asarray(u, dtype=float)
     N = B @ u
     N *= k if u.ndim == 1 else k[:, None]
     return B.T @ N
 
 
-class TrussStiffness:
+class TrussStiffness(FreeBlock):
     """K_ff of a plain truss as an operator, from its bars: products (:func:`internal_forces`),
     the diagonal, and the sparse matrix only when a caller asks for it.
 
@@ -94,28 +69,19 @@ class TrussStiffness:
     """
 
     def __init__(self, fe: FEModel):
-        self.fe, self.free = fe, fe.free
-        self.shape = (fe.free.size, fe.free.size)
-        self._csr = None
+        super().__init__(None, fe.free, n_dof=fe.n_dof)
+        self.fe = fe
 
-    def __matmul__(self, x: np.ndarray) -> np.ndarray:
-        x = np.asarray(x, dtype=float)
-        full = np.zeros((self.fe.n_dof,) + x.shape[1:])
-        full[self.free] = x
-        return internal_forces(self.fe, full)[self.free]
+    def _product(self, full: np.ndarray) -> np.ndarray:
+        return internal_forces(self.fe, full)
+
+    def _matrix(self) -> sp.csr_matrix:
+        return self.fe.stiffness(copy=False)
 
     def diagonal(self) -> np.ndarray:
         """``K_ii`` of the free DOFs: Σ over the bars at the node of ``EA/L · e_j²``."""
-        B, k = _elongation_operator(self.fe)
+        B, k = self.fe.bar_elongation(self.fe.groups[0])
         return (B.multiply(B).T @ k)[self.free]
-
-    def tocsr(self) -> sp.csr_matrix:
-        """The sparse K_ff (assembled on first request)."""
-        if self._csr is None:
-            from .solver import free_submatrix
-
-            self._csr = free_submatrix(self.fe.stiffness(copy=False), self.free)
-        return self._csr
 
 
 class TrussBandLayout(BandLayout):
@@ -152,27 +118,7 @@ class TrussBandLayout(BandLayout):
         return flat.reshape((bw + 1, n), order="F")
 
     def general_band(self) -> np.ndarray:
-        bw, n = self.bandwidth, self.n
-        size = (3 * bw + 1) * n
-        r, c = self._band_rc()
-        out = r < 0
-        mirror = np.flatnonzero((r != c) & ~out)
-        E = r.size
-        # (i, j) at 3bw·j + 2bw + i and, off the diagonal, its mirror (j, i): written into one
-        # preallocated index and weight array (memory, not arithmetic, is the cost here)
-        idx = np.empty(E + mirror.size, dtype=np.int64)
-        w = np.empty(E + mirror.size)
-        np.multiply(c, 3 * bw, out=idx[:E])
-        idx[:E] += 2 * bw
-        idx[:E] += r
-        idx[:E][out] = size
-        np.multiply(r[mirror], 3 * bw, out=idx[E:])
-        idx[E:] += 2 * bw
-        idx[E:] += c[mirror]
-        w[:E] = self.data
-        np.take(self.data, mirror, out=w[E:])
-        flat = np.bincount(idx, weights=w, minlength=size + 1)[:size]
-        return flat.reshape((3 * bw + 1, n), order="F")
+        return general_from_upper(self.upper_band())
 
 
 def truss_band_layout(fe: FEModel, max_bandwidth: int) -> TrussBandLayout | None:
@@ -202,13 +148,13 @@ def truss_band_layout(fe: FEModel, max_bandwidth: int) -> TrussBandLayout | None
     E = nd + m * dim * dim
     data = np.empty(E)
     # the off-diagonal blocks straight into their place in the entry array
+    g = fe.groups[0]
+    mem, _, _, L = fe._bar_geometry(g)
     blocks = data[nd:].reshape(m, dim * dim)
-    blocks[:] = _bar_blocks(fe).reshape(m, dim * dim)
-    # upper half of the node blocks: node-by-bar incidence (ref₀₀ at the start, ref₁₁ at the
-    # end) times the bars' blocks, one sparse product
-    incidence = sp.csc_matrix((np.tile([ref[0, 0], ref[1, 1]], m), ends.ravel(),
-                               np.arange(0, 2 * m + 1, 2)), shape=(n_nodes, m))
-    data[:nd].reshape(n_nodes, iu.size)[:] = incidence @ blocks[:, iu * dim + ju]
+    blocks[:] = fe.bar_blocks(g, (s.E * s.area)[mem] / L).reshape(m, dim * dim)
+    # upper half of the node blocks
+    data[:nd].reshape(n_nodes, iu.size)[:] = node_diagonal_blocks(
+        n_nodes, ends, ref, blocks[:, iu * dim + ju])
     blocks *= ref[0, 1]                                        # the off-diagonal blocks
     A, B = ndof[ends[:, 0]], ndof[ends[:, 1]]                  # (bar, dim)
     row = np.empty(E, dtype=it)
