@@ -6,8 +6,7 @@
 from .discretisation import DEFAULT_FRAME_SUBDIVISIONS, FEModel, discretise, local_axes
 from .solver import Factorised, factorise, null_space
 from .static import StaticResult, section_forces, solve_static, static_json
-from .stress import von_mises
 
 __all__ = ["DEFAULT_FRAME_SUBDIVISIONS", "FEModel", "discretise", "local_axes", "Factorised",
            "factorise", "null_space", "StaticResult", "section_forces", "solve_static",
-           "static_json", "von_mises"]
+           "static_json"]

@@ -38,6 +38,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError
+from ..mechanics.euler import euler_load, weak_axis_inertia
 
 BUCKLING = ("none", "cap", "softening", "remove")
 YIELD = ("none", "cap", "remove")
@@ -235,7 +236,7 @@ def build_failure_laws(structure, default: dict | None = None,
     per_member = per_member or {}
     L = structure.lengths()
     E, A = structure.E, structure.area
-    Imin = np.fmin(structure.Iy, structure.Iz)
+    Imin = weak_axis_inertia(structure.Iy, structure.Iz)
     fy = structure.yield_strength
     for i in range(m):   # input checking only: once per member, at read time
         law = {**default, **per_member.get(i, {})}
@@ -272,7 +273,7 @@ def build_failure_laws(structure, default: dict | None = None,
                                            f"'{structure.sections[i].name}' has no second "
                                            "moment of area; give critical_load")
                 K = law.get("effective_length_factor", 1.0)
-                Pcr = math.pi ** 2 * E[i] * Imin[i] / (K * L[i]) ** 2
+                Pcr = float(euler_load(E[i], Imin[i], L[i], K))
             laws.buckling[i] = BUCKLING.index(bmode)
             laws.critical_load[i] = Pcr
             if bmode == "softening":

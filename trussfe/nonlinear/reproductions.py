@@ -20,6 +20,7 @@ from scipy.special import ellipe, ellipk
 
 from .._resources import mesh_path
 from ..io.model_file import read_model
+from ..mechanics.euler import euler_load, member_euler_loads
 from .analysis import run_postcritical
 from .buckling import linear_buckling
 from .model import NonlinearModel
@@ -152,7 +153,7 @@ def euler_column(subdivisions: int = 16) -> dict:
     """
     s = read_model(mesh_path("postcritical_euler_column.toml"))
     L = float(s.lengths()[0])
-    Pe = math.pi ** 2 * float(s.E[0] * s.Iz[0]) / L ** 2
+    Pe = float(euler_load(s.E[0], s.Iz[0], L))
     ratio_ref = -float(s.loads[1, 1]) / Pe              # reference load / P_E (= 1)
     out = {"reference_over_euler": ratio_ref}
     k = subdivisions
@@ -200,7 +201,7 @@ def euler_column_3d(subdivisions: int = 16) -> dict:
     s = read_model(mesh_path("postcritical_euler_column_3d.toml"))
     L = float(s.lengths()[0])
     a = (s.coords[1] - s.coords[0]) / L
-    Pe = math.pi ** 2 * float(s.E[0] * min(s.Iy[0], s.Iz[0])) / L ** 2
+    Pe = float(member_euler_loads(s)[0])
     ratio_ref = float(-s.loads[1, :3] @ a) / Pe          # reference load / P_E (= 1)
     out = {"reference_over_euler": ratio_ref}
     k = subdivisions
@@ -298,7 +299,7 @@ def linear_buckling_agreement(subdivisions: int = 16) -> dict:
     """
     s = read_model(mesh_path("postcritical_euler_column.toml"))
     L = float(s.lengths()[0])
-    Pe = math.pi ** 2 * float(s.E[0] * s.Iz[0]) / L ** 2
+    Pe = float(euler_load(s.E[0], s.Iz[0], L))
     P = -float(s.loads[1, 1])
     m = NonlinearModel(s, bar_model="pinned-beam", subdivisions=subdivisions)
     lf, _ = linear_buckling(m, count=2)

@@ -35,6 +35,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import AnalysisError
+from ..mechanics.mass import centroidal_inertia, gyration_squared, member_mass
 from ..model.structure import Structure
 from .active import active_members
 from .kinematics import Kinematics, _count_message, _Pattern, pad3
@@ -73,7 +74,7 @@ class MemberBodies:
         does for the section equations (``iz``, ``is``).
         """
         ell = self.tube_length if full_length else seg_length
-        return seg_mass * (self.tube_radius2 + np.square(ell) / 12.0)
+        return centroidal_inertia(seg_mass, ell, self.tube_radius2)
 
 
 def member_bodies(structure: Structure) -> MemberBodies:
@@ -85,7 +86,6 @@ def member_bodies(structure: Structure) -> MemberBodies:
     """
     L = structure.lengths()
     A = structure.area
-    Isec = 0.5 * (np.nan_to_num(structure.Iy) + np.nan_to_num(structure.Iz))
     m = structure.n_members
     tl = L.copy()
     mb = np.zeros(m)
@@ -97,8 +97,9 @@ def member_bodies(structure: Structure) -> MemberBodies:
         tl[k] = a.tube_length
         mb[k], cg[k], ib[k] = a.base_mass, a.base_cg, a.base_inertia_cg
         act[k] = True
-    return MemberBodies(tube_mass=structure.density * A * tl, tube_length=tl,
-                        tube_radius2=Isec / A, base_mass=mb, base_cg=cg, base_inertia_cg=ib,
+    return MemberBodies(tube_mass=member_mass(structure.density, A, tl), tube_length=tl,
+                        tube_radius2=gyration_squared(structure.Iy, structure.Iz, A),
+                        base_mass=mb, base_cg=cg, base_inertia_cg=ib,
                         active=act)
 
 
