@@ -49,6 +49,7 @@ import scipy.sparse as sp
 
 from ..fem.discretisation import FEModel, discretise
 from ..fem.modal import active_member_mass
+from ..mechanics.geometry import member_vectors
 from ..model.structure import Structure
 from ..rigid.active import active_members
 from ..rigid.forces import MemberBodies, element_accelerations
@@ -164,7 +165,7 @@ def rigid_field(fe: FEModel, node_vectors: np.ndarray) -> np.ndarray:
     conn = s.connectivity
     L = s.lengths()
     R = fe.rotation                                          # (member, local, global)
-    slope = np.einsum("mij,mj->mi", R, a[conn[:, 1]] - a[conn[:, 0]]) / L[:, None]
+    slope = np.einsum("mij,mj->mi", R, member_vectors(a, conn)) / L[:, None]
     rot = np.zeros((s.n_members, fe.nrot))                   # bending rotations, member axes
     if dim == 2:
         rot[:, 0] = slope[:, 1]

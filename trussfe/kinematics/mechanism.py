@@ -39,6 +39,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from ..errors import AnalysisError, InputError
+from ..mechanics.geometry import member_lengths, member_vectors
 from .compatibility import compatibility_matrix
 
 log = logging.getLogger(__name__)
@@ -85,14 +86,14 @@ def compatibility_error(coords: np.ndarray, connectivity: np.ndarray, lengths: n
     """
     x = np.asarray(coords, float) + np.asarray(increments, float)
     conn = np.asarray(connectivity, dtype=np.int64).reshape(-1, 2)
-    vec = x[conn[:, 1]] - x[conn[:, 0]]
+    vec = member_vectors(x, conn)
     L = np.asarray(lengths, float)
     return (np.einsum("ij,ij->i", vec, vec) - L * L) / (2.0 * L)
 
 
 def _jacobian(x: np.ndarray, conn: np.ndarray, lengths: np.ndarray, free: np.ndarray):
     """∂t/∂δ of the exact error at positions x: row i = (x_k − x_h)/l_i at the free columns."""
-    vec = x[conn[:, 1]] - x[conn[:, 0]]                    # (bar, dim)
+    vec = member_vectors(x, conn)                    # (bar, dim)
     n, dim = x.shape
     b = conn.shape[0]
     g = vec / lengths[:, None]
@@ -593,7 +594,7 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
     >>> conn = np.array([[0, 1], [1, 2], [2, 3]])
     >>> free = np.array([[0, 0], [1, 1], [1, 1], [0, 0]], bool)
     >>> r = trace_mechanism(x, conn, free, drives=[2], step=0.05, steps=4)
-    >>> L0 = np.linalg.norm(x[conn[:, 1]] - x[conn[:, 0]], axis=1)
+    >>> L0 = member_lengths(x, conn)
     >>> L4 = np.linalg.norm(r.coords[-1][conn[:, 1]] - r.coords[-1][conn[:, 0]], axis=1)
     >>> bool(np.allclose(L4, L0, rtol=1e-9)), round(float(r.coords[-1][1, 0]), 6)
     (True, 0.2)
@@ -621,7 +622,7 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
         raise InputError("step", f"must be finite and non-zero, got {step}")
     if steps < 1:
         raise InputError("steps", f"must be at least 1, got {steps}")
-    L = np.linalg.norm(x[conn[:, 1]] - x[conn[:, 0]], axis=1)
+    L = member_lengths(x, conn)
     Lmax = float(L.max())
     rtol = max(1e-8, 100 * tolerance) if rank_tolerance is None else float(rank_tolerance)
     h_full = float(np.max(np.abs(S)))

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..mechanics.geometry import member_lengths
 from .compatibility import compatibility_matrix
 from .mechanism import _jacobian, compatibility_error, trace_mechanism
 from .rank import rank_analysis
@@ -117,7 +118,7 @@ def hortobagyi_section4(tolerance: float = 1e-14) -> dict:
         }
         fifth = it["iterates"][4] if len(it["iterates"]) > 4 else it["iterates"][-1]
         p["fifth_iterate_x2"] = float(x[1, 0] + fifth[2])
-        bars = np.linalg.norm(xf[conn[:, 1]] - xf[conn[:, 0]], axis=1)
+        bars = member_lengths(xf, conn)
         p["max_bar_misfit"] = float(np.max(np.abs(bars - 1.0)))
         out[name] = p
     tr = {}
@@ -219,8 +220,8 @@ def fourbar_closed_form(samples: int = 12, omega: float = 2.0, alpha: float = 0.
     r = trace_mechanism(x, conn, free, drives=[3], step=step, steps=steps)
     th = np.unwrap(np.arctan2(r.coords[:, 1, 1], r.coords[:, 1, 0]))
     _, Cref = fourbar_position(th, a, b, c, d)
-    L0 = np.linalg.norm(x[conn[:, 1]] - x[conn[:, 0]], axis=1)
-    Ls = np.linalg.norm(r.coords[:, conn[:, 1]] - r.coords[:, conn[:, 0]], axis=2)
+    L0 = member_lengths(x, conn)
+    Ls = member_lengths(r.coords, conn)
     out = {"position_max_error": float(np.max(np.abs(r.coords[:, 2] - Cref))),
            "crank_turn": float(th.max() - th.min()),
            "bar_length_misfit": float(np.max(np.abs(Ls - L0))),
@@ -348,8 +349,8 @@ def hortobagyi_constructions() -> dict:
         crank_angle_start=float(ang[0]), crank_angle_end=float(ang[-1]))
     e = CATALOGUE["mech_bricard"]
     t = trace_mechanism(e.coords, e.bars, e.free, [e.drive_index()], e.step, 60)
-    L0 = np.linalg.norm(e.coords[e.bars[:, 1]] - e.coords[e.bars[:, 0]], axis=1)
-    L = np.linalg.norm(t.coords[:, e.bars[:, 1]] - t.coords[:, e.bars[:, 0]], axis=2)
+    L0 = member_lengths(e.coords, e.bars)
+    L = member_lengths(t.coords, e.bars)
     out["mech_bricard"].update(misfit=float(np.max(np.abs(L - L0))),
                                rank_min=int(t.rank.min()), rank_max=int(t.rank.max()))
     return out
@@ -456,7 +457,7 @@ def hortobagyi_section6(figures: bool = True) -> dict:
         e, cone, traces = section6_unfolding_traces(remove)
         results[remove] = (e, cone, traces)
         r = rank_analysis(e.coords, e.bars, e.free)
-        L0 = np.linalg.norm(e.coords[e.bars[:, 1]] - e.coords[e.bars[:, 0]], axis=1)
+        L0 = member_lengths(e.coords, e.bars)
         misfit = max(float(np.abs(np.linalg.norm(t.coords[:, e.bars[:, 1]]
                                                  - t.coords[:, e.bars[:, 0]], axis=2)
                                   - L0).max()) for _, t in traces)

@@ -323,9 +323,7 @@ def beam3d_matrices(x: np.ndarray, conn: np.ndarray, Ra: np.ndarray, Rb: np.ndar
     ne = len(conn)
     EA, GJ, EIy, EIz = (np.broadcast_to(np.asarray(v, dtype=float), (ne,))
                         for v in (EA, GJ, EIy, EIz))
-    d = x[conn[:, 1]] - x[conn[:, 0]]                               # (el, 3)
-    l = np.linalg.norm(d, axis=1)                                   # (el,)
-    r1 = d / l[:, None]
+    r1, l = unit_vectors(member_vectors(x, conn))                   # (el, 3), (el,)
     Ta = Ra @ R0                                                    # (el, 3, 3) end triads
     Tb = Rb @ R0
     qa, qb = Ta[:, :, 1], Tb[:, :, 1]
