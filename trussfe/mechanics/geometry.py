@@ -14,9 +14,13 @@ elastic models all use these axes, so ``Iy``/``Iz`` mean the same in each.
 
 Stations
 --------
-A station is a cross-section of a member at distance x from its **start node**, 0 ≤ x ≤ L, in
-every solver.  Lacy's tables cut the follower and the leadscrew tube from the end node
-(point B); :func:`from_end_node` converts such distances u to x = L − u and back.
+A station is a cross-section of a member at distance x from its **start node**, 0 ≤ x ≤ L (the
+finite-element results, ``station_x``).  Lacy cuts the follower and the leadscrew tube from the
+end node (point B), and the rigid-body model and the elastic response along a motion keep his
+distances u from the end node for their sections: the sections of an active member's leadscrew
+tube are material points that ride with the end node while the member telescopes, so u stays
+fixed where x = L(t) − u would move with the stroke.  :func:`from_end_node` converts between
+the two (x = L − u); the results name which one they hold.
 """
 from __future__ import annotations
 
@@ -180,7 +184,7 @@ def transverse_frames(unit: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 def stations(length: np.ndarray, n: int) -> np.ndarray:
-    """``n`` equidistant stations over each length, measured from the start, (..., n).
+    """``n`` equidistant distances 0 … ``length`` over each length, shape (..., n).
 
     ``n = 1`` gives the midpoint only (Lacy's choice for the spatial truss); ``n ≥ 2`` includes
     both ends.

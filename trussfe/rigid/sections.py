@@ -3,7 +3,10 @@
 
 A member is cut at ``k`` equidistant sections along its tube (the whole member if passive,
 the leadscrew tube if active), measured from the member's end node: ``u_j = j L_t/(k−1)``,
-j = 0…k−1 (Lacy cuts the follower and the leadscrew tube from point B at seven points).  The
+j = 0…k−1 (Lacy cuts the follower and the leadscrew tube from point B at seven points; the
+tube's sections ride with the end node as an active member telescopes, so u, not the distance
+x = L − u from the start node of :func:`trussfe.mechanics.geometry.from_end_node`, labels
+them).  The
 piece between the cut and the end node, of mass ``m u/L_t`` and centre of gravity at u/2 from
 the end node, obeys (Lacy eqs. 2.16–2.18, 4.68–4.74)
 
@@ -32,13 +35,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..mechanics.geometry import frame_rotations, stations, transverse_frames
+from ..mechanics.mass import centroidal_inertia
+from ..mechanics.stress import SectionStresses, round_sections, von_mises
 from ..model.structure import Structure
 from .forces import MemberBodies, NodalForces
 from .kinematics import Kinematics, pad3
 from .linalg import cross
-from ..mechanics.mass import centroidal_inertia
-from ..mechanics.geometry import frame_rotations, transverse_frames
-from ..mechanics.stress import SectionStresses, round_sections, von_mises
 
 
 @dataclass
@@ -115,8 +118,7 @@ def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
     sel = slice(None) if members is None else np.asarray(members, dtype=np.int64)
     tube_length = bodies.tube_length[sel]
     if positions is None:
-        frac = np.array([0.5]) if n_sections == 1 else np.linspace(0.0, 1.0, n_sections)
-        positions = tube_length[:, None] * frac[None, :]                 # (member, section)
+        positions = stations(tube_length, n_sections)                     # (member, section)
     u = positions[None, :, :]                                             # (1, m, k)
     g = pad3(np.asarray(structure.gravity, dtype=float))
     conn = structure.connectivity[sel]
