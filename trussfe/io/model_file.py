@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Reader of trussfe model files (TOML, CONTRACT.md §1).
+"""Reader of trussfe model files (TOML, docs/model-format.md).
 
 Every check on user input lives here (or in the extension readers registered through
 :func:`register_table`), so that any input either becomes a :class:`~trussfe.model.Structure`
@@ -489,7 +489,7 @@ def read_model(path: str | Path) -> Structure:
     Parameters
     ----------
     path : path
-        TOML model file (CONTRACT.md §1).
+        TOML model file (docs/model-format.md).
 
     Returns
     -------
