@@ -14,7 +14,7 @@ import numpy as np
 from ..errors import InputError
 from ..io.model_file import read_model
 from ..io.output import atomic_path, write_json
-from ..kinematics.mechanism import trace_structure
+from ..kinematics.trace import trace_structure
 
 
 def register(subparsers) -> None:
