@@ -39,8 +39,7 @@ def _mixed_3d():
     s = build_structure(x, members, section=SEC, material=MAT, is_beam=beam,
                         supports={0: "xyz", 3: "xyz", 2: "z"}, loads={4: [1.0, -2.0, -3.0]},
                         masses={5: 2.5}, gravity=[0.0, 0.0, -9.81])
-    s.releases[8, 1] = True
-    return s
+    return s.with_member_data(releases={8: [False, True]})
 
 
 def _truss_2d():

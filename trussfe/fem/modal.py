@@ -135,10 +135,9 @@ def mass_matrix(fe: FEModel, kind: str = "consistent", include_nodal_masses: boo
     if not acts:
         return fe.mass(kind=kind, include_nodal_masses=include_nodal_masses)
     # The same topology with massless active members: DOF numbering is identical.
-    s = fe.structure.copy()
-    for a in acts:
-        s.materials[a.member] = dataclasses.replace(s.materials[a.member], density=0.0)
-    s.__dict__.pop("_prop_cache", None)
+    mats = fe.structure.materials
+    s = fe.structure.with_materials(
+        {a.member: dataclasses.replace(mats[a.member], density=0.0) for a in acts})
     fe0 = discretise(s, bar_model=fe.bar_model, subdivisions=fe.subdivisions)
     return (fe0.mass(kind=kind, include_nodal_masses=include_nodal_masses)
             + active_member_mass(fe)).tocsr()
