@@ -326,8 +326,8 @@ class _Trace:
                                           f"here but {self.nd} drives were given; prescribe at "
                                           f"most {nullity}")
             keep = int(np.argmax(np.abs(self.S)))
-            self.drives, self.dcols, self.S = [self.drives[keep]], self.dcols[[keep]], \
-                self.S[[keep]]
+            self.drives, self.dcols, self.S = ([self.drives[keep]], self.dcols[[keep]],
+                                               self.S[[keep]])
             self.nd = 1
             self.prev_drive_dir = None
         return _StartState(B, rank, N, nullity)
