@@ -3,7 +3,7 @@
 
 A case is a TOML file (``validation/cases/*.toml``, see ``docs/validation.md``): a model (a
 file, or an entry of :mod:`trussfe.models` with parameters), an analysis (a ``trussfe``
-command's ``analyse`` or a ``python = "module:function"``), and quantities, each a path into
+analysis of the Python API, :mod:`trussfe.api`, or a ``python = "module:function"``), and quantities, each a path into
 the result with a reference value, its source and a tolerance.  :func:`run_cases` evaluates
 them; :func:`write_report` writes ``report.md`` and a self-contained ``report.html``.
 """
