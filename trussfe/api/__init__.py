@@ -12,6 +12,7 @@ command line and the validation suite call these functions.  docs/python.md is t
 """
 from __future__ import annotations
 
+from .along_motion import elastic, transient
 from .linear import buckling, modes, static
 from .model import ModelLike, as_structure, model_from_dict, read_model
 from .results import Result
@@ -19,7 +20,8 @@ from .rigid_body import actuators, simulate
 
 #: The analyses that take a model, by command name (the validation suite's ``analysis``).
 ANALYSES = {"static": static, "modes": modes, "buckling": buckling, "simulate": simulate,
-            "actuators": actuators}
+            "actuators": actuators, "elastic": elastic, "transient": transient}
 
 __all__ = ["ANALYSES", "ModelLike", "Result", "actuators", "as_structure", "buckling",
-           "model_from_dict", "modes", "read_model", "simulate", "static"]
+           "model_from_dict", "modes", "read_model", "simulate", "static",
+           "elastic", "transient"]
