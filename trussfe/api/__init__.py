@@ -13,6 +13,7 @@ command line and the validation suite call these functions.  docs/python.md is t
 from __future__ import annotations
 
 from .along_motion import elastic, transient
+from .kinematic import mechanism, trace
 from .linear import buckling, modes, static
 from .model import ModelLike, as_structure, model_from_dict, read_model
 from .results import Result
@@ -20,8 +21,9 @@ from .rigid_body import actuators, simulate
 
 #: The analyses that take a model, by command name (the validation suite's ``analysis``).
 ANALYSES = {"static": static, "modes": modes, "buckling": buckling, "simulate": simulate,
-            "actuators": actuators, "elastic": elastic, "transient": transient}
+            "actuators": actuators, "elastic": elastic, "transient": transient,
+            "mechanism": mechanism, "trace": trace}
 
 __all__ = ["ANALYSES", "ModelLike", "Result", "actuators", "as_structure", "buckling",
            "model_from_dict", "modes", "read_model", "simulate", "static",
-           "elastic", "transient"]
+           "elastic", "transient", "mechanism", "trace"]
