@@ -15,6 +15,7 @@ from __future__ import annotations
 from .along_motion import elastic, transient
 from .kinematic import mechanism, trace
 from .linear import buckling, modes, static
+from .nonlinear_path import postcritical
 from .model import ModelLike, as_structure, model_from_dict, read_model
 from .results import Result
 from .rigid_body import actuators, simulate
@@ -22,8 +23,9 @@ from .rigid_body import actuators, simulate
 #: The analyses that take a model, by command name (the validation suite's ``analysis``).
 ANALYSES = {"static": static, "modes": modes, "buckling": buckling, "simulate": simulate,
             "actuators": actuators, "elastic": elastic, "transient": transient,
-            "mechanism": mechanism, "trace": trace}
+            "mechanism": mechanism, "trace": trace, "postcritical": postcritical}
 
 __all__ = ["ANALYSES", "ModelLike", "Result", "actuators", "as_structure", "buckling",
            "model_from_dict", "modes", "read_model", "simulate", "static",
-           "elastic", "transient", "mechanism", "trace"]
+           "elastic", "transient", "mechanism", "trace",
+           "postcritical"]

@@ -101,7 +101,7 @@ def _figure(result, name: str) -> dict:
     """The load–displacement plot of a path as a PNG in a temporary folder."""
     import tempfile
     from pathlib import Path
-    from ..cli.cmd_postcritical import write_plot
+    from .plot import write_plot
     path = Path(tempfile.mkdtemp(prefix="trussfe_postcritical_")) / f"{name}.png"
     write_plot(path, result)
     return {name: str(path)}
