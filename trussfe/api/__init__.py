@@ -18,6 +18,7 @@ from .linear import buckling, modes, static
 from .nonlinear_path import postcritical
 from .model import ModelLike, as_structure, model_from_dict, read_model
 from .results import Result
+from .validation import ValidationResult, validate
 from .rigid_body import actuators, simulate
 
 #: The analyses that take a model, by command name (the validation suite's ``analysis``).
@@ -28,4 +29,4 @@ ANALYSES = {"static": static, "modes": modes, "buckling": buckling, "simulate": 
 __all__ = ["ANALYSES", "ModelLike", "Result", "actuators", "as_structure", "buckling",
            "model_from_dict", "modes", "read_model", "simulate", "static",
            "elastic", "transient", "mechanism", "trace",
-           "postcritical"]
+           "postcritical", "ValidationResult", "validate"]
