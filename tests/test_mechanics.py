@@ -9,8 +9,6 @@ Plesha & Witt, *Concepts and Applications of FEA* §11.3 (consistent and lumped 
 from __future__ import annotations
 
 import math
-from types import SimpleNamespace
-
 import numpy as np
 import pytest
 from numpy.testing import assert_allclose
@@ -25,6 +23,7 @@ from trussfe.mechanics.geometry import (frame_rotations, from_end_node, local_ax
 from trussfe.mechanics.mass import (centroidal_inertia, gyration_squared, member_mass,
                                     rigid_line_mass, tube_moments)
 from trussfe.mechanics.stress import round_sections, von_mises
+from trussfe.model.active import ActiveMember
 from trussfe.model.sections import Material, Section
 from trussfe.model.structure import build_structure
 
@@ -130,7 +129,7 @@ def test_local_axes_of_a_frame():
     → y = global X; an orientation vector sets y; 2-D: y = x turned by +90°."""
     s = build_structure([[0, 0, 0], [2, 0, 0], [2, 0, 3], [2, 2, 3]],
                         [(0, 1), (1, 2), (2, 3)], section=TUBE, material=AL)
-    s.orientation[2] = (0.0, 1.0, 1.0)                  # member 2 along +Y, y ← +Z
+    s = s.with_member_data(orientation={2: (0.0, 1.0, 1.0)})   # member 2 along +Y, y ← +Z
     R = local_axes(s)
     assert_allclose(R[0], [[1, 0, 0], [0, 0, 1], [0, -1, 0]], atol=1e-15)
     assert_allclose(R[1], [[0, 0, 1], [1, 0, 0], [0, 1, 0]], atol=1e-15)
@@ -138,9 +137,8 @@ def test_local_axes_of_a_frame():
     assert_allclose(np.einsum("mij,mkj->mik", R, R), np.broadcast_to(np.eye(3), R.shape),
                     atol=1e-15)                          # orthonormal, right-handed
     assert_allclose(np.linalg.det(R), 1.0)
-    s.orientation[2] = (0.0, 5.0, 0.0)                  # along the member
     with pytest.raises(InputError, match="parallel"):
-        local_axes(s)
+        local_axes(s.with_member_data(orientation={2: (0.0, 5.0, 0.0)}))   # along the member
     e = np.array([[math.cos(0.5), math.sin(0.5)]])
     assert_allclose(frame_rotations(e)[0], [[math.cos(0.5), math.sin(0.5)],
                                             [-math.sin(0.5), math.cos(0.5)]])
@@ -218,8 +216,9 @@ def test_active_member_mass_includes_the_tube_rotary_inertia():
     moment about the start node is the line's ρA(L³ − a³)/3 plus m_t I/A."""
     L, lt = 3.0, 2.0
     s = build_structure([[0, 0], [L, 0]], [(0, 1)], section=TUBE, material=AL)
-    s.extensions["active_members"] = [SimpleNamespace(
-        member=0, base_mass=0.0, base_cg=0.0, base_inertia=0.0, tube_length=lt)]
+    s = s.with_extensions(active_members=[ActiveMember(
+        member=0, base_mass=0.0, base_length=0.5, base_cg=0.0, base_inertia=0.0,
+        tube_length=lt)])
     Ma = active_member_mass(discretise(s)).toarray()
     rot = np.array([0, 0, 0, L])                         # unit rotation about node 0
     rhoA = AL.density * TUBE.area
@@ -245,9 +244,7 @@ def test_rigid_stresses_of_a_section_that_is_not_a_tube():
                                        2.0, 20))
     sec = s.sections[0]
     box = Section("box", area=sec.area, Iy=sec.Iy, Iz=sec.Iz, J=sec.J, c=sec.c)
-    s2 = s.copy()
-    s2.sections = [box if x is sec else x for x in s2.sections]
-    s2.__dict__.pop("_prop_cache", None)
+    s2 = s.with_sections([box if x is sec else x for x in s.sections])
     tube, corner = section_stresses(s, r.sections), section_stresses(s2, r.sections)
     m = np.array([x is sec for x in s.sections])
     assert m.any()
