@@ -257,3 +257,16 @@ def test_rigid_stresses_of_a_section_that_is_not_a_tube():
     assert_allclose(corner.s2[:, ~m], tube.s2[:, ~m], rtol=1e-14)
     lacy = section_stresses(s, r.sections, convention="lacy-per-axis")
     assert np.all(lacy.s2 <= tube.s2 + np.sqrt(3) * tube.shear * (1 + 1e-12))
+
+
+def test_beam_twist_mass_is_rho_j():
+    """A 3-D beam's twist field carries ρJ: a rigid spin ω about the member's axis has kinetic
+    energy ½ ρ J L ω² (J polar moment of the tube, Cook et al. §11.3)."""
+    s = build_structure([[0, 0, 0], [2, 0, 0]], [(0, 1)], section=TUBE, material=AL,
+                        is_beam=True)
+    fe = discretise(s, subdivisions=1)                   # one element: end DOFs only
+    M = fe.mass().toarray()
+    spin = np.zeros(fe.n_dof)
+    spin[fe.node_dofs[:, 3]] = 1.0                       # θx = 1 at both ends
+    assert fe.interior_dofs.size == 0
+    assert_allclose(spin @ M @ spin, AL.density * TUBE.J * 2.0, rtol=1e-12)

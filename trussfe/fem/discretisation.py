@@ -51,7 +51,7 @@ from skfem import Basis, ElementLineHermite, ElementLineP1, MeshLine1, asm
 
 from ..errors import InputError
 from ..mechanics.geometry import local_axes, member_vectors, unit_vectors
-from ..mechanics.mass import mass_per_length
+from ..mechanics.mass import mass_per_length, twist_inertia_per_length
 from ..model.structure import Structure
 from . import forms
 
@@ -656,7 +656,8 @@ class FEModel:
 
         def spec(f, mem):
             if f.name == "theta":
-                rhoJ = np.where(self.twist_member, s.density * np.nan_to_num(s.J), 0.0)
+                rhoJ = np.where(self.twist_member, twist_inertia_per_length(s.density, s.J),
+                                0.0)
                 return forms.mass, {"rhoA": rhoJ[mem]}
             return forms.mass, {"rhoA": mass_per_length(s.density, s.area)[mem]}
         return self._block_local(g, spec)

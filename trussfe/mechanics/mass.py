@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: MIT
 """Member mass: distributed ρA, tube pieces as rigid bodies, active members' rigid-body mass.
 
-* A passive member is a uniform tube of mass per length ρA, total ρAL; the finite elements
-  spread ρA with their shape functions (consistent, ``ρAL/6 [[2, 1], [1, 2]]`` for a bar on
+* A passive member is a uniform tube of mass per length ρA, total ρAL (and ρJ about its axis
+  for a beam that twists); the finite elements spread ρA with their shape functions (consistent, ``ρAL/6 [[2, 1], [1, 2]]`` for a bar on
   every translation) or half to each end (lumped) in :meth:`trussfe.fem.FEModel.mass`.
 * A tube piece of length ℓ and mass m turning as a rigid body about a transverse axis through
   its centre has the moment of inertia m (r² + ℓ²/12): ℓ²/12 from its length and the
@@ -21,6 +21,12 @@ import numpy as np
 def mass_per_length(density: np.ndarray, area: np.ndarray) -> np.ndarray:
     """ρA, kg/m."""
     return np.asarray(density, dtype=float) * np.asarray(area, dtype=float)
+
+
+def twist_inertia_per_length(density: np.ndarray, J: np.ndarray) -> np.ndarray:
+    """ρJ, the rotary inertia per length of a member's sections about its own axis, kg·m
+    (J the polar moment of a round section; an unknown J counts as 0)."""
+    return np.asarray(density, dtype=float) * np.nan_to_num(J)
 
 
 def member_mass(density: np.ndarray, area: np.ndarray, length: np.ndarray) -> np.ndarray:

@@ -369,6 +369,5 @@ def double_layer_grid(n: int, spacing: float = 1.0, depth: float = 0.7,
     L = s.lengths()
     laws = dataclasses.replace(
         FailureLaws.none(m), buckling=np.full(m, BUCKLING.index(law)),
-        critical_load=(math.pi ** 2 * s.E * s.Iy / L ** 2
-                       * (1.0 + spread * (2 * rng.random(m) - 1))))
+        critical_load=(euler_load(s.E, s.Iy, L) * (1.0 + spread * (2 * rng.random(m) - 1))))
     return s, laws
