@@ -52,7 +52,7 @@ from ..fem.modal import active_member_mass
 from ..mechanics.geometry import member_vectors
 from ..model.structure import Structure
 from ..rigid.active import active_members
-from ..rigid.forces import MemberBodies, element_accelerations
+from ..rigid.forces import MemberBodies, member_resultants
 from ..rigid.kinematics import Kinematics, pad3
 
 log = logging.getLogger(__name__)
@@ -216,20 +216,10 @@ def active_member_loads(structure: Structure, kin: Kinematics, bodies: MemberBod
     if idx.size == 0:
         return out[..., :structure.dim]
     g = pad3(np.asarray(structure.gravity, dtype=float))
-    a_tube, s_t, a_base = element_accelerations(kin, bodies, conn)
+    f_tube, f_base, R, Ma = (a[:, idx] for a in member_resultants(kin, bodies, g, conn))
     e = kin.unit[:, idx]
     L = kin.length[:, idx, None]
-    mt = bodies.tube_mass[idx][None, :, None]
-    mb = bodies.base_mass[idx][None, :, None]
-    cg = bodies.base_cg[idx][None, :, None]
-    f_tube = mt * (a_tube[:, idx] - g)
-    f_base = mb * (a_base[:, idx] - g)
-    inertia = (bodies.tube_inertia(bodies.tube_length, bodies.tube_mass)
-               + bodies.base_inertia_cg)[idx][None, :, None]
-    Ma = (np.cross(s_t[:, idx] * e, f_tube) + np.cross(cg * e, f_base)
-          + inertia * kin.alpha[:, idx])
     Fb_perp = np.cross(Ma, e) / L
-    R = f_tube + f_base
     R_perp = R - np.einsum("tmi,tmi->tm", R, e)[..., None] * e
     Fa = R_perp - Fb_perp + np.einsum("tmi,tmi->tm", f_base, e)[..., None] * e
     Fb = Fb_perp + np.einsum("tmi,tmi->tm", f_tube, e)[..., None] * e

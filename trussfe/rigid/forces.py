@@ -201,22 +201,32 @@ def _check_model(structure: Structure) -> _Pattern:
     return pattern
 
 
-def _member_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies, rest: bool):
-    """Member resultants and the right-hand side of ``Bᵀ t = rhs`` (Lacy eqs. 2.9–2.11).
+def member_resultants(kin: Kinematics, bodies: MemberBodies, gravity: np.ndarray,
+                      conn: np.ndarray, rest: bool = False) -> tuple[np.ndarray, ...]:
+    """Inertia-and-weight loads of every member's bodies (Lacy eqs. 2.9–2.11, 4.20).
 
-    ``rest``: the kinematics' rates and accelerations are zero (the static case); the terms
-    that vanish are not computed (adding an exact zero changes no bit of the result).
+    Parameters
+    ----------
+    gravity : ndarray, shape (3,)
+    rest : bool
+        The kinematics' rates and accelerations taken as zero (the terms that vanish are not
+        computed: adding an exact zero changes no bit of the result).
+
+    Returns
+    -------
+    f_tube, f_base : ndarray, shape (nt, m, 3)
+        m_k (a_k − g) of the tube and of the base.
+    R : ndarray, shape (nt, m, 3)
+        f_tube + f_base, the force the nodes exert on the member in all.
+    Ma : ndarray, shape (nt, m, 3)
+        Σ [s_k e × m_k (a_k − g) + I_k α] about the start node, I_k about each body's centre.
     """
-    conn = structure.connectivity
-    dim = structure.dim
-    nt, m = kin.length.shape
-    g = pad3(np.asarray(structure.gravity, dtype=float))
+    g = gravity
     e = kin.unit
-    L = kin.length[..., None]
     mt = bodies.tube_mass[None, :, None]
     mb = bodies.base_mass[None, :, None]
-    s_t = L - bodies.tube_length[None, :, None] / 2.0
     if rest:
+        s_t = kin.length[..., None] - bodies.tube_length[None, :, None] / 2.0
         f_tube = mt * -g                                         # a_tube = 0
         f_base = mb * -g
     else:
@@ -229,6 +239,22 @@ def _member_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies, r
         inertia = (bodies.tube_inertia(bodies.tube_length, bodies.tube_mass)
                    + bodies.base_inertia_cg)[None, :, None]
         Ma += inertia * kin.alpha
+    return f_tube, f_base, R, Ma
+
+
+def _member_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies, rest: bool):
+    """Member resultants and the right-hand side of ``Bᵀ t = rhs`` (Lacy eqs. 2.9–2.11).
+
+    ``rest``: the kinematics' rates and accelerations are zero (the static case); the terms
+    that vanish are not computed (adding an exact zero changes no bit of the result).
+    """
+    conn = structure.connectivity
+    dim = structure.dim
+    nt, m = kin.length.shape
+    g = pad3(np.asarray(structure.gravity, dtype=float))
+    e = kin.unit
+    L = kin.length[..., None]
+    _, _, R, Ma = member_resultants(kin, bodies, g, conn, rest)
     Fb_perp = cross(Ma, e) / L
     Re = np.einsum("tmi,tmi->tm", R, e)
     Fa_perp = R - Re[..., None] * e - Fb_perp
