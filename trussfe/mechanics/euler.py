@@ -15,7 +15,12 @@ second moment of area.
 """
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
+
+if TYPE_CHECKING:
+    from ..model.structure import Structure
 
 
 def weak_axis_inertia(Iy: np.ndarray, Iz: np.ndarray) -> np.ndarray:
@@ -58,7 +63,7 @@ def euler_load(E: np.ndarray, inertia: np.ndarray, length: np.ndarray,
     return np.pi ** 2 * np.asarray(E, dtype=float) * np.asarray(inertia, dtype=float) / kl ** 2
 
 
-def member_euler_loads(structure, length: np.ndarray | None = None,
+def member_euler_loads(structure: Structure, length: np.ndarray | None = None,
                        effective_length_factor: np.ndarray | float = 1.0) -> np.ndarray:
     """Euler load of every member of a structure about its weak axis, shape (m,), N.
 

@@ -24,9 +24,14 @@ the two (x = L − u); the results name which one they hold.
 """
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 
 from ..errors import InputError
+
+if TYPE_CHECKING:
+    from ..model.structure import Structure
 
 #: |e·Z| above which a member counts as vertical (its default local y is then global X).
 VERTICAL = 1.0 - 1e-9
@@ -126,7 +131,7 @@ def parallel_orientation(R: np.ndarray) -> np.ndarray:
     return ~np.isfinite(R[..., -1, -1])
 
 
-def local_axes(structure, coords: np.ndarray | None = None) -> np.ndarray:
+def local_axes(structure: Structure, coords: np.ndarray | None = None) -> np.ndarray:
     """Rotation matrices from global to member axes of a structure.
 
     Parameters

@@ -108,7 +108,7 @@ def von_mises(N: np.ndarray, Vy: np.ndarray, Vz: np.ndarray, My: np.ndarray, Mz:
     Examples
     --------
     A pure axial force of −78.5429 N on the tube of Lacy Table 3.2 (A = 1.1875965e-4 m²)
-    gives S1 = S2 = |N|/A = 661,36x Pa:
+    gives S1 = S2 = |N|/A ≈ 661,360 Pa:
 
     >>> import numpy as np
     >>> z = np.zeros(1)
