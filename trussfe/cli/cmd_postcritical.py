@@ -18,7 +18,7 @@ import numpy as np
 from ..errors import InputError
 from ..io.model_file import read_model
 from ..io.output import atomic_path, write_json
-from ..nonlinear.analysis import result_document, run_postcritical
+from ..nonlinear.analysis import monitor_label, result_document, run_postcritical
 from ..nonlinear.model import BAR_MODELS
 from ..nonlinear.path import CONTROLS, PathResult
 
@@ -122,8 +122,7 @@ def write_plot(path: str | Path, result: PathResult) -> None:
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    s = result.model.structure
-    node, axis = divmod(result.monitor, s.dim)
+    label = monitor_label(result.model, result.monitor)
     lam = result.load_factors
     u = result.displacement()
     eq = np.array([p.stage == "equilibrium" for p in result.path])
@@ -143,9 +142,10 @@ def write_plot(path: str | Path, result: PathResult) -> None:
             ax.plot(u[e.point], result.path[e.point].load_factor, mk, ms=8, mfc="none",
                     color="C3", label=None if lab in seen else lab)
             seen.add(lab)
-    ax.set_xlabel(f"displacement of node {s.node_ids[node]}, {'xyz'[axis]} (m)")
+    ax.set_xlabel(f"displacement of node {label['node']}, {label['axis']} "
+                  f"({'rad' if label['axis'].startswith('r') else 'm'})")
     ax.set_ylabel("load factor λ")
-    ax.set_title(s.name)
+    ax.set_title(result.model.structure.name)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()

@@ -50,7 +50,10 @@ class Structure:
     is_beam : ndarray of bool, shape (m,)
         True for ``type = "beam"`` (rigid joints), False for pin-jointed bars.
     releases : ndarray of bool, shape (m, 2)
-        Moment releases of a beam at its start and end.
+        Bending-moment releases of a beam at its start and end.
+    torsion_releases : ndarray of bool, shape (m, 2)
+        Explicit torsion releases of a 3-D beam at its start and end (what a release frees:
+        :mod:`trussfe.mechanics.releases`).
     orientation : ndarray, shape (m, 3)
         For 3-D beams, a vector in the local x–y plane (``nan`` row: default orientation).
     supports : ndarray of bool, shape (n, ndof)
@@ -78,6 +81,7 @@ class Structure:
     masses: np.ndarray
     gravity: np.ndarray
     orientation: np.ndarray | None = None
+    torsion_releases: np.ndarray | None = None
     extensions: dict[str, Any] = field(default_factory=dict)
     source: str = ""
 
@@ -87,6 +91,8 @@ class Structure:
         m = len(self.member_ids)
         self.is_beam = np.asarray(self.is_beam, dtype=bool).reshape(m)
         self.releases = np.asarray(self.releases, dtype=bool).reshape(m, 2)
+        self.torsion_releases = (np.zeros((m, 2), dtype=bool) if self.torsion_releases is None
+                                 else np.asarray(self.torsion_releases, dtype=bool).reshape(m, 2))
         if self.orientation is None:
             self.orientation = np.full((m, 3), np.nan)
         self._node_index: dict[str, int] | None = None
@@ -221,6 +227,7 @@ class Structure:
             member_ids=_copy_ids(self.member_ids), connectivity=self.connectivity.copy(),
             sections=list(self.sections), materials=list(self.materials),
             is_beam=self.is_beam.copy(), releases=self.releases.copy(),
+            torsion_releases=self.torsion_releases.copy(),
             supports=self.supports.copy(), loads=self.loads.copy(), masses=self.masses.copy(),
             gravity=np.array(self.gravity, dtype=float), orientation=self.orientation.copy(),
             extensions=dict(self.extensions),
@@ -237,6 +244,7 @@ class Structure:
         s.materials = [self.materials[i] for i in idx]
         s.is_beam = self.is_beam[idx]
         s.releases = self.releases[idx]
+        s.torsion_releases = self.torsion_releases[idx]
         s.orientation = self.orientation[idx]
         s.__dict__.pop("_prop_cache", None)
         s._member_index = None

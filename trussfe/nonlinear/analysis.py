@@ -129,6 +129,19 @@ def run_postcritical(structure: Structure, **options) -> PathResult:
     return result
 
 
+def monitor_label(model, dof: int) -> dict:
+    """``{"node": id, "axis": "x" … "z" or "rx" … "rz"}`` of a monitored DOF (a joint's
+    translation, or a joint rotation when the loads are moments only)."""
+    s = model.structure
+    ids = s.node_ids
+    if dof < s.n_nodes * s.dim:
+        node, axis = divmod(dof, s.dim)
+        return {"node": ids[node], "axis": AXES[axis]}
+    slot, comp = divmod(dof - model.n_points * s.dim, model.rdof)
+    node = int(np.flatnonzero(model.joint_slot == slot)[0])
+    return {"node": ids[node], "axis": "rz" if s.dim == 2 else "r" + AXES[comp]}
+
+
 def result_document(result: PathResult) -> dict:
     """The CONTRACT §3 ``postcritical`` JSON document of a path."""
     m = result.model
@@ -153,9 +166,8 @@ def result_document(result: PathResult) -> dict:
             ev["strain"] = float(e.force)
             ev["law_limit"] = float(e.threshold)
         events.append(ev)
-    node, axis = divmod(result.monitor, s.dim)
     doc = {"units": "SI", "command": "postcritical", "model": s.name,
-           "monitor": {"node": ids[node], "axis": AXES[axis]},
+           "monitor": monitor_label(result.model, result.monitor),
            "path": path, "events": events, "termination": result.termination,
            "max_load_factor": float(max(p.load_factor for p in result.path))}
     mot = result.mechanism
