@@ -47,9 +47,15 @@ def analyse(model_path, motion=None, steps=None, **options) -> dict:
         ``motor_speed``, ``motor_torque``, ``motor_current``, ``motor_voltage`` and
         ``motor_voltage_frictionless`` (``{"value", "time"}``) and ``flags``.
     """
+    from ..errors import InputError
+    from ..io.model_file import read_model
     from ..rigid.actuator import actuators_of
     from .cmd_simulate import _simulate
 
+    if not actuators_of(read_model(model_path)):
+        raise InputError(str(model_path), "the model has no [actuators] table: give the "
+                         "leadscrew and motor data of the actuators to analyse (see "
+                         "docs/actuators.md)")
     res = _simulate(model_path, motion, steps, **options)
     s = res.structure
     t = res.time
@@ -88,6 +94,4 @@ def _run(args: argparse.Namespace) -> int:
               f"({a['motor_voltage_frictionless']['value']:.4g} V without friction)")
         for f in a["flags"]:
             print(f"  flag: {f}")
-    if not doc["actuators"]:
-        print("the model has no [actuators] table")
     return 0

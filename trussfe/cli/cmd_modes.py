@@ -9,7 +9,7 @@ import sys
 from pathlib import Path
 
 from ..fem.discretisation import BAR_MODELS
-from ..fem.modal import MASS_KINDS, ModalResult, modes_json, solve_modes
+from ..fem.modal import DEFAULT_MODE_COUNT, MASS_KINDS, ModalResult, modes_json, solve_modes
 from ..io.model_file import read_model
 from ..io.output import write_json
 from ._modeshapes import write_modes_vtk
@@ -22,8 +22,9 @@ def register(subparsers) -> None:
                               "mass-normalised mode shapes, participation factors and "
                               "effective masses.")
     p.add_argument("model", help="model file (TOML)")
-    p.add_argument("--count", type=int, default=6, metavar="N",
-                   help="number of modes (default 6)")
+    p.add_argument("--count", type=int, default=None, metavar="N",
+                   help="number of modes (default 6, or all there are when the model has "
+                   "fewer free DOFs that carry mass)")
     p.add_argument("--mass", choices=MASS_KINDS, default="consistent",
                    help="member mass matrix (default consistent)")
     p.add_argument("--bar-model", choices=BAR_MODELS, default="truss",
@@ -36,7 +37,7 @@ def register(subparsers) -> None:
     p.set_defaults(func=_main)
 
 
-def run_modes(model_path: str | Path, count: int = 6, mass: str = "consistent",
+def run_modes(model_path: str | Path, count: int | None = None, mass: str = "consistent",
               bar_model: str = "truss", subdivisions: int | None = None) -> ModalResult:
     """Read a model file and compute its modes."""
     structure = read_model(model_path)
@@ -44,7 +45,7 @@ def run_modes(model_path: str | Path, count: int = 6, mass: str = "consistent",
                        subdivisions=subdivisions)
 
 
-def analyse(model_path: str | Path, count: int = 6, mass: str = "consistent",
+def analyse(model_path: str | Path, count: int | None = None, mass: str = "consistent",
             bar_model: str = "truss", subdivisions: int | None = None, **_ignored) -> dict:
     """Modal analysis of a model file; returns the CONTRACT.md §3 ``modes`` document."""
     return modes_json(run_modes(model_path, count, mass, bar_model, subdivisions))
@@ -87,4 +88,7 @@ def _main(args: argparse.Namespace) -> int:
     if args.json:
         write_json(args.json, doc)
     sys.stdout.write(_table(result) + "\n")
+    if args.count is None and result.count < DEFAULT_MODE_COUNT:
+        sys.stdout.write(f"the model has only {result.count} free DOFs that carry mass: all "
+                         f"{result.count} modes computed\n")
     return 0

@@ -18,7 +18,8 @@ import numpy as np
 from ..errors import InputError
 from ..io.model_file import read_model
 from ..io.output import atomic_path, write_json
-from ..nonlinear.analysis import monitor_label, result_document, run_postcritical
+from ..nonlinear.analysis import (monitor_label, result_document, run_postcritical,
+                                  unmodelled_buckling)
 from ..nonlinear.model import BAR_MODELS
 from ..nonlinear.path import CONTROLS, PathResult
 
@@ -166,9 +167,18 @@ def _main(args) -> int:
     out = sys.stdout
     out.write(f"{doc['model']}: {len(doc['path'])} path points, maximum load factor "
               f"{doc['max_load_factor']:.6g}\n")
+    if doc["gravity_dead_load"]:
+        out.write("  gravity acts as a constant dead load; the load factor scales [loads]\n")
     for e in doc["events"]:
         who = f" member {e['member']}" if e["member"] is not None else ""
         out.write(f"  λ = {e['load_factor']:.6g}: {e['kind']}{who}"
                   f"{' — ' + e['detail'] if e['detail'] else ''}\n")
     out.write(f"  {doc['termination']}\n")
+    over = unmodelled_buckling(result)
+    if over is not None:
+        mem, lam, pe = over
+        s = result.model.structure
+        sys.stderr.write(f"trussfe: note: member buckling is not modelled (no [failure] "
+                         f"table); member {s.member_ids[mem]} exceeds its Euler load "
+                         f"{pe:.4g} N from load factor {lam:.6g}\n")
     return 0

@@ -281,7 +281,9 @@ def compare_with_rigid(rigid_sections: SectionForces, response: ElasticResponse,
     Each member's differences are scaled by that member's largest force (tension or shear,
     over all steps and sections) for the forces and by its largest moment for the moments,
     so that near-zero values do not blow the ratio up; a member whose forces are all zero
-    (to 1e-12 of the largest in the structure) is scaled by the structure's largest.
+    (to 1e-12 of the largest in the structure) is scaled by the structure's largest, and the
+    moment scale is never below 1e-6 of the largest force in the model times the member's
+    length (a pin-jointed member's moments are round-off, not a quantity to divide by).
 
     Parameters
     ----------
@@ -306,8 +308,15 @@ def compare_with_rigid(rigid_sections: SectionForces, response: ElasticResponse,
     fmag = np.maximum(np.abs(rs.tension), np.linalg.norm(rs.shear, axis=-1))
     f_scale = fmag.max(axis=(0, 2))                                        # (m,)
     m_scale = np.linalg.norm(rs.moment, axis=-1).max(axis=(0, 2))
-    f_scale = np.maximum(f_scale, 1e-12 * max(f_scale.max(initial=0.0), 1e-300))
-    m_scale = np.maximum(m_scale, 1e-12 * max(m_scale.max(initial=0.0), 1e-300))
+    f_big = max(f_scale.max(initial=0.0), 1e-300)
+    f_scale = np.maximum(f_scale, 1e-12 * f_big)
+    # moments: a floor from the largest force in the model times the member's length, so
+    # that the round-off moments of a pin-jointed member (all zero but for the last digits)
+    # are not divided by zero
+    length = np.abs(np.asarray(rs.position, dtype=float)).max(axis=1)      # (m,) section span
+    m_floor = _MOMENT_FLOOR * f_big * length
+    m_scale = np.maximum(m_scale, np.maximum(m_floor, 1e-12 * max(m_scale.max(initial=0.0),
+                                                                  1e-300)))
     dT = np.abs(fs.tension - rs.tension) / f_scale[None, :, None]
     dV = np.linalg.norm(fs.shear - rs.shear, axis=-1) / f_scale[None, :, None]
     dM = np.linalg.norm(fs.moment - rs.moment, axis=-1) / m_scale[None, :, None]
@@ -321,6 +330,11 @@ def compare_with_rigid(rigid_sections: SectionForces, response: ElasticResponse,
     out["max"] = max(v for key, v in out.items() if key in ("tension", "shear", "moment",
                                                             "reactions"))
     return out
+
+
+#: Moment scale floor of :func:`compare_with_rigid`, as a fraction of the largest force in the
+#: model times the member's length: round-off moments (1e-16 of that) compare as 1e-10.
+_MOMENT_FLOOR = 1e-6
 
 
 def simulate_elastic(structure: Structure, motion=None, *, scheme: str = "exact",

@@ -58,6 +58,10 @@ from .solver import FreeBlock, free_submatrix, null_space
 
 log = logging.getLogger(__name__)
 
+#: Number of modes computed when none is asked for (fewer when the model has fewer
+#: mass-carrying free DOFs: then all of them).
+DEFAULT_MODE_COUNT = 6
+
 #: Free-DOF count up to which the eigenproblem is solved densely.
 DENSE_MODAL_LIMIT = 600
 
@@ -313,7 +317,7 @@ def generalized_eigen(Kff: sp.spmatrix, Mff: sp.spmatrix, count: int, sigma: flo
     return lam, V
 
 
-def solve_modes(structure: Structure, count: int = 6, mass: str = "consistent",
+def solve_modes(structure: Structure, count: int | None = None, mass: str = "consistent",
                 bar_model: str = "truss", subdivisions: int | None = None,
                 fe: FEModel | None = None, include_nodal_masses: bool = True,
                 check_resolution: bool = True) -> ModalResult:
@@ -322,8 +326,10 @@ def solve_modes(structure: Structure, count: int = 6, mass: str = "consistent",
     Parameters
     ----------
     structure : Structure
-    count : int
-        Number of modes (lowest first).
+    count : int, optional
+        Number of modes (lowest first).  Default :data:`DEFAULT_MODE_COUNT`, or every mode
+        when the model has fewer free DOFs that carry mass (logged); an explicit count larger
+        than that is an error.
     mass : {"consistent", "lumped"}
         Member mass model.
     bar_model : {"truss", "pinned-beam"}
@@ -378,6 +384,9 @@ def solve_modes(structure: Structure, count: int = 6, mass: str = "consistent",
     True
     """
     item = structure.source or structure.name
+    every = count is None               # the default count, or every mode there is
+    if every:
+        count = DEFAULT_MODE_COUNT
     if isinstance(count, bool) or int(count) != count or count < 1:
         raise InputError("--count", f"must be a positive integer, got {count!r}")
     count = int(count)
@@ -411,6 +420,10 @@ def solve_modes(structure: Structure, count: int = 6, mass: str = "consistent",
     if n_mass == 0:
         raise AnalysisError(item, "the structure has no mass: give members a density or "
                             "nodes a [masses] entry")
+    if count > n_mass and every:
+        log.info("%s: the model has only %d free DOFs that carry mass: all %d modes computed",
+                 item, n_mass, n_mass)
+        count = n_mass
     if count > n_mass:
         raise AnalysisError(item, f"asked for {count} modes but the model has only {n_mass} "
                             f"free DOFs that carry mass ({n} free DOFs in all, {mass} mass, "

@@ -279,12 +279,36 @@ class NonlinearModel:
             has = np.flatnonzero(moments[:, 0] != 0)
             f[self.n_points * dim + joint_slot[has]] = moments[has, 0]
         self.load = f
+        self.dead = self._dead_load()
         self.alive = np.ones(m, dtype=bool)
         self.plastic = np.zeros(len(t_mem))
         #: (cause, truss element): events already reported (each is reported once)
         self.silenced = np.zeros((3, len(t_mem)), dtype=bool)
 
     # ------------------------------------------------------------------ helpers
+    def _dead_load(self) -> np.ndarray:
+        """Constant dead load of gravity (``[model] gravity``), shape (dof,): the weight of
+        every element lumped half at each of its ends (truss elements: the member's ends;
+        beam elements: their end points along the member) and the weight of the nodal
+        masses.  Zero without gravity."""
+        s = self.structure
+        d = self.dim
+        out = np.zeros(self.ndof)
+        g = np.asarray(s.gravity, dtype=float)
+        if not np.any(g):
+            return out
+        half_t = 0.5 * (s.density * s.area)[self.t_member] * self.t_len0
+        pts = [self.t_conn.ravel()]
+        w = [np.repeat(half_t, 2)]
+        if len(self.b_conn):
+            L0 = np.linalg.norm(self.X[self.b_conn[:, 1]] - self.X[self.b_conn[:, 0]], axis=1)
+            pts.append(self.b_conn.ravel())
+            w.append(np.repeat(0.5 * (s.density * s.area)[self.b_member] * L0, 2))
+        mass = np.bincount(np.concatenate(pts), np.concatenate(w), minlength=self.n_points)
+        mass[: s.n_nodes] += s.masses
+        out[: self.n_points * d] = (mass[:, None] * g[None, :]).ravel()
+        return out
+
     def positions(self, u: np.ndarray) -> np.ndarray:
         """Current point positions, shape (point, dim)."""
         return self.X + u[: self.n_points * self.dim].reshape(-1, self.dim)
