@@ -22,8 +22,9 @@ from trussfe.nonlinear.analysis import run_postcritical, unmodelled_buckling
 
 def _weighted_triangle(load=1.0):
     s = read_model(mesh_path("triangular_truss_weight.toml"))
-    s.loads[s.node_index("B"), 1] = -load
-    return s
+    loads = np.array(s.loads)
+    loads[s.node_index("B"), 1] = -load
+    return s.with_loads(loads)
 
 
 def test_gravity_is_a_constant_dead_load_in_postcritical(equilibrium):

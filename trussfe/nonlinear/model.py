@@ -38,6 +38,7 @@ import logging
 import numpy as np
 
 from ..errors import InputError
+from ..model.postcritical import BAR_MODELS
 from ..model.structure import Structure
 from ..mechanics.releases import HELD, JOINT, OWN, end_rotations
 from .beam3d import (beam3d_matrices, compose, expm_so3, reference_frames,
@@ -47,8 +48,6 @@ from .elements import (beam2d_local, beam2d_matrices, truss_kinematics,
 from .failure import FailureLaws, axial_law, failure_margins
 
 log = logging.getLogger(__name__)
-
-BAR_MODELS = ("truss", "pinned-beam")
 
 
 class NonlinearModel:
