@@ -24,12 +24,17 @@ In 2-D a rotation slot holds one angle (updated additively).  In 3-D a slot is e
   (:func:`~trussfe.nonlinear.beam3d.compose`);
 * **additive** (where a rotation component must be held): it stores ``φ = Qᵀψ`` and its DOFs
   are the increments of ``φ`` (``δw = Tₛ(ψ) Q δφ``), so that holding a component of ``φ`` is
-  a holonomic constraint.  These are the start ends of members released at both ends (a
-  pinned-beam bar would spin freely about its own axis, so the axial component of its start
-  rotation vector is held — the nonlinear counterpart of the linear FE's twist-free pinned
-  beam) and joints with some but not all rotations supported.
+  a holonomic constraint.  These are the start ends of members free to twist at both ends
+  (the axial component of the start rotation vector is held, so the member cannot spin) and
+  joints with some but not all rotations supported;
+* **relative** (an additive slot of a member end whose twist — or, under a torsion release
+  of an end rigid in bending, whose bending rotations — are the joint's): it stores the
+  end's rotation relative to its joint's, ``R_end = R_joint exp(S(Qφ))``, with the
+  components that are the joint's held at zero.
 
-In 3-D a released member end is a spherical hinge (all three end moments free).
+What a release frees is :mod:`trussfe.mechanics.releases`, the same definition as the linear
+discretisation's: a released end transmits no bending moment, and torsion only where the
+joint has rotational stiffness from a rigid beam end or a rotational support.
 """
 from __future__ import annotations
 
