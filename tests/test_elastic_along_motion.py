@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
 """FE (pinned-beam) section forces along Lacy's maneuvers equal the rigid-body model's internal
-forces at every step (issue requirement: 1e-6 relative or better), and bad input gives a
+forces at every step (required: 1e-6 relative or better), and bad input gives a
 one-line error."""
 import numpy as np
 import pytest
@@ -11,7 +11,7 @@ from trussfe.errors import AnalysisError, InputError, MechanismError, TrussfeErr
 from trussfe.rigid.motion import third_order_motion
 from trussfe.rigid.reproductions import L2, L3MIN, double_octahedron, triangular_truss
 
-#: The issue's requirement; the agreement found is ~1e-11 (round-off of the solves).
+#: The required agreement; the agreement found is ~1e-11 (round-off of the solves).
 RTOL = 1e-6
 
 

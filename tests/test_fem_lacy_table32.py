@@ -23,7 +23,7 @@ from trussfe.fem import solve_static
 from trussfe.model.sections import Material, Section
 from trussfe.model.structure import build_structure
 
-#: "every value within 0.01 %" (issue, Table 3.2 prints 6 significant digits)
+#: every value within 0.01 % (Table 3.2 prints 6 significant digits)
 RTOL = 1e-4
 
 ALUMINIUM = Material("aluminium", E=71.0e9, G=26.2e9, density=2711.5)

@@ -1,4 +1,4 @@
-"""The model catalogue (trussfe.models): geometry against the seeds and hand solutions.
+"""The model catalogue (trussfe.models): geometry against the sources and hand solutions.
 
 Forces are checked with an independent determinate solve Bᵀ t = f
 (:func:`trussfe.kinematics.equilibrium_matrix`), not with the finite-element solver, so that a
@@ -150,7 +150,7 @@ TABLES = {
                 vm=[3.4750e5, 1.0435e5]),
 }
 # Tables 5.3 and 5.4 are swapped: Table 5.3 ("first slewed position", M7/8 at maximum by the
-# text) holds the numbers of M7/8 at its minimum (DESIGN.md; checked below).
+# text) holds the numbers of M7/8 at its minimum (case lacy-table-5-3-as-captioned; checked below).
 TABLE_POSITION = {"5.2": "equilibrium", "5.3": "slew2", "5.4": "slew1"}
 
 

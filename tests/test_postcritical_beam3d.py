@@ -251,7 +251,7 @@ def test_three_controls_trace_the_same_3d_path_from_the_command_line(tmp_path):
     """``trussfe postcritical`` on the 3-D column with load, displacement and arc-length
     control: every point of the load- and displacement-controlled paths lies on the
     arc-length path (λ interpolated, monotone cubic, at the same top displacement: to 2e-4,
-    the interpolation error between arc-length points), and the JSON follows CONTRACT §3."""
+    the interpolation error between arc-length points), and the JSON follows docs/json.md."""
     from scipy.interpolate import PchipInterpolator
     from trussfe.cli import main
     from trussfe.cli.cmd_postcritical import analyse

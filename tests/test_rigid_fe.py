@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""The rigid-body model at rest against the finite-element static solution (issue item 4):
+"""The rigid-body model at rest against the finite-element static solution:
 truss bar model without gravity, pinned-beam bar model with gravity — every force to 1e-9
 relative to the largest force."""
 import numpy as np

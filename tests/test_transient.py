@@ -285,7 +285,7 @@ def test_cli_transient_json_plot_and_errors(tmp_path, capsys):
 
 def test_cli_transient_vtk_series(tmp_path, capsys):
     """``--vtk``: a .pvd of .vtu steps (every K-th and the last) whose arrays, read back by
-    meshio and by VTK's own reader, equal the JSON histories (CONTRACT.md §4)."""
+    meshio and by VTK's own reader, equal the JSON histories (docs/vtk.md)."""
     import json
 
     import meshio

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 """``trussfe buckling MODEL [--count N] [--bar-model pinned-beam|truss] [--subdivisions K]
 [--json OUT] [--vtk DIR]``: linear buckling load factors about the static state
-(CONTRACT.md §2–4)."""
+(docs/cli.md, docs/json.md, docs/vtk.md)."""
 from __future__ import annotations
 
 import argparse
@@ -46,7 +46,7 @@ def run_buckling(model_path: str | Path, count: int = 4, bar_model: str = "pinne
 
 def analyse(model_path: str | Path, count: int = 4, bar_model: str = "pinned-beam",
             subdivisions: int | None = None, **_ignored) -> dict:
-    """Buckling analysis of a model file; returns the CONTRACT.md §3 ``buckling`` document."""
+    """Buckling analysis of a model file; returns the ``buckling`` document (docs/json.md)."""
     return buckling_json(run_buckling(model_path, count, bar_model, subdivisions))
 
 

@@ -57,7 +57,7 @@ def _elastic(model_path, motion=None, steps=None, scheme="exact", sections=7,
 
 
 def to_json(sim, resp, cmp) -> dict:
-    """The ``elastic`` JSON document (CONTRACT.md §3 style, one value per time step).
+    """The ``elastic`` JSON document (docs/json.md, ``elastic``; one value per time step).
 
     ``members[id]``: ``axial_force`` (FE, tube midpoint), ``strain`` (N/EA there),
     ``rigid_axial_force``; ``nodes[id]``: ``displacement`` (elastic, from the rigid-body
@@ -88,7 +88,7 @@ def analyse(model_path, **options) -> dict:
 
 
 def write_vtk(directory, sim, resp, stem: str = "elastic") -> Path:
-    """Two time series at the positions of the rigid motion (CONTRACT.md §4).
+    """Two time series at the positions of the rigid motion (docs/vtk.md).
 
     ``stem.pvd``: point data ``displacement`` (elastic), cell data ``axial_force`` (FE,
     midpoint), ``strain``, ``rigid_axial_force``.  ``stem_stations.pvd``: every member as a

@@ -2,7 +2,7 @@
 """``trussfe mechanism MODEL [--json OUT] [--vtk DIR]``: rank analysis of the bar assembly.
 
 Reports ρ(B), the internal infinitesimal mechanisms, the rigid-body motions the supports leave
-free, the states of self-stress and the determinacy (CONTRACT.md §3, ``mechanism``).
+free, the states of self-stress and the determinacy (docs/json.md, ``mechanism``).
 """
 from __future__ import annotations
 
@@ -33,7 +33,7 @@ def register(subparsers) -> None:
 
 def analyse(model_path: str, *, tolerance: float | None = None, vtk: str | None = None,
             structure=None) -> dict:
-    """Rank analysis of a model file; returns the JSON document of CONTRACT.md §3.
+    """Rank analysis of a model file; returns the JSON document (docs/json.md, ``mechanism``).
 
     Keys: ``units``, ``command``, ``model``, ``rank``, ``mechanisms``, ``rigid_body_motions``,
     ``self_stress_states`` and, beyond the contract, ``coordinates``, ``bars``,

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 """``trussfe modes MODEL [--count N] [--mass consistent|lumped] [--bar-model ...]
 [--subdivisions K] [--json OUT] [--vtk DIR]``: natural frequencies and mode shapes
-(CONTRACT.md §2–4)."""
+(docs/cli.md, docs/json.md, docs/vtk.md)."""
 from __future__ import annotations
 
 import argparse
@@ -46,7 +46,7 @@ def run_modes(model_path: str | Path, count: int = 6, mass: str = "consistent",
 
 def analyse(model_path: str | Path, count: int = 6, mass: str = "consistent",
             bar_model: str = "truss", subdivisions: int | None = None, **_ignored) -> dict:
-    """Modal analysis of a model file; returns the CONTRACT.md §3 ``modes`` document."""
+    """Modal analysis of a model file; returns the ``modes`` document (docs/json.md)."""
     return modes_json(run_modes(model_path, count, mass, bar_model, subdivisions))
 
 

@@ -53,7 +53,7 @@ def _simulate(model_path, motion=None, steps=None, scheme="exact", sections=7, p
 
 
 def analyse(model_path, **options) -> dict:
-    """Run ``simulate`` and return the CONTRACT §3 JSON document.
+    """Run ``simulate`` and return its JSON document (docs/json.md, ``simulate``).
 
     Options: ``motion`` (path; a relative path not found from the working directory is taken
     relative to the model file), ``steps``, ``scheme``, ``sections``.

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
 """``trussfe static MODEL [--bar-model truss|pinned-beam] [--subdivisions K]
-[--solver auto|superlu|pardiso] [--json OUT] [--vtk OUT.vtu]``: linear static finite-element analysis (CONTRACT.md §2–4)."""
+[--solver auto|superlu|pardiso] [--json OUT] [--vtk OUT.vtu]``: linear static finite-element analysis (docs/cli.md)."""
 from __future__ import annotations
 
 import argparse
@@ -51,7 +51,7 @@ def run_static(model_path: str | Path, bar_model: str = "truss",
 
 def analyse(model_path: str | Path, bar_model: str = "truss", subdivisions: int | None = None,
             solver: str = "auto", **_ignored) -> dict:
-    """Static analysis of a model file; returns the CONTRACT.md §3 ``static`` document."""
+    """Static analysis of a model file; returns the ``static`` document (docs/json.md)."""
     return static_json(run_static(model_path, bar_model, subdivisions, solver))
 
 

@@ -2,7 +2,7 @@
 """``trussfe trace MODEL --drive NODE:AXIS --step S --steps N``: finite-mechanism motion.
 
 Follows the motion of an inextensional bar-and-joint mechanism (Hortobágyi's algorithm) and
-reports every state, the bifurcation points and the limit points (CONTRACT.md §3, ``trace``).
+reports every state, the bifurcation points and the limit points (docs/json.md, ``trace``).
 """
 from __future__ import annotations
 
@@ -43,7 +43,7 @@ def register(subparsers) -> None:
 def analyse(model_path: str, *, drive, step, steps: int, branch: int = 0,
             tolerance: float = 1e-10, frozen: bool = False, vtk: str | None = None,
             plot: str | None = None, structure=None) -> dict:
-    """Trace a model file's mechanism; returns the JSON document of CONTRACT.md §3.
+    """Trace a model file's mechanism; returns the JSON document (docs/json.md, ``trace``).
 
     ``path``: one entry per state, ``{"parameter", "positions": {node: [..]}, "rank"}`` (and
     ``iterations`` and ``residual``, beyond the contract); ``events``: bifurcation and limit

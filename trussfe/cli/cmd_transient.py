@@ -57,7 +57,7 @@ def _transient(model_path, motion, steps=None, dt=None, t_end=None, bar_model="p
 
 
 def to_json(res) -> dict:
-    """The ``transient`` JSON document (CONTRACT §3 style, one value per time step)."""
+    """The ``transient`` JSON document (docs/json.md, ``transient``; one value per time step)."""
     s = res.structure
     members = {}
     for j, mid in enumerate(s.member_ids):
@@ -93,7 +93,7 @@ def analyse(model_path, **options) -> dict:
 
 
 def write_vtk(directory, res, stem: str = "transient", every: int = 1) -> Path:
-    """The response as a time series at the positions of the rigid motion (CONTRACT.md §4).
+    """The response as a time series at the positions of the rigid motion (docs/vtk.md).
 
     ``stem.pvd``: point data ``displacement`` (elastic, dynamic) and
     ``displacement_quasi_static``; cell data ``axial_force``, ``axial_stress`` (N/A),

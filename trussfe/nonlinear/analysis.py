@@ -73,7 +73,7 @@ def run_postcritical(structure: Structure, **options) -> PathResult:
 
 
 def result_document(result: PathResult) -> dict:
-    """The CONTRACT §3 ``postcritical`` JSON document of a path."""
+    """The ``postcritical`` JSON document of a path (docs/json.md, ``postcritical``)."""
     m = result.model
     s = m.structure
     ids = s.node_ids

@@ -27,7 +27,7 @@ difference can be shown.
 
 Bay-local kinematics (:func:`bay_kinematics`) use the forward-position solver and the
 compatibility matrix of the bay: ``B ṗ = L̇``, ``B p̈ = L̈ − (|ṗ_b − ṗ_a|² − L̇²)/L``
-(DESIGN.md), exact, batched over time steps.
+(the bar-length condition differentiated twice), exact, batched over time steps.
 """
 from __future__ import annotations
 

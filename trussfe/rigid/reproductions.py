@@ -195,7 +195,7 @@ def double_octahedron(active_lengths=(EQUILIBRIUM_LENGTH,) * 3, *, top_load: flo
 
 #: Active lengths of Tables 5.2–5.4.  The short slewed length reproduces as 1.1079 m (printed
 #: 1.1077 m); the numbers printed as Table 5.3 ("first slewed position") belong to M7/8 at its
-#: minimum and those of Table 5.4 to M7/8 at its maximum (DESIGN.md).
+#: minimum and those of Table 5.4 to M7/8 at its maximum (case lacy-table-5-3-as-captioned).
 DO_POSITIONS = {
     "table_5_2": (EQUILIBRIUM_LENGTH,) * 3,
     "table_5_3": (1.1079, 1.2289, 1.2289),
@@ -207,7 +207,7 @@ def double_octahedron_static(top_load: float = 44.498) -> dict:
     """Tables 5.2–5.4 with the rigid-body model at rest (no gravity, vertical top loads).
 
     The tables reproduce with 44.498 N per top node (4.536 kg × 9.81: the printed reaction),
-    not the stated 46.0 N, which makes every value 3.4 % high (DESIGN.md).
+    not the stated 46.0 N, which makes every value 3.4 % high (case lacy-table-5-2-stated-load).
     """
     out = {}
     for key, lengths in DO_POSITIONS.items():
