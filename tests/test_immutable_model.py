@@ -151,6 +151,19 @@ def test_identity_equality_and_hash():
     assert {s: 1, same_data: 2}[s] == 1
 
 
+def test_pickled_and_deep_copied_models_stay_frozen():
+    import copy
+    import pickle
+    s = two_bar().with_sections({"left": BIG})
+    for t in (pickle.loads(pickle.dumps(s)), copy.deepcopy(s)):
+        assert_allclose(t.area, s.area, rtol=0)
+        assert_allclose(t.coords, s.coords, rtol=0)
+        with pytest.raises(ValueError):
+            t.coords[0, 0] = 1.0
+        with pytest.raises(ValueError):
+            t.area[0] = 1.0
+
+
 def test_subset_members_renumbers_extensions():
     s = build_structure([[0, 0], [1, 0], [2, 0]], [(0, 1), (1, 2), (0, 2)], section=TUBE,
                         material=STEEL, member_ids=["a", "b", "c"])

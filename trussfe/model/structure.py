@@ -149,6 +149,16 @@ class Structure:
         put(self, "_node_index", None)
         put(self, "_member_index", None)
 
+    def __getstate__(self) -> dict[str, Any]:
+        state = {f.name: getattr(self, f.name) for f in fields(self)}
+        state["extensions"] = dict(self.extensions)       # a mappingproxy does not pickle
+        return state
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        # unpickled arrays come back writable: freeze them again (pickle, copy.deepcopy)
+        self.__dict__.update(state)
+        self._freeze(None)
+
     # ------------------------------------------------------------------ sizes and lookups
     @property
     def n_nodes(self) -> int:
