@@ -304,11 +304,11 @@ def test_shipped_models_static_equilibrium(name):
     """Every shipped model solves with ``trussfe static`` (truss bar model) and its reactions
     balance the applied loads (global statics), e.g. 3 × 46.0 N on the double octahedron."""
     from trussfe._resources import mesh_path
-    from trussfe.cli.cmd_static import analyse
+    from trussfe import api
     from trussfe.io.model_file import read_model
 
     s = read_model(mesh_path(name))
-    doc = analyse(mesh_path(name), bar_model="truss")
+    doc = api.static(mesh_path(name), bar_model="truss").to_dict()
     reactions = np.array([v["reaction"] for v in doc["nodes"].values() if "reaction" in v])
     weight = (s.masses.sum() + s.member_mass.sum()) * s.gravity
     applied = s.loads[:, : s.dim].sum(axis=0) + weight

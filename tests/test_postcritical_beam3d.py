@@ -254,12 +254,13 @@ def test_three_controls_trace_the_same_3d_path_from_the_command_line(tmp_path):
     the interpolation error between arc-length points), and the JSON follows docs/json.md."""
     from scipy.interpolate import PchipInterpolator
     from trussfe.cli import main
-    from trussfe.cli.cmd_postcritical import analyse
+    from trussfe import api
     model = str(__import__("trussfe._resources", fromlist=["mesh_path"])
                 .mesh_path("postcritical_euler_column_3d.toml"))
-    docs = {c: analyse(model, control=c, max_load_factor=1.2, **kw) for c, kw in (
-        ("arc-length", dict(steps=150, step=1e-3, max_step=4e-3)), ("load", dict(steps=12)),
-        ("displacement", dict(steps=20)))}
+    runs = (("arc-length", dict(steps=150, step=1e-3, max_step=4e-3)),
+            ("load", dict(steps=12)), ("displacement", dict(steps=20)))
+    docs = {c: api.postcritical(model, control=c, max_load_factor=1.2, **kw).to_dict()
+            for c, kw in runs}
 
     def top(doc):
         return (np.array([p["load_factor"] for p in doc["path"]]),

@@ -8,12 +8,18 @@ from numpy.testing import assert_allclose
 
 from trussfe._resources import mesh_path
 from trussfe.cli import main
-from trussfe.cli.cmd_simulate import analyse
 from trussfe.errors import AnalysisError, InputError
 from trussfe.io.model_file import read_model
 from trussfe.rigid.motion import Motion, load_motion
 from trussfe.rigid.reproductions import triangular_truss
 from trussfe.rigid.simulate import simulate
+from trussfe import api
+
+
+def analyse(model, **options):
+    """The ``simulate`` JSON document through the Python API."""
+    return api.simulate(model, **options).to_dict()
+
 
 MODEL = "triangular_truss_motion_active.toml"
 

@@ -260,7 +260,7 @@ def test_cli_transient_json_plot_and_errors(tmp_path, capsys):
 
     from trussfe._resources import mesh_path
     from trussfe.cli import main
-    from trussfe.cli.cmd_transient import analyse
+    from trussfe import api
 
     model = str(mesh_path("triangular_truss_motion_active.toml"))
     out = tmp_path / "t.json"
@@ -274,7 +274,8 @@ def test_cli_transient_json_plot_and_errors(tmp_path, capsys):
     for mid in ("follower", "active"):
         assert len(doc["members"][mid]["axial_force"]) == n
     assert png.read_bytes()[:4] == b"\x89PNG"
-    assert analyse(model, motion="triangular_truss_motion_3s.toml", dt=0.01)["time"] == \
+    assert api.transient(model, motion="triangular_truss_motion_3s.toml",
+                         dt=0.01).to_dict()["time"] == \
         doc["time"]
     capsys.readouterr()
     assert main(["transient", model, "--motion", "triangular_truss_motion_3s.toml",
