@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""``trussfe modes`` and ``trussfe buckling`` end to end: JSON per CONTRACT.md §3, VTK mode
+"""``trussfe modes`` and ``trussfe buckling`` end to end: JSON per docs/json.md, VTK mode
 sets read back with VTK's own reader, exit status 2 with one line on bad input."""
 from __future__ import annotations
 

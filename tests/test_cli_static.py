@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""``trussfe static``: outputs, exit statuses and atomic writes (CONTRACT.md §2–4).
+"""``trussfe static``: outputs, exit statuses and atomic writes (docs/cli.md, json.md, vtk.md).
 Expected numbers: Lacy Table 3.2 (follower tension −78.5429 N, reactions at O1)."""
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""The ``mechanism`` and ``trace`` commands on the shipped models (CONTRACT.md §2–4)."""
+"""The ``mechanism`` and ``trace`` commands on the shipped models (docs/cli.md, docs/json.md)."""
 import json
 import xml.etree.ElementTree as ET
 

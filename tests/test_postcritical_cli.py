@@ -15,7 +15,7 @@ VON_MISES = str(mesh_path("postcritical_von_mises.toml"))
 
 def test_dome_from_the_command_line_to_a_mechanism(tmp_path, capsys):
     """The lattice dome runs to the mechanism and its equilibrium form; the JSON follows
-    CONTRACT §3 (path with load factors and displacements; events with kinds), the .pvd has
+    docs/json.md (path with load factors and displacements; events with kinds), the .pvd has
     one .vtu per path point with failed members marked, and the plot is a PNG."""
     out = tmp_path / "out"
     rc = main(["postcritical", DOME, "--json", str(out / "d.json"), "--vtk", str(out / "vtk"),

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""``trussfe simulate`` end to end, and the one-line errors for bad input (issue item 11)."""
+"""``trussfe simulate`` end to end, and the one-line errors for bad input."""
 import json
 
 import numpy as np

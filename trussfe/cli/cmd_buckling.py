@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 """``trussfe buckling MODEL [--count N] [--bar-model pinned-beam|truss] [--subdivisions K]
 [--json OUT] [--vtk DIR]``: linear buckling load factors about the static state
-(CONTRACT.md §2–4)."""
+(docs/cli.md, docs/json.md, docs/vtk.md)."""
 from __future__ import annotations
 
 import argparse

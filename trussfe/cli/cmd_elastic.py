@@ -34,7 +34,7 @@ def register(subparsers) -> None:
 
 
 def write_vtk(directory, sim, resp, stem: str = "elastic") -> Path:
-    """Two time series at the positions of the rigid motion (CONTRACT.md §4).
+    """Two time series at the positions of the rigid motion (docs/vtk.md).
 
     ``stem.pvd``: point data ``displacement`` (elastic), cell data ``axial_force`` (FE,
     midpoint), ``strain``, ``axial_force_rigid``.  ``stem_stations.pvd``: every member as a

@@ -2,7 +2,7 @@
 """``trussfe mechanism MODEL [--json OUT] [--vtk DIR]``: rank analysis of the bar assembly.
 
 Reports ρ(B), the internal infinitesimal mechanisms, the rigid-body motions the supports leave
-free, the states of self-stress and the determinacy (CONTRACT.md §3, ``mechanism``).
+free, the states of self-stress and the determinacy (docs/json.md, ``mechanism``).
 """
 from __future__ import annotations
 

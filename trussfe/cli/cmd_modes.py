@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 """``trussfe modes MODEL [--count N] [--mass consistent|lumped] [--bar-model ...]
 [--subdivisions K] [--json OUT] [--vtk DIR]``: natural frequencies and mode shapes
-(CONTRACT.md §2–4)."""
+(docs/cli.md, docs/json.md, docs/vtk.md)."""
 from __future__ import annotations
 
 import argparse

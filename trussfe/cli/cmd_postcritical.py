@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 """``trussfe postcritical MODEL [--control load|displacement|arc-length] [--steps N]
 [--json OUT] [--vtk DIR] [--plot PNG] ...``: geometrically nonlinear path with member failure
-(CONTRACT.md §2–4).
+(docs/cli.md, docs/json.md, docs/vtk.md).
 
 The model's ``[loads]`` are the reference load pattern scaled by the load factor λ; failure
 laws come from its ``[failure]`` table and analysis settings from ``[postcritical]`` (options

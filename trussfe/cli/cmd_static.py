@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
 """``trussfe static MODEL [--bar-model truss|pinned-beam] [--subdivisions K]
-[--solver auto|superlu|pardiso] [--json OUT] [--vtk OUT.vtu]``: linear static finite-element analysis (CONTRACT.md §2–4)."""
+[--solver auto|superlu|pardiso] [--json OUT] [--vtk OUT.vtu]``: linear static finite-element analysis (docs/cli.md)."""
 from __future__ import annotations
 
 import argparse

@@ -2,7 +2,7 @@
 """``trussfe trace MODEL --drive NODE:AXIS --step S --steps N``: finite-mechanism motion.
 
 Follows the motion of an inextensional bar-and-joint mechanism (Hortobágyi's algorithm) and
-reports every state, the bifurcation points and the limit points (CONTRACT.md §3, ``trace``).
+reports every state, the bifurcation points and the limit points (docs/json.md, ``trace``).
 """
 from __future__ import annotations
 

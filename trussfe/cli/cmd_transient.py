@@ -39,7 +39,7 @@ def register(subparsers) -> None:
 
 
 def write_vtk(directory, res, stem: str = "transient", every: int = 1) -> Path:
-    """The response as a time series at the positions of the rigid motion (CONTRACT.md §4).
+    """The response as a time series at the positions of the rigid motion (docs/vtk.md).
 
     ``stem.pvd``: point data ``displacement`` (elastic, dynamic) and
     ``displacement_quasi_static``; cell data ``axial_force``, ``axial_stress`` (N/A),

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Reproductions of the seed examples and closed-form checks, as plain dicts of numbers.
+"""Reproductions of the published examples and closed-form checks, as plain dicts of numbers.
 
 The validation cases ``validation/cases/mech_*.toml`` point at these functions
 (``python = "trussfe.kinematics.reproductions:<name>"``) and compare entries of the returned

@@ -12,6 +12,7 @@ suite (``validation/cases/postcritical_*.toml``) and the tests:
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -357,13 +358,16 @@ def double_layer_grid(n: int, spacing: float = 1.0, depth: float = 0.7,
                         material=Material(name="steel", E=2.1e11, G=8.1e10, density=7850.0,
                                           yield_strength=3.55e8),
                         name=f"double-layer grid {n}x{n}")
-    s.supports[np.flatnonzero(edge.ravel()), :3] = True
-    s.loads[np.flatnonzero(~edge.ravel()), 2] = load
+    supports = np.array(s.supports)
+    supports[np.flatnonzero(edge.ravel()), :3] = True
+    loads = np.array(s.loads)
+    loads[np.flatnonzero(~edge.ravel()), 2] = load
+    s = s.with_supports(supports).with_loads(loads)
     m = s.n_members
     rng = np.random.default_rng(seed)
-    laws = FailureLaws.none(m)
-    laws.buckling[:] = BUCKLING.index(law)
     L = s.lengths()
-    laws.critical_load[:] = (math.pi ** 2 * s.E * s.Iy / L ** 2
-                             * (1.0 + spread * (2 * rng.random(m) - 1)))
+    laws = dataclasses.replace(
+        FailureLaws.none(m), buckling=np.full(m, BUCKLING.index(law)),
+        critical_load=(math.pi ** 2 * s.E * s.Iy / L ** 2
+                       * (1.0 + spread * (2 * rng.random(m) - 1))))
     return s, laws

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""The validation suite engine: data-only cases, run and reported side by side with the seeds.
+"""The validation suite engine: data-only cases, run and reported beside the published values.
 
 A case is a TOML file (``validation/cases/*.toml``, see ``docs/validation.md``): a model (a
 file, or an entry of :mod:`trussfe.models` with parameters), an analysis (a function of the
