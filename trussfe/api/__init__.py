@@ -12,21 +12,28 @@ command line and the validation suite call these functions.  docs/python.md is t
 """
 from __future__ import annotations
 
+from types import MappingProxyType
+
 from .along_motion import elastic, transient
 from .kinematic import mechanism, trace
 from .linear import buckling, modes, static
-from .nonlinear_path import postcritical
 from .model import ModelLike, as_structure, model_from_dict, read_model
-from .results import Result
-from .validation import ValidationResult, validate
+from .nonlinear_path import postcritical
+from .results import (ActuatorsResult, BucklingResult, ElasticResult, MechanismResult,
+                      ModesResult, PostcriticalResult, Result, SimulateResult, StaticResult,
+                      TraceResult, TransientResult)
 from .rigid_body import actuators, simulate
+from .validation import ValidationResult, validate
 
 #: The analyses that take a model, by command name (the validation suite's ``analysis``).
-ANALYSES = {"static": static, "modes": modes, "buckling": buckling, "simulate": simulate,
-            "actuators": actuators, "elastic": elastic, "transient": transient,
-            "mechanism": mechanism, "trace": trace, "postcritical": postcritical}
+ANALYSES = MappingProxyType({
+    "static": static, "modes": modes, "buckling": buckling, "simulate": simulate,
+    "actuators": actuators, "elastic": elastic, "transient": transient,
+    "mechanism": mechanism, "trace": trace, "postcritical": postcritical})
 
-__all__ = ["ANALYSES", "ModelLike", "Result", "actuators", "as_structure", "buckling",
-           "model_from_dict", "modes", "read_model", "simulate", "static",
-           "elastic", "transient", "mechanism", "trace",
-           "postcritical", "ValidationResult", "validate"]
+__all__ = ["ANALYSES", "ActuatorsResult", "BucklingResult", "ElasticResult",
+           "MechanismResult", "ModelLike", "ModesResult", "PostcriticalResult", "Result",
+           "SimulateResult", "StaticResult", "TraceResult", "TransientResult",
+           "ValidationResult", "actuators", "as_structure", "buckling", "elastic",
+           "mechanism", "model_from_dict", "modes", "postcritical", "read_model", "simulate",
+           "static", "trace", "transient", "validate"]

@@ -28,7 +28,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from ..io.output import _jsonable as plain
+from ..io.output import plain
 from ..model.structure import Structure
 
 
