@@ -12,6 +12,7 @@ command line and the validation suite call these functions.  docs/python.md is t
 """
 from __future__ import annotations
 
+import inspect
 from types import MappingProxyType
 
 from .along_motion import elastic, transient
@@ -31,9 +32,30 @@ ANALYSES = MappingProxyType({
     "actuators": actuators, "elastic": elastic, "transient": transient,
     "mechanism": mechanism, "trace": trace, "postcritical": postcritical})
 
+
+
+def option_names(analysis: str) -> tuple[str, ...]:
+    """The keyword options of one of :data:`ANALYSES`, in signature order."""
+    return tuple(p.name for p in inspect.signature(ANALYSES[analysis]).parameters.values()
+                 if p.kind is inspect.Parameter.KEYWORD_ONLY)
+
+
+def check_options(analysis: str, options) -> None:
+    """Raise :class:`~trussfe.errors.InputError` (item ``case.options``) for an option that
+    ``analysis`` does not take, suggesting the closest one."""
+    from ..errors import InputError
+    from ..io.model_file import _suggest
+
+    known = option_names(analysis)
+    for key in options:
+        if key not in known:
+            raise InputError("case.options", f"'{analysis}' has no option '{key}'"
+                                             f"{_suggest(key, known)}")
+
+
 __all__ = ["ANALYSES", "ActuatorsResult", "BucklingResult", "ElasticResult",
            "MechanismResult", "ModelLike", "ModesResult", "PostcriticalResult", "Result",
            "SimulateResult", "StaticResult", "TraceResult", "TransientResult",
-           "ValidationResult", "actuators", "as_structure", "buckling", "elastic",
-           "mechanism", "model_from_dict", "modes", "postcritical", "read_model", "simulate",
+           "ValidationResult", "actuators", "as_structure", "buckling", "check_options", "elastic",
+           "mechanism", "model_from_dict", "modes", "option_names", "postcritical", "read_model", "simulate",
            "static", "trace", "transient", "validate"]
