@@ -15,15 +15,13 @@ from __future__ import annotations
 import inspect
 from types import MappingProxyType
 
-from .along_motion import elastic, transient
-from .kinematic import mechanism, trace
-from .linear import buckling, modes, static
+from .along_motion import ElasticResult, TransientResult, elastic, transient
+from .kinematic import MechanismResult, TraceResult, mechanism, trace
+from .linear import BucklingResult, ModesResult, StaticResult, buckling, modes, static
 from .model import ModelLike, as_structure, model_from_dict, read_model
-from .nonlinear_path import postcritical
-from .results import (ActuatorsResult, BucklingResult, ElasticResult, MechanismResult,
-                      ModesResult, PostcriticalResult, Result, SimulateResult, StaticResult,
-                      TraceResult, TransientResult)
-from .rigid_body import actuators, simulate
+from .nonlinear_path import PostcriticalResult, postcritical
+from .results import Result
+from .rigid_body import ActuatorsResult, SimulateResult, actuators, simulate
 from .validation import ValidationResult, validate
 
 #: The analyses that take a model, by command name (the validation suite's ``analysis``).
