@@ -64,7 +64,7 @@ def trace(model: ModelLike, *, drive: str | Sequence[str], step: float | Sequenc
     TraceResult
         ``position`` (state, node, dim), ``parameter`` and ``rank`` (state,), ``events``.
     """
-    from ..kinematics.mechanism import trace_structure
+    from ..kinematics.trace import trace_structure
 
     drives = [drive] if isinstance(drive, str) else list(drive)
     steps_ = [step] if np.isscalar(step) else list(step)
@@ -175,7 +175,7 @@ class MechanismResult(Result):
 @dataclass(frozen=True, eq=False, repr=False)
 class TraceResult(Result):
     """A traced finite-mechanism motion (:func:`trussfe.trace`); ``solution`` is a
-    :class:`trussfe.kinematics.mechanism.TraceResult`.  ``options`` holds the drive, step,
+    :class:`trussfe.kinematics.trace.TraceResult`.  ``options`` holds the drive, step,
     steps and branch of the JSON document."""
 
     command: ClassVar[str] = "trace"
