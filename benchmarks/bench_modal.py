@@ -32,7 +32,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from trussfe.allocator import tune_allocator  # noqa: E402
 from trussfe.fem import discretise  # noqa: E402
 from trussfe.fem.modal import RESOLVED_RESIDUAL, mass_matrix, solve_modes  # noqa: E402
-from trussfe.fem.solver import free_submatrix  # noqa: E402
+from trussfe.linalg import free_submatrix  # noqa: E402
 from trussfe.model.sections import Material, Section  # noqa: E402
 from trussfe.model.structure import Structure  # noqa: E402
 

@@ -23,7 +23,7 @@ from trussfe._resources import mesh_path
 from trussfe.io.model_file import read_model
 from trussfe.nonlinear import NonlinearModel, follow_path
 from trussfe.nonlinear.reproductions import double_layer_grid
-from trussfe.nonlinear.solvers import factorize
+from trussfe.linalg import factor
 from trussfe.allocator import tune_allocator
 
 tune_allocator()   # numpy temporaries reuse heap pages, as in the trussfe command
@@ -47,7 +47,7 @@ def lattice(n: int = 36, events: int = 50, law: str = "cap"):
     # first arc length: the linear displacement norm of one load factor unit
     free = np.flatnonzero(m.free)
     K = m.reference_tangent()[free][:, free]
-    ds = float(np.linalg.norm(factorize(K).solve(m.load[free])))
+    ds = float(np.linalg.norm(factor(K, "symmetric").solve(m.load[free], refine=False)))
     r = follow_path(m, "arc-length", steps=100000, monitor=m.dof(centre, 2),
                     max_failures=events, step=ds)
     dt = time.perf_counter() - t

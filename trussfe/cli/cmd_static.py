@@ -11,7 +11,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..fem.discretisation import BAR_MODELS
-from ..fem.linsolve import pardiso_available
+from ..linalg.pardiso import available as pardiso_available
 from ..fem.static import StaticResult, solve_static, static_json
 from ..io.model_file import read_model
 from ..io.output import write_json

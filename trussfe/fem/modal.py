@@ -5,9 +5,9 @@ The generalized eigenproblem on the free DOFs
 
 .. math:: K \\varphi = \\omega^2 M \\varphi, \\qquad \\varphi^T M \\varphi = 1
 
-is solved by shift-invert Lanczos (:mod:`trussfe.fem.lanczos`; ARPACK through
+is solved by shift-invert Lanczos (:mod:`trussfe.linalg.eigen`; ARPACK through
 ``scipy.sparse.linalg.eigsh`` when that does not converge without restarts) with the
-factorisation of ``K − σM`` from :mod:`trussfe.fem.linsolve`, or densely for small models.
+factorisation of ``K − σM`` from :func:`trussfe.linalg.factor`, or densely for small models.
 
 Mass
 ----
@@ -31,7 +31,7 @@ Mass
 Rigid-body and mechanism modes
 ------------------------------
 When the free stiffness is singular (an unsupported structure or a mechanism) its null space
-is computed first (:func:`trussfe.fem.solver.null_space`, scaled tolerance 1e-10); its
+is computed first (:func:`trussfe.linalg.stiffness_null_space`, scaled tolerance 1e-10); its
 dimension ``r`` is the number of zero-frequency modes.  They are reported as exactly 0 Hz with
 ``kind = "rigid"`` — never as tiny, meaningless frequencies — and the shift becomes
 ``σ = −10⁻⁶ λ_ref`` (``λ_ref`` the median of ``K_ii / M_ii``) so ``K − σM`` can be factorised.
@@ -50,11 +50,10 @@ import scipy.sparse.linalg as spla
 from ..errors import AnalysisError, InputError
 from ..model.structure import Structure
 from .discretisation import FEModel, discretise
+from .. import linalg
+from ..linalg import FreeBlock, free_submatrix, stiffness_null_space
+from ..linalg.eigen import shift_invert_lanczos
 from ..threads import parallel_map
-from .banded import band_layout_free, banded_factor
-from .lanczos import shift_invert_lanczos
-from .linsolve import SingularMatrixError, factorize
-from .solver import FreeBlock, free_submatrix, null_space
 
 log = logging.getLogger(__name__)
 
@@ -242,7 +241,7 @@ def generalized_eigen(Kff: sp.spmatrix, Mff: sp.spmatrix, count: int, sigma: flo
     count : int
     sigma : float
         Shift (≤ the lowest eigenvalue wanted).
-    factor : object with ``solve``, optional
+    factor : trussfe.linalg.Factor, optional
         A factorisation of ``K − σM`` to reuse.
 
     Returns
@@ -289,10 +288,13 @@ def generalized_eigen(Kff: sp.spmatrix, Mff: sp.spmatrix, count: int, sigma: flo
         lam = sigma + 1.0 / mu
     else:
         if factor is None:
-            A = shifted()
-            factor = banded_factor(A) or factorize(A, symmetric=True)
-        # The Lanczos iteration needs no refined solves: use the factor's plain solve.
-        solve = getattr(factor, "_solve", factor.solve)
+            factor = linalg.factor(shifted(), "spd")
+        fac = factor
+
+        def solve(b):
+            # the Lanczos iteration needs no refined solves: the factor's plain solve
+            return fac.solve(b, refine=False)
+
         found = shift_invert_lanczos(solve, Mff, count, sigma=sigma)
         if found is not None:
             lam, V = found
@@ -389,24 +391,26 @@ def solve_modes(structure: Structure, count: int = 6, mass: str = "consistent",
         raise AnalysisError(item, "every DOF is supported: there is nothing to vibrate")
     dense = n <= DENSE_MODAL_LIMIT or count >= n - 1
 
-    def stiffness_and_band():
+    def stiffness_and_factor():
+        # K_ff and its factor (made while M is assembled); None for the dense path or a DOF
+        # nothing is attached to (a mechanism: its null space is computed below)
         K = fe.stiffness(copy=False)                 # read only
-        if not dense:
-            # a long, narrow structure: the banded factor of K_ff straight from K's free rows
-            # and columns (K_ff itself is formed only if a later step needs it), made while M
-            # is assembled
-            layout = band_layout_free(K, free)
-            band = banded_factor(layout=layout) if layout is not None else None
-            if band is not None:
-                return FreeBlock(K, free), band
-        return (free_submatrix(K, free) if n < fe.n_dof else K.copy()), None
+        block = FreeBlock(K, free)
+        if dense or np.any(block.diagonal() <= 0):
+            return (free_submatrix(K, free) if n < fe.n_dof else K.copy()), None
+        # a long, narrow structure: the banded factor of K_ff straight from K's free rows and
+        # columns (K_ff itself is formed only if a later step needs it)
+        fac = linalg.factor(block, "spd", singular="flag")
+        if fac.backend in ("banded", "banded-lu"):
+            return block, fac
+        return (block.tocsr() if n < fe.n_dof else K.copy()), fac
 
     def mass_ff():
         return free_submatrix(mass_matrix(fe, mass, include_nodal_masses=include_nodal_masses),
                               free)
 
     # K_ff (and its factor) and M_ff are independent: two worker threads (trussfe.threads)
-    (Kff, band), Mff = parallel_map(lambda task: task(), [stiffness_and_band, mass_ff])
+    (Kff, fac), Mff = parallel_map(lambda task: task(), [stiffness_and_factor, mass_ff])
     n_mass = int(np.count_nonzero(Mff.diagonal() > 0))
     if n_mass == 0:
         raise AnalysisError(item, "the structure has no mass: give members a density or "
@@ -420,16 +424,10 @@ def solve_modes(structure: Structure, count: int = 6, mass: str = "consistent",
     sigma = 0.0
     factor = None
     kd = Kff.diagonal()
-    if band is not None:                           # positive definite: no mechanism
-        factor = band
-    elif dense or np.any(kd <= 0):
-        rigid = null_space(Kff).shape[1]
+    if fac is not None and not fac.is_singular:    # regular: no mechanism
+        factor = fac
     else:
-        if factor is None:
-            try:
-                factor = factorize(Kff, symmetric=True)
-            except SingularMatrixError:
-                rigid = null_space(Kff).shape[1]
+        rigid = stiffness_null_space(Kff).shape[1]
     if rigid:
         md = Mff.diagonal()
         ok = (kd > 0) & (md > 0)
