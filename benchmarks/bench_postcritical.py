@@ -24,9 +24,7 @@ from trussfe.io.model_file import read_model
 from trussfe.nonlinear import NonlinearModel, follow_path
 from trussfe.nonlinear.reproductions import double_layer_grid
 from trussfe.linalg import factor
-from trussfe.allocator import tune_allocator
 
-tune_allocator()   # numpy temporaries reuse heap pages, as in the trussfe command
 
 
 def von_mises(steps: int = 200):
@@ -100,4 +98,8 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    from trussfe.cli import environment_workers
+    from trussfe.threads import compute_threads
+
+    with compute_threads(workers=environment_workers(), blas=1):   # as the trussfe command
+        main()

@@ -197,3 +197,21 @@ def test_nearest_zero_mode_is_eigenvector_nearest_zero():
     w, v = nearest_zero_mode(sp.csr_matrix(A))
     assert w == pytest.approx(-0.01)
     assert abs(v[1]) == pytest.approx(1.0)
+
+
+def test_linalg_sits_below_the_solvers():
+    """trussfe.linalg imports nothing from the mechanics, the solvers or the command line:
+    every trussfe import of its modules stays inside the package (read from the source)."""
+    import ast
+    from pathlib import Path
+
+    import trussfe.linalg
+
+    for path in Path(trussfe.linalg.__file__).parent.glob("*.py"):
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, ast.ImportFrom):
+                assert node.level <= 1, (path.name, node.module)
+                assert node.level == 1 or not (node.module or "").startswith("trussfe"), \
+                    (path.name, node.module)
+            elif isinstance(node, ast.Import):
+                assert not any(a.name.startswith("trussfe") for a in node.names), path.name
