@@ -17,7 +17,8 @@ def resultants(structure, reactions: np.ndarray, loads: np.ndarray | None = None
     """Resultant force and moment about the origin of loads + reactions (+ self-weight).
 
     Returns ``(force, moment, force_scale, moment_scale)``; the scales are the sums of the
-    magnitudes of the contributions, so a relative test does not depend on the units.
+    magnitudes of the contributions (the moment scale at least the force scale times the
+    largest distance from the origin), so a relative test does not depend on the units.
     """
     s = structure
     dim = s.dim
@@ -43,6 +44,9 @@ def resultants(structure, reactions: np.ndarray, loads: np.ndarray | None = None
         mom = [np.cross(x, f) for x, f in zip(points, forces)]
         M = sum(mm.sum(axis=0) for mm in mom) + sum(c.sum(axis=0) for c in couples)
         mscale = sum(np.abs(mm).sum() for mm in mom) + sum(np.abs(c).sum() for c in couples)
+    # the round-off of a moment about the origin is that of force × distance, even where the
+    # forces pass through the origin and the moments themselves vanish
+    mscale = max(mscale, fscale * float(np.abs(X).max(initial=0.0)))
     return np.atleast_1d(F), np.atleast_1d(M), fscale, mscale
 
 

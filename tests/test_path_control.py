@@ -23,7 +23,7 @@ from trussfe.model.structure import build_structure
 from trussfe.nonlinear.model import NonlinearModel
 from trussfe.nonlinear.path import (DEFAULT_STEP_FRACTION, _inertia, _next_sign,
                                     follow_path)
-from trussfe.nonlinear.solvers import critical_mode
+from trussfe.linalg.eigen import nearest_zero_mode as critical_mode
 
 TWIN_ARCH = """
 [model]
