@@ -8,7 +8,7 @@ from typing import ClassVar
 import numpy as np
 
 from ..fem.buckling import solve_buckling
-from ..fem.linsolve import pardiso_available
+from ..linalg.pardiso import available as pardiso_available
 from ..fem.modal import solve_modes
 from ..fem.static import solve_static
 from .model import ModelLike, as_structure
