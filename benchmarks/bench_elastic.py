@@ -12,8 +12,8 @@ import time
 import numpy as np
 
 from trussfe.elastic.along_motion import compare_with_rigid, elastic_along_motion
-from trussfe.elastic.reproductions import slew2_motion
-from trussfe.rigid.actuator_reproductions import slew1_motion, slew1_structure
+from trussfe.studies.lacy_elastic import slew2_motion
+from trussfe.studies.lacy_actuators import slew1_motion, slew1_structure
 from trussfe.rigid.simulate import simulate
 from trussfe.allocator import tune_allocator
 

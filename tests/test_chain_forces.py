@@ -8,7 +8,7 @@ from numpy.testing import assert_allclose
 from trussfe.rigid.chain import chain_forces, stack_bays
 from trussfe.rigid.forces import member_bodies
 from trussfe.rigid.motion import Motion, third_order_response
-from trussfe.rigid.reproductions import EQUILIBRIUM_LENGTH, double_octahedron
+from trussfe.studies.lacy_rigid import EQUILIBRIUM_LENGTH, double_octahedron
 from trussfe.rigid.simulate import simulate
 
 NB = 3
@@ -61,7 +61,7 @@ def test_agrees_with_the_shipped_chain_builder():
     """Against the rigid model's own chain builder (``double_octahedral_chain``: bays stacked
     with its own node numbering, base triangle included) analysed directly along the same
     motion: every member force agrees with the bay-by-bay result to 1e-10 of the largest."""
-    from trussfe.rigid.reproductions import double_octahedral_chain
+    from trussfe.studies.lacy_rigid import double_octahedral_chain
     nb = 3
     chain = double_octahedral_chain(nb, top_load=-46.0, gravity=9.81)
     bay = double_octahedron(gravity=9.81)

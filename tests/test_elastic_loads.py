@@ -12,9 +12,9 @@ from trussfe.model.sections import Material, Section
 from trussfe.model.structure import build_structure
 from trussfe.rigid.forces import member_bodies, nodal_forces
 from trussfe.rigid.kinematics import Kinematics
-from trussfe.rigid.reproductions import triangular_truss
+from trussfe.studies.lacy_rigid import triangular_truss
 from trussfe.rigid.motion import third_order_motion
-from trussfe.rigid.reproductions import L2, L3MIN
+from trussfe.studies.lacy_rigid import L2, L3MIN
 from trussfe.rigid.sections import section_forces
 from trussfe.rigid.simulate import simulate
 
@@ -106,7 +106,7 @@ def test_resultants_equal_rigid_member_equations():
 def test_consistent_loads_match_skfem_self_weight():
     """The hand-integrated consistent loads equal scikit-fem's assembled self-weight vector
     (trussfe.fem.forms.distributed_load) on a 3-D structure at rest: 1e-12."""
-    from trussfe.rigid.reproductions import double_octahedron
+    from trussfe.studies.lacy_rigid import double_octahedron
     from trussfe.rigid.kinematics import compute_kinematics
     from trussfe.rigid.motion import rest_motion
     s = double_octahedron(gravity=9.81)

@@ -3,9 +3,9 @@
 import numpy as np
 from numpy.testing import assert_allclose
 
-from trussfe.rigid.lacy import lacy_triangle
+from trussfe.studies.lacy_newton_euler import lacy_triangle
 from trussfe.rigid.motion import third_order_motion
-from trussfe.rigid.reproductions import L2, L3MIN, triangular_truss
+from trussfe.studies.lacy_rigid import L2, L3MIN, triangular_truss
 from trussfe.rigid.simulate import simulate
 
 
@@ -40,8 +40,8 @@ def test_reduced_model_equals_unreduced_117_system():
     """Double octahedron along a slew under gravity and top loads: the 117 × 117 unreduced
     Newton–Euler system (Lacy eq. 4.20 layout) and the reduced sparse model give the same
     end forces and reactions (rtol 1e-9 of the largest force)."""
-    from trussfe.rigid.lacy import newton_euler_system
-    from trussfe.rigid.reproductions import double_octahedron
+    from trussfe.studies.lacy_newton_euler import newton_euler_system
+    from trussfe.studies.lacy_rigid import double_octahedron
     s = double_octahedron((1.2289, 1.1079, 1.1079), gravity=-9.81, top_load=46.0)
     m = third_order_motion(s, [1.2289, 1.1079, 1.1079], [1.1079, 1.2289, 1.2289], 2.0, 40)
     r = simulate(s, m)

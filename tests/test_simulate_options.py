@@ -14,7 +14,7 @@ from trussfe.cli.cmd_actuators import analyse as actuators_analyse
 from trussfe.cli.cmd_simulate import analyse
 from trussfe.errors import InputError
 from trussfe.io.model_file import read_model
-from trussfe.rigid.motion import load_motion
+from trussfe.rigid.motion_file import load_motion
 
 MESHES = Path(__file__).resolve().parents[1] / "meshes"
 BAY = str(MESHES / "double_octahedron_actuators.toml")

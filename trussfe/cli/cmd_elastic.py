@@ -41,7 +41,7 @@ def register(subparsers) -> None:
 def _elastic(model_path, motion=None, steps=None, scheme="exact", sections=7,
              subdivisions=None):
     from ..elastic.along_motion import simulate_elastic
-    from ..rigid.motion import load_motion
+    from ..rigid.motion_file import load_motion
 
     structure = read_model(model_path)
     mot = None

@@ -36,7 +36,7 @@ def register(subparsers) -> None:
 
 
 def _simulate(model_path, motion=None, steps=None, scheme="exact", sections=7, progress=False):
-    from ..rigid.motion import load_motion
+    from ..rigid.motion_file import load_motion
     from ..rigid.simulate import simulate
 
     structure = read_model(model_path)

@@ -45,7 +45,7 @@ def register(subparsers) -> None:
 def _transient(model_path, motion, steps=None, dt=None, t_end=None, bar_model="pinned-beam",
                subdivisions=None, update="per-step", damping=None):
     from ..elastic.transient import transient_response
-    from ..rigid.motion import load_motion
+    from ..rigid.motion_file import load_motion
 
     structure = read_model(model_path)
     beside = Path(model_path).parent / motion

@@ -160,7 +160,7 @@ def motion_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies | N
     --------
     A 2 m tube at rest under gravity carries its weight ρAL·g as a uniform load:
 
-    >>> from trussfe.rigid.reproductions import triangular_truss
+    >>> from trussfe.studies.lacy_rigid import triangular_truss
     >>> from trussfe.rigid.kinematics import compute_kinematics
     >>> from trussfe.rigid.motion import rest_motion
     >>> s = triangular_truss()

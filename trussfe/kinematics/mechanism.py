@@ -15,7 +15,7 @@ What recomputing the paper's section 4 showed, and how it is implemented here:
   point; the worked numbers follow the incremental form ``d1 ← d1 − B11⁻¹ t``, implemented here.
 * Refreshing B11 at every iterate (Newton's method on eq. 1) converges in 4 iterations in the
   section-4 example where the frozen B11 of the paper needs 14 (see
-  :func:`trussfe.kinematics.reproductions.hortobagyi_section4`).  ``newton=False`` keeps the
+  :func:`trussfe.studies.hortobagyi.hortobagyi_section4`).  ``newton=False`` keeps the
   paper's frozen matrix.
 * The independent coordinate after the first step is the one with the largest velocity
   (section 5), so a node that reaches a limit point and turns back does not stall the motion.

@@ -5,7 +5,7 @@
   3 s, 50 steps, 10 kg at B, downward gravity.
 * **Double-octahedral bay, Slewing Experiment 1** (section 5.5.1): the synthetic
   constant-velocity slew −10° → +10° about n̂1 in 5.5 s of
-  :func:`trussfe.rigid.actuator_reproductions.slew1_motion` (the measured link histories are
+  :func:`trussfe.studies.lacy_actuators.slew1_motion` (the measured link histories are
   not published), hanging bay, 46.0 N on N7–N9.
 * **Slewing Experiment 2** (section 5.5.2): −8° ↔ +8° about n̂1 driven by a sinusoidal
   voltage, "one cycle" of 80 samples at Δt = 0.121 s; synthetic here as the top-plane angle
@@ -27,15 +27,15 @@ from pathlib import Path
 import numpy as np
 from scipy.interpolate import make_interp_spline
 
-from ..rigid.actuator_reproductions import slew1_motion, slew1_structure
+from .lacy_actuators import slew1_motion, slew1_structure
 from ..rigid.motion import Motion, third_order_motion
-from ..rigid.reproductions import (DO_POSITIONS, EQUILIBRIUM_LENGTH, L2, L3MIN,
+from .lacy_rigid import (DO_POSITIONS, EQUILIBRIUM_LENGTH, L2, L3MIN,
                                    double_octahedron, triangular_truss)
 from ..rigid.sections import section_stresses
 from ..rigid.simulate import SimulationResult, simulate
 from ..rigid.slew import TopPlaneInverse
-from .along_motion import ElasticResponse, compare_with_rigid, elastic_along_motion
-from .strains import gauge_strains, static_strain, zeroed_strain
+from ..elastic.along_motion import ElasticResponse, compare_with_rigid, elastic_along_motion
+from ..elastic.strains import gauge_strains, static_strain, zeroed_strain
 
 log = logging.getLogger(__name__)
 

@@ -20,10 +20,10 @@ from scipy.special import ellipe, ellipk
 
 from .._resources import mesh_path
 from ..io.model_file import read_model
-from .analysis import run_postcritical
-from .buckling import linear_buckling
-from .model import NonlinearModel
-from .path import follow_path
+from ..nonlinear.analysis import run_postcritical
+from ..nonlinear.buckling import linear_buckling
+from ..nonlinear.model import NonlinearModel
+from ..nonlinear.path import follow_path
 
 
 # ------------------------------------------------------------------------- closed forms
@@ -335,7 +335,7 @@ def double_layer_grid(n: int, spacing: float = 1.0, depth: float = 0.7,
     """
     from ..model.sections import Material, Section
     from ..model.structure import build_structure
-    from .failure import BUCKLING, FailureLaws
+    from ..nonlinear.failure import BUCKLING, FailureLaws
     i, j = np.meshgrid(np.arange(n), np.arange(n), indexing="ij")
     top = np.stack([i.ravel() * spacing, j.ravel() * spacing, np.zeros(n * n)], axis=1)
     k, l = np.meshgrid(np.arange(n - 1), np.arange(n - 1), indexing="ij")

@@ -16,8 +16,8 @@ from ..kinematics.assembly import solve_structure_positions
 from ..kinematics.compatibility import compatibility_matrix
 from ..model.sections import Material, Section
 from ..model.structure import Structure, build_structure
-from .buckling import euler_load, solve_buckling
-from .modal import solve_modes
+from ..fem.buckling import euler_load, solve_buckling
+from ..fem.modal import solve_modes
 
 #: Lacy, Appendix A/C code: ``E = 71.0e9``, ``ro = 2711.5``, ``G = 26.2e9``.
 ALUMINIUM = Material("aluminium", E=71.0e9, G=26.2e9, density=2711.5)

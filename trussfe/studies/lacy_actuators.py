@@ -24,11 +24,11 @@ from dataclasses import replace
 import numpy as np
 
 from ..model.structure import Structure
-from .actuator import Actuator, max_leadscrew_gain, motor_histories, select_gearhead_gain
-from .motion import Motion, third_order_response
-from .reproductions import double_octahedron
-from .simulate import simulate
-from .slew import TopPlaneInverse, constant_velocity_profile
+from ..rigid.actuator import Actuator, max_leadscrew_gain, motor_histories, select_gearhead_gain
+from ..rigid.motion import Motion, third_order_response
+from .lacy_rigid import double_octahedron
+from ..rigid.simulate import simulate
+from ..rigid.slew import TopPlaneInverse, constant_velocity_profile
 
 #: Appendix C / Table 5.1 actuator of the VPI&SU prototype.
 PROTOTYPE = dict(leadscrew_gain=2.5266e-4, mean_diameter=0.5 * 0.0254, thread="square",
@@ -187,8 +187,8 @@ def base_simulation_motor(convention: str = "thesis") -> dict:
         ``final_torque`` and ``final_holding_torque`` (N·m: the torque at the end and that
         needed to hold the final static force), ``max_voltage`` (V), ``max_speed`` (rad/s).
     """
-    from .reproductions import L2, L3MIN, triangular_truss
-    from .motion import third_order_motion
+    from .lacy_rigid import L2, L3MIN, triangular_truss
+    from ..rigid.motion import third_order_motion
 
     s = triangular_truss(mass=10.0)
     k = s.member_index("active")
@@ -221,8 +221,8 @@ def actuator_force_variants(durations=(3.0, 5.0, 10.0), mass: float = 10.0) -> d
     tube), the motion-induced part ``dynamic = force − static_force``, and the active member's
     ``acceleration`` (m/s²), at the 50 samples of Appendix A (thesis scheme).
     """
-    from .motion import third_order_motion
-    from .reproductions import L2, L3MIN, triangular_truss
+    from ..rigid.motion import third_order_motion
+    from .lacy_rigid import L2, L3MIN, triangular_truss
 
     out = {}
     for T in durations:

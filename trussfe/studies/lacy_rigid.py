@@ -14,9 +14,9 @@ import numpy as np
 
 from ..model.sections import Material, Section
 from ..model.structure import Structure, build_structure
-from .active import ActiveMember
-from .motion import third_order_motion
-from .simulate import simulate
+from ..rigid.active import ActiveMember
+from ..rigid.motion import third_order_motion
+from ..rigid.simulate import simulate
 
 #: Lacy Table 3.1 / Appendix A data.
 L1, L2, L3MIN, L3MAX, L4 = 2.0, 2.0, 0.5, 2.1, 2.0
