@@ -39,7 +39,7 @@ def main() -> None:
         for n in (55, 220, 880):
             m = make(n)
             t0 = time.perf_counter()
-            sim = simulate(s, m, full_length_inertia=False, actuators=False)
+            sim = simulate(s, m, actuators=False)
             t_rigid = time.perf_counter() - t0
             t0 = time.perf_counter()
             resp = elastic_along_motion(s, sim.kinematics, bodies=sim.bodies,

@@ -90,7 +90,7 @@ def test_resultants_equal_rigid_member_equations():
     rigid model (Lacy eq. 4.20), along the Base Simulation: same mass model.  1e-12."""
     s = triangular_truss()
     m = third_order_motion(s, [L3MIN + L2], [L3MIN + 1.2 + L2], 3.0, 20)
-    sim = simulate(s, m, full_length_inertia=False, actuators=False)
+    sim = simulate(s, m, actuators=False)
     kin = sim.kinematics
     ml = motion_loads(s, kin, sim.bodies)
     Lm = kin.length[..., None]
@@ -128,7 +128,7 @@ def test_section_forces_do_not_depend_on_subdivisions(k):
     per member gives the rigid model's section forces (Base Simulation, 10 steps), 1e-9."""
     s = triangular_truss()
     m = third_order_motion(s, [L3MIN + L2], [L3MIN + 1.2 + L2], 3.0, 10)
-    sim = simulate(s, m, full_length_inertia=False, actuators=False)
+    sim = simulate(s, m, actuators=False)
     r = elastic_along_motion(s, sim.kinematics, subdivisions=k,
                              positions=sim.sections.position)
     scale = np.abs(sim.sections.tension).max()

@@ -3,6 +3,7 @@
 import numpy as np
 from numpy.testing import assert_allclose
 
+from trussfe.mechanics.conventions import THESIS
 from trussfe.studies.lacy_newton_euler import lacy_triangle
 from trussfe.rigid.motion import third_order_motion
 from trussfe.studies.lacy_rigid import L2, L3MIN, triangular_truss
@@ -14,7 +15,7 @@ def test_general_model_equals_lacy_eq_2_13():
     the cantilever force agree to round-off (rtol 1e-9 of the largest force)."""
     s = triangular_truss(mass=10.0)
     m = third_order_motion(s, [L3MIN + L2], [L3MIN + 1.2 + L2], 3.0, 50)
-    r = simulate(s, m, scheme="thesis", full_length_inertia=True)
+    r = simulate(s, m, conventions=THESIS)
     x = m.length[:, 0] - L3MIN - L2
     lit = lacy_triangle(x, m.velocity[:, 0], m.acceleration[:, 0], 0.06, 10.0).forces
     fx1, fx2, fx3, fy1, fy2, fy3, rx1, rx2, ry1, ry2, m1 = lit.T

@@ -41,6 +41,7 @@ def register(subparsers) -> None:
 def _elastic(model_path, motion=None, steps=None, scheme="exact", sections=7,
              subdivisions=None):
     from ..elastic.along_motion import simulate_elastic
+    from ..mechanics.conventions import Conventions
     from ..rigid.motion_file import load_motion
 
     structure = read_model(model_path)
@@ -52,8 +53,8 @@ def _elastic(model_path, motion=None, steps=None, scheme="exact", sections=7,
         mot = load_motion(motion, structure, steps=steps)
     elif steps is not None:
         raise InputError("--steps", "needs --motion (without a motion the model is at rest)")
-    return simulate_elastic(structure, mot, scheme=scheme, n_sections=sections,
-                            subdivisions=subdivisions)
+    return simulate_elastic(structure, mot, n_sections=sections, subdivisions=subdivisions,
+                            conventions=Conventions.from_scheme(scheme))
 
 
 def to_json(sim, resp, cmp) -> dict:

@@ -36,6 +36,7 @@ def register(subparsers) -> None:
 
 
 def _simulate(model_path, motion=None, steps=None, scheme="exact", sections=7, progress=False):
+    from ..mechanics.conventions import Conventions
     from ..rigid.motion_file import load_motion
     from ..rigid.simulate import simulate
 
@@ -49,7 +50,8 @@ def _simulate(model_path, motion=None, steps=None, scheme="exact", sections=7, p
         mot = load_motion(motion, structure, steps=steps)
     elif steps is not None:
         raise InputError("--steps", "needs --motion (without a motion the model is at rest)")
-    return simulate(structure, mot, scheme=scheme, n_sections=sections, progress=progress)
+    return simulate(structure, mot, conventions=Conventions.from_scheme(scheme),
+                    n_sections=sections, progress=progress)
 
 
 def analyse(model_path, **options) -> dict:

@@ -25,6 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
+from ..mechanics.conventions import PHYSICAL
 from ..model.structure import Structure
 from .active import active_members
 
@@ -106,7 +107,8 @@ def check_motion(motion: Motion, item: str | None = None) -> None:
 
 
 def third_order_response(t: np.ndarray, duration: float, *, damping_ratio: float = 0.8,
-                         settling_fraction: float = 0.9, settling_constant: float = 6.0,
+                         settling_fraction: float = 0.9,
+                         settling_constant: float = PHYSICAL.settling_constant,
                          real_root_factor: float = 2.0) -> tuple[np.ndarray, ...]:
     """Unit-step response of the thesis' third-order actuator model and its two derivatives.
 
@@ -118,7 +120,8 @@ def third_order_response(t: np.ndarray, duration: float, *, damping_ratio: float
         Total motion time T, s; the settling time is ``settling_fraction * T``.
     damping_ratio, settling_fraction, settling_constant, real_root_factor : float
         ζ, ts/T, the constant c of ωn = c/(ζ ts) and the real pole as a multiple of ωn
-        (Lacy section 2.2 and Appendix A: 0.8, 0.9, 6, 2).
+        (Lacy section 2.2 and Appendix A: 0.8, 0.9, 6, 2; c is
+        :attr:`~trussfe.mechanics.conventions.Conventions.settling_constant`).
 
     Returns
     -------

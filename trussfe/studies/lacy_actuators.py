@@ -23,6 +23,7 @@ from dataclasses import replace
 
 import numpy as np
 
+from ..mechanics.conventions import THESIS
 from ..model.structure import Structure
 from ..rigid.actuator import Actuator, max_leadscrew_gain, motor_histories, select_gearhead_gain
 from ..rigid.motion import Motion, third_order_response
@@ -104,7 +105,7 @@ def slew1(convention: str = "thesis", steps: int = 220) -> dict:
     """
     s = slew1_structure(convention)
     m = slew1_motion(s, steps=steps)
-    r = simulate(s, m, scheme="exact")
+    r = simulate(s, m)
     j = list(m.members).index(s.member_index("M7_8"))
     f = r.actuator_force[:, j]
     # Constant-velocity phase (the ramps' acceleration spikes add inertia forces).
@@ -195,7 +196,7 @@ def base_simulation_motor(convention: str = "thesis") -> dict:
     s.extensions["actuators"] = [Actuator(member=k, name="active", convention=convention,
                                           **TRIANGLE_MOTOR)]
     m = third_order_motion(s, [L3MIN + L2], [L3MIN + 1.2 + L2], 3.0, 50)
-    r = simulate(s, m, scheme="thesis", full_length_inertia=True)
+    r = simulate(s, m, conventions=THESIS)
     h = r.actuators["active"]
     tq = np.abs(h["motor_torque"])
     f = r.actuator_force[:, 0]
@@ -228,7 +229,7 @@ def actuator_force_variants(durations=(3.0, 5.0, 10.0), mass: float = 10.0) -> d
     for T in durations:
         s = triangular_truss(mass=mass)
         m = third_order_motion(s, [L3MIN + L2], [L3MIN + 1.2 + L2], T, 50)
-        r = simulate(s, m, scheme="thesis", full_length_inertia=True)
+        r = simulate(s, m, conventions=THESIS)
         f, fs = r.actuator_force[:, 0], r.static_actuator_force[:, 0]
         out[T] = {"force": f, "static_force": fs, "dynamic": f - fs,
                   "acceleration": m.acceleration[:, 0]}

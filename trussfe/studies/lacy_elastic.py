@@ -13,8 +13,9 @@
 
 The rigid model is run with the exact kinematics and the physical section inertia (each piece
 with its own length): Lacy's Appendix A quirk of using the whole tube length in every piece's
-inertia (``full_length_inertia``) is not the inertia of any mass distribution, so no FE load
-reproduces it.  Lacy's backward-difference kinematics (``scheme="thesis"``) are a consistent
+inertia (``Conventions.full_length_inertia``) is not the inertia of any mass distribution, so
+no FE load reproduces it.  Lacy's backward-difference kinematics
+(``Conventions.finite_difference_rates``) are a consistent
 set of accelerations for the loads, and are compared too.
 """
 from __future__ import annotations
@@ -28,6 +29,7 @@ import numpy as np
 from scipy.interpolate import make_interp_spline
 
 from .lacy_actuators import slew1_motion, slew1_structure
+from ..mechanics.conventions import Conventions
 from ..rigid.motion import Motion, third_order_motion
 from .lacy_rigid import (DO_POSITIONS, EQUILIBRIUM_LENGTH, L2, L3MIN,
                                    double_octahedron, triangular_truss)
@@ -43,7 +45,7 @@ log = logging.getLogger(__name__)
 TABLE_5_5 = {"equilibrium": (5.8631, 5.9468), "slew1": (5.2094, 5.1829),
              "slew2": (6.8197, 7.1210)}
 #: Positions of Table 5.5: slew position 1 = M7/8 at its maximum (section 5.1's first slewed
-#: position); Tables 5.3/5.4 print these two swapped (DESIGN.md), Table 5.5 does not: its
+#: position); Tables 5.3/5.4 print these two swapped, Table 5.5 does not: its
 #: strains follow the forces of M7/8 at the maximum for "slew position 1".
 TABLE_5_5_LENGTHS = {"equilibrium": DO_POSITIONS["table_5_2"],
                      "slew1": DO_POSITIONS["table_5_4"], "slew2": DO_POSITIONS["table_5_3"]}
@@ -62,7 +64,8 @@ def base_simulation(scheme: str = "exact", steps: int = 50, duration: float = 3.
     """Rigid and FE responses of the triangular truss along the Base Simulation."""
     s = triangular_truss(mass=mass)
     m = third_order_motion(s, [L3MIN + L2], [L3MIN + 1.2 + L2], duration, steps)
-    r = simulate(s, m, scheme=scheme, full_length_inertia=False, actuators=False)
+    r = simulate(s, m, actuators=False,
+                 conventions=Conventions(finite_difference_rates=scheme == "thesis"))
     e = elastic_along_motion(s, r.kinematics, bodies=r.bodies, positions=r.sections.position,
                              subdivisions=subdivisions)
     return r, e
@@ -100,7 +103,7 @@ def slew(which: int, subdivisions: int = 6, steps: int | None = None
         m = slew1_motion(s, steps=steps or 220)
     else:
         m = slew2_motion(s, steps=steps or 160)
-    r = simulate(s, m, scheme="exact", full_length_inertia=False, actuators=False)
+    r = simulate(s, m, actuators=False)
     e = elastic_along_motion(s, r.kinematics, bodies=r.bodies, positions=r.sections.position,
                              subdivisions=subdivisions)
     return r, e
