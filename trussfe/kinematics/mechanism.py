@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Finite-mechanism motion of an inextensional bar-and-joint assembly (Hortobágyi, seed 000).
+"""Finite-mechanism motion of an inextensional bar-and-joint assembly (Hortobágyi 1999).
 
 The motion is followed in steps.  At each step the compatibility matrix B is partitioned into
 ``[B11 B12]`` with the independent coordinate(s) in ``B12`` (Hortobágyi eq. 3), a linear

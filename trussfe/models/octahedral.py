@@ -31,7 +31,7 @@ import numpy as np
 from ..errors import AnalysisError, InputError
 from ..kinematics.assembly import solve_positions
 from ..model.structure import Structure
-from ..rigid.active import ActiveMember
+from ..model.active import ActiveMember
 from .materials import ALUMINIUM, octahedral_tube
 
 #: Member id → (start node, end node), thesis numbering (Table 4.1 / Appendix D order).
@@ -397,4 +397,4 @@ def double_octahedral_chain(n_bays: int, active_lengths: np.ndarray | None = Non
         is_beam=np.zeros(m, bool), releases=np.zeros((m, 2), bool), supports=supports,
         loads=loads, masses=np.zeros(n),
         gravity=np.zeros(3) if gravity is None else np.asarray(gravity, float).reshape(3),
-        extensions=ext)
+        extensions=ext, member_groups=np.zeros(m, dtype=np.int64))   # one tube, one material

@@ -26,7 +26,7 @@ import numpy as np
 from ..errors import InputError
 from ..kinematics.assembly import solve_positions
 from ..model.structure import Structure, build_structure
-from ..rigid.active import ActiveMember
+from ..model.active import ActiveMember
 from .materials import ALUMINIUM, triangular_tube
 
 #: Table 3.1 dimensions, m.
@@ -99,7 +99,7 @@ def triangular_truss(x: float = 0.0, lumped_mass: float = 10.0, member_weight: b
     --------
     >>> s = triangular_truss()
     >>> s.node_ids, s.member_ids
-    (['O2', 'B', 'O1'], ['follower', 'active'])
+    (('O2', 'B', 'O1'), ('follower', 'active'))
     >>> np.round(s.coords[1], 4)    # Appendix B, node 3
     array([1.5625, 1.9516])
     """
@@ -126,9 +126,7 @@ def triangular_truss(x: float = 0.0, lumped_mass: float = 10.0, member_weight: b
             supports={0: "xy", 2: "xy"}, loads={1: f_b}, masses={1: lumped_mass},
             gravity=gravity, name=f"Lacy triangular truss, x = {x:g} m",
             node_ids=["O2", "B", "O1"], member_ids=["follower", "active"])
-        if active_members:
-            s.extensions["active_members"] = [active_member(1)]
-        return s
+        return s.with_extensions(active_members=[active_member(1)]) if active_members else s
     if active_members:
         raise InputError("triangular_truss.active_members", "the active member's data belong "
                          "to the one-bar model (split_active=False)")
@@ -143,6 +141,4 @@ def triangular_truss(x: float = 0.0, lumped_mass: float = 10.0, member_weight: b
         node_ids=["O2", "C", "B", "O1"],
         member_ids=["follower", "active_base", "leadscrew_tube"])
     # Pinned at O2 and B, rigid at the cantilever connection C.
-    s.releases[1] = (True, False)
-    s.releases[2] = (False, True)
-    return s
+    return s.with_member_data(releases={1: (True, False), 2: (False, True)})

@@ -68,9 +68,7 @@ def triangular_truss(x: float = 0.0, mass: float = 10.0, *, gravity: bool = True
     phi = math.acos((L1 ** 2 + L4 ** 2 - (L3MIN + x + L2) ** 2) / (2 * L4 * L1))   # eq. 2.1
     coords = s.coords.copy()
     coords[2] = [L4 - L1 * math.cos(phi), L1 * math.sin(phi)]
-    s = s.with_coords(coords)
-    s.name = "triangular truss (Lacy Fig. 2.1)"
-    return s
+    return s.variant(coords=coords, name="triangular truss (Lacy Fig. 2.1)")
 
 
 def static_reactions() -> dict:
@@ -197,14 +195,13 @@ def double_octahedron(active_lengths=(EQUILIBRIUM_LENGTH,) * 3, *, top_load: flo
                                  gravity=None if gravity == 0.0 else [0.0, 0.0, -gravity],
                                  top_mass=top_masses, active_members=True,
                                  name="double-octahedral VGT bay (Lacy Fig. 4.1)")
-    s = reverse_members(s, APPENDIX_C_REVERSED)
-    s.sections = [APPENDIX_C_TUBE] * s.n_members
+    s = reverse_members(s, APPENDIX_C_REVERSED).with_sections([APPENDIX_C_TUBE] * 18)
     return s.with_coords(_positions_from_appendix_d(s, active_lengths))
 
 
 #: Active lengths of Tables 5.2–5.4.  The short slewed length reproduces as 1.1079 m (printed
 #: 1.1077 m); the numbers printed as Table 5.3 ("first slewed position") belong to M7/8 at its
-#: minimum and those of Table 5.4 to M7/8 at its maximum.
+#: minimum and those of Table 5.4 to M7/8 at its maximum (case lacy-table-5-3-as-captioned).
 DO_POSITIONS = {
     "table_5_2": (EQUILIBRIUM_LENGTH,) * 3,
     "table_5_3": (1.1079, 1.2289, 1.2289),
@@ -216,7 +213,7 @@ def double_octahedron_static(top_load: float = 44.498) -> dict:
     """Tables 5.2–5.4 with the rigid-body model at rest (no gravity, vertical top loads).
 
     The tables reproduce with 44.498 N per top node (4.536 kg × 9.81: the printed reaction),
-    not the stated 46.0 N, which makes every value 3.4 % high.
+    not the stated 46.0 N, which makes every value 3.4 % high (case lacy-table-5-2-stated-load).
     """
     out = {}
     for key, lengths in DO_POSITIONS.items():
@@ -270,5 +267,4 @@ def double_octahedral_chain(n_bays: int, *, top_load: float = 0.0, gravity: floa
         active_members=True)
     s = reverse_members(s, [f"b{k}.{m}" for k in range(1, n_bays + 1)
                             for m in APPENDIX_C_REVERSED])
-    s.sections = [APPENDIX_C_TUBE] * s.n_members
-    return s
+    return s.with_sections([APPENDIX_C_TUBE] * s.n_members)

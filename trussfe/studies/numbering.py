@@ -12,8 +12,6 @@ model: an active member's base sits at its start node, and end forces are report
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import replace
-
 import numpy as np
 
 from ..errors import InputError
@@ -31,18 +29,17 @@ def renumber_nodes(structure: Structure, order: Sequence[str]) -> Structure:
     >>> from trussfe.models import triangular_truss
     >>> s = renumber_nodes(triangular_truss(), ["O2", "O1", "B"])
     >>> s.node_ids, s.connectivity.tolist()
-    (['O2', 'O1', 'B'], [[2, 1], [0, 2]])
+    (('O2', 'O1', 'B'), [[2, 1], [0, 2]])
     """
     perm = np.array([structure.node_index(i) for i in order], dtype=np.int64)
     if sorted(perm.tolist()) != list(range(structure.n_nodes)):
         raise InputError("renumber_nodes.order", f"expected every node id once, got {order!r}")
     new_index = np.empty_like(perm)
     new_index[perm] = np.arange(perm.size)
-    return replace(structure, node_ids=[structure.node_ids[i] for i in perm],
-                   coords=structure.coords[perm], supports=structure.supports[perm],
-                   loads=structure.loads[perm], masses=structure.masses[perm],
-                   connectivity=new_index[structure.connectivity],
-                   extensions=dict(structure.extensions))
+    return structure.variant(node_ids=[structure.node_ids[i] for i in perm],
+                             coords=structure.coords[perm], supports=structure.supports[perm],
+                             loads=structure.loads[perm], masses=structure.masses[perm],
+                             connectivity=new_index[structure.connectivity])
 
 
 def reverse_members(structure: Structure, member_ids: Sequence[str]) -> Structure:
@@ -62,5 +59,4 @@ def reverse_members(structure: Structure, member_ids: Sequence[str]) -> Structur
     conn[idx] = conn[idx, ::-1]
     releases = structure.releases.copy()
     releases[idx] = releases[idx, ::-1]
-    return replace(structure, connectivity=conn, releases=releases,
-                   extensions=dict(structure.extensions))
+    return structure.variant(connectivity=conn, releases=releases)
