@@ -3,7 +3,7 @@
 
 Targets: the double-octahedral slew with 10,000 time steps (kinematics, nodal forces,
 section forces, stresses, buckling, actuator force and, when available, motor histories)
-in < 1 s; a 100-bay chain (1,803 members) over 1,000 steps in < 10 s.  For comparison, the
+in < 1 s; a 100-bay chain (1,800 members) over 1,000 steps in < 10 s.  For comparison, the
 time of a plain per-step dense solve of a 117 × 117 system (the size of Lacy's double-
 octahedron system, eq. 4.20 / Table 4.1), in a Python loop over the steps.
 
