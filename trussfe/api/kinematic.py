@@ -62,7 +62,7 @@ def trace(model: ModelLike, *, drive: str | Sequence[str], step: float | Sequenc
     TraceResult
         ``position`` (state, node, dim), ``parameter`` and ``rank`` (state,), ``events``.
     """
-    from ..kinematics.mechanism import trace_structure
+    from ..kinematics.trace import trace_structure
 
     drives = [drive] if isinstance(drive, str) else list(drive)
     steps_ = [step] if np.isscalar(step) else list(step)

@@ -643,7 +643,7 @@ class MechanismResult(Result):
 @dataclass(frozen=True, eq=False, repr=False)
 class TraceResult(Result):
     """A traced finite-mechanism motion (:func:`trussfe.trace`); ``solution`` is a
-    :class:`trussfe.kinematics.mechanism.TraceResult`.  ``options`` holds the drive, step,
+    :class:`trussfe.kinematics.trace.TraceResult`.  ``options`` holds the drive, step,
     steps and branch of the JSON document."""
 
     command: ClassVar[str] = "trace"

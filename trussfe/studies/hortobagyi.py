@@ -13,8 +13,9 @@ import numpy as np
 
 from ..errors import AnalysisError, TrussfeError
 from ..kinematics.compatibility import compatibility_matrix
-from ..kinematics.mechanism import _jacobian, compatibility_error, trace_mechanism
+from ..kinematics.mechanism import _jacobian, compatibility_error
 from ..kinematics.rank import rank_analysis
+from ..kinematics.trace import trace_mechanism
 from ..kinematics.unfolding import tangent_cone
 from ..models.mechanisms import CATALOGUE, section6_foldable
 
@@ -82,7 +83,7 @@ def hortobagyi_section4(tolerance: float = 1e-14) -> dict:
         paper's matrix entries, the first iterates (as ``l/value`` denominators, paper sign), the
         converged coordinates, the iteration counts with frozen and refreshed B11, and the
         coordinates after the paper's fifth iterate; ``trace`` with the same two paths followed
-        by :func:`~trussfe.kinematics.mechanism.trace_mechanism` (branches 0 and 1).
+        by :func:`~trussfe.kinematics.trace.trace_mechanism` (branches 0 and 1).
 
     Notes
     -----

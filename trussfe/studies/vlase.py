@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..kinematics.mechanism import trace_mechanism
+from ..kinematics.trace import trace_mechanism
 from ..kinematics.topology import cycle_kinematics, equivalent_assembly
 from ..kinematics.velocity import bar_angular_velocity, mechanism_acceleration, mechanism_velocity
 from ..models.mechanisms import FOURBAR, fourbar_position
