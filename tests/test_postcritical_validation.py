@@ -1,10 +1,10 @@
 """Validation of the post-critical analysis against closed-form and independent solutions
-(trussfe.nonlinear.reproductions; the same numbers appear in ``trussfe validate``)."""
+(trussfe.studies.postcritical; the same numbers appear in ``trussfe validate``)."""
 import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from trussfe.nonlinear import reproductions as R
+from trussfe.studies import postcritical as R
 
 
 @pytest.fixture(scope="module")

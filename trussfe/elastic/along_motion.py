@@ -35,7 +35,7 @@ cross-check Lacy could not make because MSC/PAL lumps member weight at the nodes
 from __future__ import annotations
 
 import logging
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -43,6 +43,7 @@ from ..errors import AnalysisError, InputError
 from ..fem.discretisation import FEModel, discretise
 from ..fem.solver import factorise, solve_free
 from ..linalg import SingularMatrixError
+from ..mechanics.conventions import PHYSICAL, Conventions
 from ..model.structure import Structure
 from ..rigid.forces import MemberBodies, member_bodies
 from ..rigid.kinematics import Kinematics
@@ -340,8 +341,9 @@ def compare_with_rigid(rigid_sections: SectionForces, response: ElasticResponse,
 _MOMENT_FLOOR = 1e-6
 
 
-def simulate_elastic(structure: Structure, motion=None, *, scheme: str = "exact",
-                     n_sections: int = 7, subdivisions: int | None = None,
+def simulate_elastic(structure: Structure, motion=None, *,
+                     conventions: Conventions = PHYSICAL, n_sections: int = 7,
+                     subdivisions: int | None = None,
                      gravity: bool = True, loads: bool = True):
     """Rigid-body simulation and FE response along the same motion, compared.
 
@@ -350,8 +352,10 @@ def simulate_elastic(structure: Structure, motion=None, *, scheme: str = "exact"
     structure : Structure
     motion : Motion, optional
         Active-member histories (``None``: the model at rest, one step).
-    scheme : {"exact", "thesis"}
-        Kinematics of :func:`trussfe.rigid.simulate.simulate`.
+    conventions : Conventions
+        Of the rigid-body run (:func:`trussfe.rigid.simulate.simulate`), except that each
+        piece's own length is always used in its section inertia: the whole-length inertia of
+        Lacy's Appendix A is the inertia of no mass distribution, so no FE load matches it.
     n_sections : int
         Sections per member tube.
     subdivisions : int, optional
@@ -375,8 +379,8 @@ def simulate_elastic(structure: Structure, motion=None, *, scheme: str = "exact"
     """
     from ..rigid.simulate import simulate
 
-    sim = simulate(structure, motion, scheme=scheme, n_sections=n_sections,
-                   full_length_inertia=False, actuators=False)
+    sim = simulate(structure, motion, n_sections=n_sections, actuators=False,
+                   conventions=replace(conventions, full_length_inertia=False))
     k = subdivisions if subdivisions is not None else max(int(n_sections) - 1, 2)
     resp = elastic_along_motion(structure, sim.kinematics, bodies=sim.bodies,
                                 positions=sim.sections.position, subdivisions=k,

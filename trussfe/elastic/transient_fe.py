@@ -147,7 +147,7 @@ def rigid_field(fe: FEModel, node_vectors: np.ndarray) -> np.ndarray:
     --------
     A rigid rotation about the origin strains nothing: ``K u = 0``.
 
-    >>> from trussfe.rigid.reproductions import triangular_truss
+    >>> from trussfe.models import triangular_truss
     >>> from trussfe.fem.discretisation import discretise
     >>> s = triangular_truss()
     >>> fe = discretise(s, "pinned-beam", 4)
