@@ -12,12 +12,10 @@ import time
 import numpy as np
 
 from trussfe.elastic.along_motion import compare_with_rigid, elastic_along_motion
-from trussfe.elastic.reproductions import slew2_motion
-from trussfe.rigid.actuator_reproductions import slew1_motion, slew1_structure
+from trussfe.studies.lacy_elastic import slew2_motion
+from trussfe.studies.lacy_actuators import slew1_motion, slew1_structure
 from trussfe.rigid.simulate import simulate
-from trussfe.allocator import tune_allocator
 
-tune_allocator()   # numpy temporaries reuse heap pages, as in the trussfe command
 
 
 def _step_by_step(sim, k):
@@ -39,7 +37,7 @@ def main() -> None:
         for n in (55, 220, 880):
             m = make(n)
             t0 = time.perf_counter()
-            sim = simulate(s, m, full_length_inertia=False, actuators=False)
+            sim = simulate(s, m, actuators=False)
             t_rigid = time.perf_counter() - t0
             t0 = time.perf_counter()
             resp = elastic_along_motion(s, sim.kinematics, bodies=sim.bodies,
@@ -60,4 +58,8 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    from trussfe.cli import environment_workers
+    from trussfe.threads import compute_threads
+
+    with compute_threads(workers=environment_workers(), blas=1):   # as the trussfe command
+        main()

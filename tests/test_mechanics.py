@@ -233,10 +233,8 @@ def test_rigid_stresses_of_a_section_that_is_not_a_tube():
     and sums them at the corner, so along a 3-D slew S2 lies between the round value
     |σ| + |M| c/I and |σ| + √2 |M| c/I (|My| + |Mz| ≤ √2 |M|), equal where one component
     vanishes; S1 (resultant shear) is unchanged."""
-    import dataclasses
-
     from trussfe.rigid.motion import third_order_motion
-    from trussfe.rigid.reproductions import double_octahedron
+    from trussfe.studies.lacy_rigid import double_octahedron
     from trussfe.rigid.sections import section_stresses
     from trussfe.rigid.simulate import simulate
     s = double_octahedron((1.2289, 1.1079, 1.1079), gravity=-9.81, top_load=46.0)

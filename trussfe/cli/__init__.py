@@ -16,8 +16,9 @@ import pkgutil
 import sys
 
 from .. import __version__
-from ..allocator import tune_allocator
 from ..errors import TrussfeError
+from ..io.toml_text import compiled_parser
+from ..threads import compute_threads
 
 
 class _Parser(argparse.ArgumentParser):
@@ -45,13 +46,16 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv: list[str] | None = None) -> int:
     """Run the command line; returns the exit status."""
-    tune_allocator()   # numpy temporaries reuse heap memory (see trussfe.allocator)
     parser = build_parser()
     args = parser.parse_args(argv)
     logging.basicConfig(level=logging.INFO if args.verbose else logging.WARNING,
                         format="trussfe: %(message)s", stream=sys.stderr)
     try:
-        return int(args.func(args) or 0)
+        # the one place thread counts are set (trussfe.threads): workers from the
+        # environment, one BLAS thread; large model files through the compiled TOML parser
+        # (trussfe.io.toml_text)
+        with compute_threads(workers=environment_workers(), blas=1), compiled_parser():
+            return int(args.func(args) or 0)
     except TrussfeError as err:
         sys.stderr.write(f"trussfe: error: {err}\n")
         return err.exit_status
@@ -64,6 +68,16 @@ def main(argv: list[str] | None = None) -> int:
         sys.stderr.write(f"trussfe: error: internal error ({type(exc).__name__}: {exc}); "
                          "rerun with TRUSSFE_DEBUG=1 for a traceback\n")
         return 3
+
+
+def environment_workers() -> int | None:
+    """``TRUSSFE_THREADS`` (a positive integer) or None (the default count); anything else
+    is ignored, as an unset variable."""
+    env = os.environ.get("TRUSSFE_THREADS", "").strip()
+    try:
+        return max(1, int(env)) if env else None
+    except ValueError:
+        return None
 
 
 def run() -> None:

@@ -18,7 +18,7 @@ What recomputing the paper's section 4 showed, and how it is implemented here:
   point; the worked numbers follow the incremental form ``d1 ← d1 − B11⁻¹ t``, implemented here.
 * Refreshing B11 at every iterate (Newton's method on eq. 1) converges in 4 iterations in the
   section-4 example where the frozen B11 of the paper needs 14 (see
-  :func:`trussfe.kinematics.reproductions.hortobagyi_section4`).  ``newton=False`` keeps the
+  :func:`trussfe.studies.hortobagyi.hortobagyi_section4`).  ``newton=False`` keeps the
   paper's frozen matrix.
 * Over-constrained assemblies (self-stress states, e.g. Bricard's octahedron) are corrected by
   least squares over all bars.
@@ -33,6 +33,7 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from ..linalg import factor
 from ..mechanics.geometry import member_vectors
 from .compatibility import compatibility_matrix
 
@@ -102,14 +103,8 @@ def _solve_dependent(J: sp.csr_matrix, rhs: np.ndarray) -> np.ndarray | None:
     """Solve ``J Δ = rhs``: sparse LU when square, least squares over all bars otherwise."""
     b, f = J.shape
     if b == f:
-        try:
-            lu = spla.splu(J.tocsc())
-        except RuntimeError:
-            return None
-        d = np.abs(lu.U.diagonal())
-        if d.min() <= 1e-12 * max(d.max(), 1.0):
-            return None
-        return lu.solve(rhs)
+        lu = factor(J, "general", singular="flag")
+        return None if lu.is_singular else lu.solve(rhs, refine=False)
     if f <= 3000:
         A = J.toarray()
         sol, *_ = np.linalg.lstsq(A, rhs, rcond=1e-10)

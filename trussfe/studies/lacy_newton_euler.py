@@ -18,7 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..mechanics.geometry import transverse_frames
-from .reproductions import ID, L1, L2, L3MAX, L3MIN, L4, OD, TUBE, ALUMINIUM
+from .lacy_rigid import ID, L1, L2, L3MAX, L3MIN, L4, OD, TUBE, ALUMINIUM
 
 G = 9.81
 
@@ -126,8 +126,8 @@ def newton_euler_system(structure, kin, bodies=None):
         ``"end_force"``: index array (m, 2, dim) of the force unknowns; ``"reaction"``: list of
         (node, component, column).
     """
-    from .forces import member_bodies, member_resultants
-    from .kinematics import pad3
+    from ..rigid.forces import member_bodies, member_resultants
+    from ..rigid.kinematics import pad3
 
     bodies = member_bodies(structure) if bodies is None else bodies
     dim = structure.dim
