@@ -739,7 +739,7 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
     >>> free = np.array([[0, 0], [1, 1], [1, 1], [0, 0]], bool)
     >>> r = trace_mechanism(x, conn, free, drives=[2], step=0.05, steps=4)
     >>> L0 = member_lengths(x, conn)
-    >>> L4 = np.linalg.norm(r.coords[-1][conn[:, 1]] - r.coords[-1][conn[:, 0]], axis=1)
+    >>> L4 = member_lengths(r.coords[-1], conn)
     >>> bool(np.allclose(L4, L0, rtol=1e-9)), round(float(r.coords[-1][1, 0]), 6)
     (True, 0.2)
     """

@@ -431,7 +431,7 @@ class NonlinearModel:
             R[rel] = R[par] @ R[rel]
         conn = self.b_conn
         R0 = reference_frames(self.X, conn, self.b_orientation)
-        L0 = np.linalg.norm(self.X[conn[:, 1]] - self.X[conn[:, 0]], axis=1)
+        L0 = member_lengths(self.X, conn)
         f, k, N, M = beam3d_matrices(x, conn, R[self.b_slot[:, 0]], R[self.b_slot[:, 1]], R0,
                                      L0, self.b_EA, self.b_GJ, self.b_EI, self.b_EIz,
                                      N_override=N_override, tangent=tangent)
