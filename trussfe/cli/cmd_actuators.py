@@ -15,6 +15,7 @@ import numpy as np
 
 from ..io.output import write_json
 from ..rigid import actuator as _actuator  # noqa: F401  (registers [actuators])
+from . import options as opt
 
 
 def register(subparsers) -> None:
@@ -24,9 +25,9 @@ def register(subparsers) -> None:
         description="Self-locking check, gains, peak actuator force, motor speed, torque, "
         "current and voltage (with and without friction) of every [actuators] entry.")
     p.add_argument("model", help="model file (TOML) with [active_members] and [actuators]")
-    p.add_argument("--motion", help="motion file: TOML [motion] spec or CSV history")
-    p.add_argument("--steps", type=int, help="number of time steps of a generated motion")
-    p.add_argument("--json", metavar="OUT", help="write the summary as JSON")
+    p.add_argument("--motion", type=opt.input_file, help="motion file: TOML [motion] spec or CSV history")
+    p.add_argument("--steps", type=opt.positive_int, help="number of time steps of a generated motion")
+    p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the summary as JSON")
     p.set_defaults(func=_run)
 
 

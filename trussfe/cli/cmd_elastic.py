@@ -12,6 +12,7 @@ from .. import rigid as _rigid  # noqa: F401  (registers [active_members])
 from ..errors import InputError
 from ..io.model_file import read_model
 from ..io.output import write_json
+from . import options as opt
 
 log = logging.getLogger(__name__)
 
@@ -25,16 +26,16 @@ def register(subparsers) -> None:
         "motion: displacements, reactions, section forces and strains, compared with the "
         "rigid-body model's internal forces. Without --motion the model is analysed at rest.")
     p.add_argument("model", help="model file (TOML), with [active_members] if it moves")
-    p.add_argument("--motion", help="motion file: TOML [motion] spec or CSV history")
-    p.add_argument("--steps", type=int, help="number of time steps of a generated motion")
+    p.add_argument("--motion", type=opt.input_file, help="motion file: TOML [motion] spec or CSV history")
+    p.add_argument("--steps", type=opt.positive_int, help="number of time steps of a generated motion")
     p.add_argument("--scheme", choices=("exact", "thesis"), default="exact",
                    help="kinematics: exact (default) or Lacy's backward differences")
-    p.add_argument("--sections", type=int, default=7,
+    p.add_argument("--sections", type=opt.positive_int, default=7,
                    help="sections per member tube compared with the rigid model (default 7)")
-    p.add_argument("--subdivisions", type=int,
+    p.add_argument("--subdivisions", type=opt.positive_int,
                    help="elements per member (default sections - 1)")
-    p.add_argument("--json", metavar="OUT", help="write the results as JSON")
-    p.add_argument("--vtk", metavar="DIR", help="write a .pvd time series")
+    p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the results as JSON")
+    p.add_argument("--vtk", metavar="DIR", type=opt.output_dir, help="write a .pvd time series")
     p.set_defaults(func=_run)
 
 

@@ -15,6 +15,7 @@ import numpy as np
 from ..io.model_file import read_model
 from ..io.output import write_json
 from ..kinematics.rank import structure_rank
+from . import options as opt
 
 log = logging.getLogger(__name__)
 
@@ -24,9 +25,9 @@ def register(subparsers) -> None:
     p = subparsers.add_parser("mechanism", help="rank analysis: mechanisms and self-stress states",
                               description=__doc__.splitlines()[0].strip("`"))
     p.add_argument("model", help="model file (TOML)")
-    p.add_argument("--json", metavar="OUT", help="write the results as JSON")
-    p.add_argument("--vtk", metavar="DIR", help="write mechanism shapes and self-stress states")
-    p.add_argument("--tolerance", type=float, default=None,
+    p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the results as JSON")
+    p.add_argument("--vtk", metavar="DIR", type=opt.output_dir, help="write mechanism shapes and self-stress states")
+    p.add_argument("--tolerance", type=opt.relative_tolerance, default=None,
                    help="relative singular-value tolerance (default max(b, f)·1e3·eps)")
     p.set_defaults(func=_run)
 

@@ -10,6 +10,7 @@ from ..errors import InputError
 from ..io.model_file import read_model
 from .. import rigid as _rigid  # noqa: F401  (registers [active_members])
 from ..io.output import write_json
+from . import options as opt
 
 log = logging.getLogger(__name__)
 
@@ -22,16 +23,16 @@ def register(subparsers) -> None:
         "loads of a pin-jointed truss along a prescribed motion of its active members. "
         "Without --motion the model is analysed at rest (one step).")
     p.add_argument("model", help="model file (TOML) with [active_members]")
-    p.add_argument("--motion", help="motion file: TOML [motion] spec or CSV history")
-    p.add_argument("--steps", type=int, help="number of time steps of a generated motion")
+    p.add_argument("--motion", type=opt.input_file, help="motion file: TOML [motion] spec or CSV history")
+    p.add_argument("--steps", type=opt.positive_int, help="number of time steps of a generated motion")
     p.add_argument("--scheme", choices=("exact", "thesis"), default="exact",
                    help="kinematics: exact (default) or Lacy's backward differences")
-    p.add_argument("--sections", type=int, default=7,
+    p.add_argument("--sections", type=opt.positive_int, default=7,
                    help="sections per member for internal forces (default 7)")
-    p.add_argument("--json", metavar="OUT", help="write the results as JSON")
-    p.add_argument("--npz", metavar="OUT", help="write all arrays as NumPy .npz")
-    p.add_argument("--vtk", metavar="DIR", help="write a .pvd time series")
-    p.add_argument("--plots", metavar="DIR", help="write thesis-style PNG figures")
+    p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the results as JSON")
+    p.add_argument("--npz", metavar="OUT", type=opt.output_file, help="write all arrays as NumPy .npz")
+    p.add_argument("--vtk", metavar="DIR", type=opt.output_dir, help="write a .pvd time series")
+    p.add_argument("--plots", metavar="DIR", type=opt.output_dir, help="write thesis-style PNG figures")
     p.set_defaults(func=_run)
 
 

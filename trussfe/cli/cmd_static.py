@@ -16,6 +16,7 @@ from ..fem.static import StaticResult, solve_static, static_json
 from ..io.model_file import read_model
 from ..io.output import write_json
 from ..io.vtk import write_vtu as _write_vtu
+from . import options as opt
 
 
 def register(subparsers) -> None:
@@ -26,13 +27,13 @@ def register(subparsers) -> None:
     p.add_argument("model", help="model file (TOML)")
     p.add_argument("--bar-model", choices=BAR_MODELS, default="truss",
                    help="bars as axial-only truss elements (default) or as pinned beams")
-    p.add_argument("--subdivisions", type=int, default=None, metavar="K",
+    p.add_argument("--subdivisions", type=opt.positive_int, default=None, metavar="K",
                    help="elements per frame member (default 4)")
     p.add_argument("--solver", choices=("auto", "superlu", "pardiso"), default="auto",
                    help="sparse linear solver (default: PARDISO for large models when "
                    "installed, else SuperLU)")
-    p.add_argument("--json", metavar="OUT", help="write the results as JSON")
-    p.add_argument("--vtk", metavar="OUT.vtu", help="write the deformed-shape fields as VTU")
+    p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the results as JSON")
+    p.add_argument("--vtk", metavar="OUT.vtu", type=opt.output_file, help="write the deformed-shape fields as VTU")
     p.set_defaults(func=_main)
 
 

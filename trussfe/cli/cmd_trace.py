@@ -15,6 +15,7 @@ from ..errors import InputError
 from ..io.model_file import read_model
 from ..io.output import atomic_path, write_json
 from ..kinematics.mechanism import trace_structure
+from . import options as opt
 
 
 def register(subparsers) -> None:
@@ -24,19 +25,19 @@ def register(subparsers) -> None:
     p.add_argument("model", help="model file (TOML)")
     p.add_argument("--drive", action="append", required=True, metavar="NODE:AXIS",
                    help="prescribed coordinate (repeat for several degrees of freedom)")
-    p.add_argument("--step", action="append", type=float, required=True, metavar="S",
+    p.add_argument("--step", action="append", type=opt.nonzero_real, required=True, metavar="S",
                    help="increment of the drive coordinate per step, m (one per --drive)")
-    p.add_argument("--steps", type=int, required=True, metavar="N", help="number of steps")
-    p.add_argument("--branch", type=int, default=0, metavar="K",
+    p.add_argument("--steps", type=opt.positive_int, required=True, metavar="N", help="number of steps")
+    p.add_argument("--branch", type=opt.nonneg_int, default=0, metavar="K",
                    help="branch taken at a bifurcation point (0 = prescribe the drive)")
-    p.add_argument("--tolerance", type=float, default=1e-10,
+    p.add_argument("--tolerance", type=opt.relative_tolerance, default=1e-10,
                    help="relative bar-length tolerance of the corrector (default 1e-10)")
     p.add_argument("--frozen", action="store_true",
                    help="keep B11 of the predicted state (the paper's iteration) instead of "
                         "Newton's refresh")
-    p.add_argument("--json", metavar="OUT", help="write the path as JSON")
-    p.add_argument("--vtk", metavar="DIR", help="write every state as .vtu and a .pvd")
-    p.add_argument("--plot", metavar="PNG", help="plot the node trajectories")
+    p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the path as JSON")
+    p.add_argument("--vtk", metavar="DIR", type=opt.output_dir, help="write every state as .vtu and a .pvd")
+    p.add_argument("--plot", metavar="PNG", type=opt.output_file, help="plot the node trajectories")
     p.set_defaults(func=_run)
 
 
