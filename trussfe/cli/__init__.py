@@ -132,7 +132,7 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         _error("", "interrupted; no output written")
         return 130
-    except (FloatingPointError, RuntimeWarning) as exc:
+    except (FloatingPointError, RuntimeWarning, np.linalg.LinAlgError) as exc:
         _error(where, f"numerical failure ({one_line(str(exc), 200)}): {UNITS_HINT}")
         return 2
     except MemoryError:

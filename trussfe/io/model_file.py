@@ -14,6 +14,7 @@ from typing import Any, Callable
 
 import numpy as np
 
+from ..budget import check_input_file
 from ..errors import InputError, TrussfeError
 from . import toml_text
 from ..model.ids import IdIndex, IdRange, id_index
@@ -399,15 +400,14 @@ def _check_geometry(coords, conn, member_ids, node_ids) -> None:
 
 def _mesh_geometry(mesh_name, base_dir, dim, data, sections, materials):
     """Nodes and members from a meshio-readable line mesh (``[model] mesh``)."""
-    import meshio
-
     path = (base_dir / mesh_name)
-    if not path.is_file():
+    if not path.exists():
         raise InputError("model.mesh", f"mesh file '{path}' not found")
     try:
-        mesh = meshio.read(path)
-    except Exception as exc:  # meshio raises many types; the message is what matters
-        raise InputError("model.mesh", f"cannot read '{path}': {exc}") from None
+        check_input_file(str(path), "mesh file")
+    except InputError as err:
+        raise InputError("model.mesh", err.message.replace("is ", f"'{path}' is ", 1)) from None
+    mesh = _read_mesh(path)
     pts = np.asarray(mesh.points, dtype=float)
     if pts.ndim != 2 or pts.shape[0] == 0:
         raise InputError("model.mesh", "mesh has no points")
@@ -483,6 +483,42 @@ def _mesh_geometry(mesh_name, base_dir, dim, data, sections, materials):
             mat_obj[code].tolist(), beam_of[code], rel_of[code], orient_of[code], code)
 
 
+def _read_mesh(path: Path):
+    """``meshio.read`` without its console output.
+
+    When no reader accepts a file, ``meshio.read`` prints the reader's complaint on stdout and
+    an "Error:" line on stderr, then calls ``sys.exit(1)``.  The readers of the formats the
+    suffix allows are therefore called directly, and every failure becomes one InputError.
+    """
+    import meshio
+
+    try:
+        from meshio._helpers import _filetypes_from_path, reader_map
+    except ImportError:                                  # pragma: no cover - other meshio
+        readers = None
+    else:
+        readers = reader_map
+    try:
+        if readers is None:                              # pragma: no cover
+            return meshio.read(path)
+        formats = _filetypes_from_path(path)
+        last = None
+        for fmt in formats:
+            if fmt not in readers:
+                continue
+            try:
+                return readers[fmt](str(path))
+            except Exception as exc:   # readers raise many types; the message is what matters
+                last = exc
+        what = f" ({str(last) or type(last).__name__})" if last else ""
+        raise InputError("model.mesh", f"cannot read '{path}' as {' or '.join(formats)}{what}")
+    except InputError:
+        raise
+    except (Exception, SystemExit) as exc:
+        raise InputError("model.mesh", f"cannot read '{path}': {exc or type(exc).__name__}"
+                         ) from None
+
+
 def read_model(path: str | Path) -> Structure:
     """Read a model file.
 
@@ -501,6 +537,8 @@ def read_model(path: str | Path) -> Structure:
         One line naming the file and the item at fault.
     """
     path = Path(path)
+    # a folder, device or named pipe is refused before it is opened (a pipe would block)
+    check_input_file(str(path), "model file")
     try:
         text = path.read_bytes().decode("utf-8")
     except FileNotFoundError:
@@ -511,6 +549,8 @@ def read_model(path: str | Path) -> Structure:
         data = toml_text.loads(text)
     except toml_text.TOMLDecodeError as exc:
         raise InputError(str(path), f"malformed TOML: {exc}") from None
+    except RecursionError:
+        raise InputError(str(path), "arrays or tables nest too deeply") from None
     try:
         return parse_model(data, base_dir=path.parent, source=str(path))
     except TrussfeError as err:

@@ -27,6 +27,7 @@ from typing import Any
 
 import numpy as np
 
+from ..budget import along_motion_bytes, check_input_file, require
 from ..errors import InputError
 from ..model.structure import Structure
 from .active import active_members
@@ -179,10 +180,22 @@ def third_order_motion(structure: Structure, start: dict | np.ndarray, end: dict
     acts = active_members(structure)
     if not acts:
         raise InputError("motion", "the model has no [active_members]; nothing can move")
-    if not (isinstance(steps, (int, np.integer)) and steps >= 1):
+    if isinstance(steps, bool) or not (isinstance(steps, (int, np.integer)) and steps >= 1):
         raise InputError("motion.steps", f"must be a positive integer, got {steps!r}")
     if not (duration > 0 and math.isfinite(duration)):
         raise InputError("motion.duration", f"must be positive, got {duration!r}")
+    if isinstance(first_sample, bool) or not isinstance(first_sample, (int, np.integer)) \
+            or first_sample < 0:
+        raise InputError("motion.first_sample", "must be an integer sample index (0 or more), "
+                         f"got {first_sample!r}")
+    if first_sample > 1_000_000_000:
+        raise InputError("motion.first_sample", f"{first_sample} is beyond any motion; the "
+                         "first sample is 0 or 1 (Lacy's Appendix A uses 0)")
+    if not isinstance(include_end, (bool, np.bool_)):
+        raise InputError("motion.include_end", f"must be true or false, got {include_end!r}")
+    require(along_motion_bytes(steps, structure.n_nodes, structure.n_members),
+            "motion.steps", f"a motion of {steps:,} time steps",
+            "use fewer steps (--steps)")
     members = np.array([a.member for a in acts])
     L0 = structure.lengths()[members]
 
@@ -219,6 +232,33 @@ def rest_motion(structure: Structure) -> Motion:
                   source="at rest")
 
 
+def spec_int(spec: dict, key: str, item: str, default: int, lo: int = 0,
+             hi: int = 1_000_000_000) -> int:
+    """An integer entry of a motion table (``first_sample``, ``grid``), checked."""
+    v = spec.get(key, default)
+    if isinstance(v, bool) or not isinstance(v, int) or not lo <= v <= hi:
+        raise InputError(f"{item}.{key}", f"must be an integer from {lo} to {hi:,}, got {v!r}")
+    return int(v)
+
+
+def spec_bool(spec: dict, key: str, item: str, default: bool = False) -> bool:
+    """A true/false entry of a motion table (``include_end``): a string "no" is refused,
+    not read as true."""
+    v = spec.get(key, default)
+    if not isinstance(v, bool):
+        raise InputError(f"{item}.{key}", f"must be true or false, got {v!r}")
+    return v
+
+
+def spec_positive(spec: dict, key: str, item: str) -> float:
+    """A positive finite number of a motion table (the response-model parameters)."""
+    v = spec[key]
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or not (
+            math.isfinite(float(v)) and v > 0):
+        raise InputError(f"{item}.{key}", f"must be a positive number, got {v!r}")
+    return float(v)
+
+
 _TOML_KEYS = ("type", "duration", "steps", "start", "end", "damping_ratio", "settling_fraction",
               "settling_constant", "real_root_factor", "first_sample", "include_end", "file")
 
@@ -252,23 +292,28 @@ def motion_from_spec(spec: dict, structure: Structure, base_dir: Path, source: s
     opts: dict[str, Any] = {}
     for key in ("damping_ratio", "settling_fraction", "settling_constant", "real_root_factor"):
         if key in spec:
-            v = spec[key]
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or not v > 0:
-                raise InputError(f"{item}.{key}", f"must be a positive number, got {v!r}")
-            opts[key] = float(v)
+            opts[key] = spec_positive(spec, key, item)
     for key in ("start", "end"):
         v = spec[key]
         if not isinstance(v, dict):
             raise InputError(f"{item}.{key}", "expected a table member id = length (m)")
         for k, x in v.items():
-            if isinstance(x, bool) or not isinstance(x, (int, float)) or not x > 0:
+            if isinstance(x, bool) or not isinstance(x, (int, float)) or not (
+                    x > 0 and math.isfinite(x)):
                 raise InputError(f"{item}.{key}.{k}", f"must be a positive length, got {x!r}")
     dur = spec["duration"]
     if isinstance(dur, bool) or not isinstance(dur, (int, float)):
         raise InputError(f"{item}.duration", f"expected a number of seconds, got {dur!r}")
-    m = third_order_motion(structure, spec["start"], spec["end"], float(dur), n,
-                           first_sample=int(spec.get("first_sample", 0)),
-                           include_end=bool(spec.get("include_end", False)), **opts)
+    if not (math.isfinite(dur) and dur > 0):
+        raise InputError(f"{item}.duration", f"must be a positive number of seconds, got {dur!r}")
+    try:
+        m = third_order_motion(structure, spec["start"], spec["end"], float(dur), n,
+                               first_sample=spec_int(spec, "first_sample", item, 0),
+                               include_end=spec_bool(spec, "include_end", item), **opts)
+    except InputError as err:
+        if not source or err.item.startswith((source, "--")):
+            raise
+        raise err.with_file(source) from None
     m.source = source or m.source
     return m
 
@@ -299,8 +344,7 @@ def load_motion(path: str | Path, structure: Structure, steps: int | None = None
         Unreadable file, unknown keys or members, non-monotonic time, NaN values.
     """
     path = Path(path)
-    if not path.is_file():
-        raise InputError(str(path), "motion file not found")
+    check_input_file(str(path), "motion file")
     if path.suffix.lower() == ".csv":
         from .motion_csv import read_motion_csv
         _no_steps(steps, "a CSV motion history")
@@ -309,6 +353,8 @@ def load_motion(path: str | Path, structure: Structure, steps: int | None = None
         data = tomllib.loads(path.read_text(encoding="utf-8"))
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
         raise InputError(path.name, f"not a valid TOML motion file ({exc})") from None
+    except RecursionError:
+        raise InputError(path.name, "arrays or tables nest too deeply") from None
     if "motion" not in data:
         raise InputError(path.name, "no [motion] table")
     return motion_from_spec(data["motion"], structure, path.parent, path.name, steps)
