@@ -114,8 +114,23 @@ def main(argv: list[str] | None = None) -> int:
     if clash:
         _error("", clash)
         return 2
-    logging.basicConfig(level=logging.INFO if args.verbose else logging.WARNING,
-                        format="trussfe: %(message)s", stream=sys.stderr)
+    # the run's own log handler on the "trussfe" logger (messages as "trussfe: ..." on the
+    # stderr of this run), removed again afterwards: main() may run many times in a process
+    log = logging.getLogger("trussfe")
+    handler = logging.StreamHandler(sys.stderr)
+    handler.setFormatter(logging.Formatter("trussfe: %(message)s"))
+    old_level = log.level
+    log.setLevel(logging.INFO if args.verbose else logging.WARNING)
+    log.addHandler(handler)
+    try:
+        return _run_command(args)
+    finally:
+        log.removeHandler(handler)
+        log.setLevel(old_level)
+
+
+def _run_command(args: argparse.Namespace) -> int:
+    """Run the parsed command inside one output transaction; map failures to exit codes."""
     where = getattr(args, "model", None) or ""
     try:
         with _numerics_checked() as caught, output_transaction() as tx:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import logging
+import sys
 from pathlib import Path
 
 from ..errors import InputError
@@ -67,7 +68,7 @@ def _run(args: argparse.Namespace) -> int:
     from ..rigid.output import to_json, write_npz, write_plots, write_vtk
 
     res = _simulate(args.model, args.motion, args.steps, args.scheme, args.sections,
-                    progress=True)
+                    progress=sys.stderr.isatty())
     if args.json:
         write_json(args.json, to_json(res))
     if args.npz:

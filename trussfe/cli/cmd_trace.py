@@ -7,7 +7,9 @@ reports every state, the bifurcation points and the limit points (CONTRACT.md §
 from __future__ import annotations
 
 import argparse
+import contextlib
 import sys
+from typing import Callable, Iterator
 
 import numpy as np
 
@@ -43,7 +45,7 @@ def register(subparsers) -> None:
 
 def analyse(model_path: str, *, drive, step, steps: int, branch: int = 0,
             tolerance: float = 1e-10, frozen: bool = False, vtk: str | None = None,
-            plot: str | None = None, structure=None) -> dict:
+            plot: str | None = None, structure=None, progress=None) -> dict:
     """Trace a model file's mechanism; returns the JSON document of CONTRACT.md §3.
 
     ``path``: one entry per state, ``{"parameter", "positions": {node: [..]}, "rank"}`` (and
@@ -63,7 +65,8 @@ def analyse(model_path: str, *, drive, step, steps: int, branch: int = 0,
     if branch < 0:
         raise InputError("--branch", f"must be 0 or more, got {branch}")
     r = trace_structure(s, drives, steps_ if len(steps_) > 1 else steps_[0], steps,
-                        branch=branch, tolerance=tolerance, newton=not frozen)
+                        branch=branch, tolerance=tolerance, newton=not frozen,
+                        progress=progress)
     path = []
     for k in range(r.coords.shape[0]):
         entry = {"parameter": float(r.parameter[k]),
@@ -116,10 +119,31 @@ def _plot(path: str, s, r) -> None:
     plt.close(fig)
 
 
+#: Traces of at least this many steps show a progress bar (on a terminal).
+PROGRESS_STEPS = 1000
+
+
+@contextlib.contextmanager
+def _progress_bar(steps: int) -> Iterator[Callable[[int], None] | None]:
+    """A tqdm bar on stderr for a long trace, only when stderr is a terminal (a log file or
+    pipe gets no carriage-return noise); closed however the trace ends, Ctrl-C included."""
+    if steps < PROGRESS_STEPS or not sys.stderr.isatty():
+        yield None
+        return
+    from tqdm import tqdm
+
+    with tqdm(total=steps, desc="trace", unit="step", leave=False, file=sys.stderr,
+              mininterval=0.5) as bar:
+        def tick(k: int) -> None:
+            bar.update(k - bar.n)
+        yield tick
+
+
 def _run(args: argparse.Namespace) -> int:
-    doc = analyse(args.model, drive=args.drive, step=args.step, steps=args.steps,
-                  branch=args.branch, tolerance=args.tolerance, frozen=args.frozen,
-                  vtk=args.vtk, plot=args.plot)
+    with _progress_bar(args.steps) as tick:
+        doc = analyse(args.model, drive=args.drive, step=args.step, steps=args.steps,
+                      branch=args.branch, tolerance=args.tolerance, frozen=args.frozen,
+                      vtk=args.vtk, plot=args.plot, progress=tick)
     if args.json:
         write_json(args.json, doc)
     ev = ", ".join(f"{e['kind']} at state {e['step']}" for e in doc["events"]) or "none"

@@ -43,7 +43,7 @@ def _main(args) -> int:
     cases = load_cases(folder, args.cases_selected)
     if not cases:
         raise InputError("--cases", f"no validation case files (*.toml) in '{folder}'")
-    results = run_cases(cases, progress=not args.no_progress)
+    results = run_cases(cases, progress=not args.no_progress and sys.stderr.isatty())
     md, page = write_report(results, args.out)
     failed = [r for r in results if not r.passed]
     for r in results:

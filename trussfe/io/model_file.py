@@ -7,7 +7,9 @@ or raises one :class:`~trussfe.errors.InputError` naming the file and the item.
 """
 from __future__ import annotations
 
+import contextvars
 import difflib
+import logging
 import math
 from pathlib import Path
 from typing import Any, Callable
@@ -15,11 +17,17 @@ from typing import Any, Callable
 import numpy as np
 
 from ..budget import check_input_file
-from ..errors import InputError, TrussfeError
+from ..errors import InputError, TrussfeError, one_line
 from . import toml_text
 from ..model.ids import IdIndex, IdRange, id_index
 from ..model.sections import Material, Section
 from ..model.structure import DOF_NAMES, Structure
+
+log = logging.getLogger(__name__)
+
+#: The file being read, as "path: " for warnings (errors get it from TrussfeError.with_file).
+_source: contextvars.ContextVar[str] = contextvars.ContextVar("trussfe_model_source",
+                                                              default="")
 
 #: Top-level tables of the core format.
 CORE_TABLES = ("model", "materials", "sections", "nodes", "members", "supports", "loads",
@@ -57,11 +65,39 @@ def _load_extensions() -> None:
         importlib.import_module(name)
 
 
+#: Most valid names a message lists; a larger set is summarised by its nearest few and a count.
+MAX_LISTED = 8
+#: Above this many names the nearest are found by sorted order, not by string similarity
+#: (difflib on 300,000 ids takes seconds).
+MAX_DIFFLIB = 2000
+
+
 def _suggest(word: str, choices) -> str:
+    """The suggestion that ends a "not defined" message: the close match, all valid names
+    of a short list, or the nearest few of a long one and how many there are."""
     if isinstance(choices, IdIndex):            # a mesh model: nodes are the point indices
         return f"; the mesh's nodes are 0 … {len(choices) - 1}"
-    close = difflib.get_close_matches(str(word), list(choices), n=1, cutoff=0.5)
-    return f"; did you mean '{close[0]}'?" if close else f"; valid: {', '.join(choices)}"
+    names = [str(c) for c in choices]
+    word = str(word)
+    pool = names if len(names) <= MAX_DIFFLIB else _neighbours(word, names, 50)
+    close = difflib.get_close_matches(word, pool, n=1, cutoff=0.5)
+    if close:
+        return f"; did you mean '{close[0]}'?"
+    if len(names) <= MAX_LISTED:
+        return f"; valid: {', '.join(names)}"
+    near = (difflib.get_close_matches(word, pool, n=5, cutoff=0.0) if len(names) <= MAX_DIFFLIB
+            else _neighbours(word, names, 5))
+    return f"; nearest: {', '.join(near)} (of {len(names):,} defined)"
+
+
+def _neighbours(word: str, names: list[str], k: int) -> list[str]:
+    """The ``k`` names nearest to ``word`` in sorted order (cheap for any number of names)."""
+    import bisect
+
+    ordered = sorted(names)
+    i = bisect.bisect_left(ordered, word)
+    lo = max(0, i - k // 2)
+    return ordered[lo:lo + k]
 
 
 def _check_keys(table: dict, allowed, item: str) -> None:
@@ -231,6 +267,14 @@ def parse_model(data: dict, base_dir: Path | str = ".", source: str = "") -> Str
         Naming the table and item at fault.
     """
     base_dir = Path(base_dir)
+    token = _source.set(f"{source}: " if source else "")
+    try:
+        return _parse_model(data, base_dir, source)
+    finally:
+        _source.reset(token)
+
+
+def _parse_model(data: dict, base_dir: Path, source: str) -> Structure:
     _load_extensions()
     allowed = CORE_TABLES + tuple(_EXTENSIONS)
     for key in data:
@@ -396,6 +440,33 @@ def _check_geometry(coords, conn, member_ids, node_ids) -> None:
         same = np.flatnonzero(flat == dup)
         raise InputError(f"members.{member_ids[same[1]]}",
                          f"duplicates member '{member_ids[same[0]]}' (same two nodes)")
+    _warn_coincident(coords, node_ids, scale)
+
+
+def _warn_coincident(coords: np.ndarray, node_ids, scale: float) -> None:
+    """Warn, in one line, about nodes at the same place that no member joins.
+
+    Two nodes at one point are a common modelling slip (a joint typed twice, each half
+    carrying some members): the structure then falls apart there.  A member between them is
+    refused as zero-length before this check, so the pairs found here are unjoined.  Exact
+    positions are compared after rounding to 1e-9 of the model size (one sort, vectorised).
+    """
+    if len(coords) < 2:
+        return
+    q = np.round(coords / (1e-9 * scale))
+    order = np.lexsort(q.T[::-1])
+    same = np.all(q[order[1:]] == q[order[:-1]], axis=1)
+    if not same.any():
+        return
+    k = int(np.flatnonzero(same)[0])
+    a, b = sorted((int(order[k]), int(order[k + 1])))
+    more = int(same.sum()) - 1
+    where = ", ".join(f"{x:.6g}" for x in coords[a])
+    log.warning("warning: %s", one_line(
+        f"{_source.get()}nodes '{node_ids[a]}' and '{node_ids[b]}' coincide at ({where})"
+        + (f", and {more} more pair(s) of nodes" if more else "")
+        + "; no member joins them, so the structure is not connected there — merge them "
+          "into one node if they are meant to be one joint"))
 
 
 def _mesh_geometry(mesh_name, base_dir, dim, data, sections, materials):

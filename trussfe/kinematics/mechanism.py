@@ -32,12 +32,14 @@ from __future__ import annotations
 
 import logging
 from dataclasses import dataclass, field
+from typing import Callable
 
 import numpy as np
 import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from ..budget import require
 from ..errors import AnalysisError, InputError
 from .compatibility import compatibility_matrix
 
@@ -530,11 +532,16 @@ def _dense_null(B: sp.csr_matrix, rtol: float):
     return rank, vt[rank:].T, s
 
 
+#: Memory per kept state and node of a trace (the coordinates and their JSON record).
+BYTES_PER_STATE_NODE = 512
+
+
 def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarray,
                     drives: list[int], step: float | list[float], steps: int, *,
                     branch: int = 0, tolerance: float = 1e-10, max_iterations: int = 30,
                     newton: bool = True, rank_tolerance: float | None = None,
-                    names: list[str] | None = None) -> TraceResult:
+                    names: list[str] | None = None,
+                    progress: Callable[[int], None] | None = None) -> TraceResult:
     """Follow the finite motion of a mechanism (Hortobágyi sections 3–6).
 
     Parameters
@@ -569,6 +576,9 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
     rank_tolerance : float, optional
         Relative singular-value tolerance of the per-step rank; default
         ``max(1e-8, 100·tolerance)`` — never tighter than the bar-length accuracy.
+    progress : callable, optional
+        Called with the step number after every step (a progress bar; may raise
+        ``KeyboardInterrupt`` to stop the trace).
     names : list of str, optional
         Coordinate names ``"node:axis"`` for events and messages.
 
@@ -655,7 +665,12 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
     prev_drive_dir = None
     s_acc = 0.0
     h = h_full
+    # every state is kept (coordinates, and the per-state record of the JSON document)
+    require(float(steps) * (BYTES_PER_STATE_NODE * n + 2048), "--steps",
+            f"a trace of {steps:,} states of {n:,} nodes", "trace fewer steps")
     for k in range(1, steps + 1):
+        if progress is not None:
+            progress(k)
         item = f"trace: step {k}"
         B = compatibility_matrix(x, conn, free)
         rank = None
