@@ -101,6 +101,8 @@ def check_input_file(path: str, what: str = "file") -> int:
     """
     import stat
 
+    if not str(path).strip() or "\0" in str(path):
+        raise InputError(repr(str(path)), f"is not a usable {what} name")
     try:
         st = os.stat(path)
     except FileNotFoundError:

@@ -30,8 +30,10 @@ def one_line(text: str, limit: int = MAX_MESSAGE_CHARS) -> str:
             esc = repr(ch)[1:-1]
             out.append(esc if esc != ch else f"\\u{ord(ch):04x}")
     s = "".join(out)
-    if len(s) > limit:
-        s = s[: limit - 40] + f" ... [{len(s) - limit + 40} more characters]"
+    if len(s) > limit:              # keep both ends: the item and what is wrong with it
+        head = limit // 2
+        tail = limit - head - 40
+        s = f"{s[:head]} ... [{len(s) - head - tail} characters] ... {s[-tail:]}"
     return s
 
 

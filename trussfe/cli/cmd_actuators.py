@@ -24,7 +24,7 @@ def register(subparsers) -> None:
         "actuators", help="leadscrew and motor demands of the actuators along a motion",
         description="Self-locking check, gains, peak actuator force, motor speed, torque, "
         "current and voltage (with and without friction) of every [actuators] entry.")
-    p.add_argument("model", help="model file (TOML) with [active_members] and [actuators]")
+    p.add_argument("model", type=opt.input_file, help="model file (TOML) with [active_members] and [actuators]")
     p.add_argument("--motion", type=opt.input_file, help="motion file: TOML [motion] spec or CSV history")
     p.add_argument("--steps", type=opt.positive_int, help="number of time steps of a generated motion")
     p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the summary as JSON")

@@ -24,7 +24,7 @@ def register(subparsers) -> None:
                               description="Linear buckling about the static state under the "
                               "model's loads and gravity: load factors (smallest magnitude "
                               "first, negative = reversed loads), modes, member Euler loads.")
-    p.add_argument("model", help="model file (TOML)")
+    p.add_argument("model", type=opt.input_file, help="model file (TOML)")
     p.add_argument("--count", type=opt.positive_int, default=4, metavar="N",
                    help="number of load factors (default 4)")
     p.add_argument("--bar-model", choices=BAR_MODELS, default="pinned-beam",

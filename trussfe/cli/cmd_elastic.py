@@ -25,7 +25,7 @@ def register(subparsers) -> None:
         "current configuration under gravity and the d'Alembert loads of the rigid-body "
         "motion: displacements, reactions, section forces and strains, compared with the "
         "rigid-body model's internal forces. Without --motion the model is analysed at rest.")
-    p.add_argument("model", help="model file (TOML), with [active_members] if it moves")
+    p.add_argument("model", type=opt.input_file, help="model file (TOML), with [active_members] if it moves")
     p.add_argument("--motion", type=opt.input_file, help="motion file: TOML [motion] spec or CSV history")
     p.add_argument("--steps", type=opt.positive_int, help="number of time steps of a generated motion")
     p.add_argument("--scheme", choices=("exact", "thesis"), default="exact",

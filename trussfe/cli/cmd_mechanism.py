@@ -24,7 +24,7 @@ def register(subparsers) -> None:
     """Add the ``mechanism`` command."""
     p = subparsers.add_parser("mechanism", help="rank analysis: mechanisms and self-stress states",
                               description=__doc__.splitlines()[0].strip("`"))
-    p.add_argument("model", help="model file (TOML)")
+    p.add_argument("model", type=opt.input_file, help="model file (TOML)")
     p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the results as JSON")
     p.add_argument("--vtk", metavar="DIR", type=opt.output_dir, help="write mechanism shapes and self-stress states")
     p.add_argument("--tolerance", type=opt.relative_tolerance, default=None,

@@ -22,7 +22,7 @@ def register(subparsers) -> None:
                               description="Modal analysis: the lowest natural frequencies, "
                               "mass-normalised mode shapes, participation factors and "
                               "effective masses.")
-    p.add_argument("model", help="model file (TOML)")
+    p.add_argument("model", type=opt.input_file, help="model file (TOML)")
     p.add_argument("--count", type=opt.positive_int, default=6, metavar="N",
                    help="number of modes (default 6)")
     p.add_argument("--mass", choices=MASS_KINDS, default="consistent",

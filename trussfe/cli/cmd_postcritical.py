@@ -33,7 +33,7 @@ def register(subparsers) -> None:
         description="Follow the equilibrium path of the model under its [loads] scaled by a "
         "load factor: co-rotational elements, limit and bifurcation points, member buckling, "
         "yield and fracture, and the hand-over to mechanism motion.")
-    p.add_argument("model", help="model file (TOML)")
+    p.add_argument("model", type=opt.input_file, help="model file (TOML)")
     p.add_argument("--control", choices=CONTROLS, default=None,
                    help="path control (default arc-length, or the model's [postcritical])")
     p.add_argument("--steps", type=opt.positive_int, default=None, metavar="N", help="number of steps")

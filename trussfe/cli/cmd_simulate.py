@@ -23,7 +23,7 @@ def register(subparsers) -> None:
         description="Forces, section forces, von Mises stresses, buckling margins and actuator "
         "loads of a pin-jointed truss along a prescribed motion of its active members. "
         "Without --motion the model is analysed at rest (one step).")
-    p.add_argument("model", help="model file (TOML) with [active_members]")
+    p.add_argument("model", type=opt.input_file, help="model file (TOML) with [active_members]")
     p.add_argument("--motion", type=opt.input_file, help="motion file: TOML [motion] spec or CSV history")
     p.add_argument("--steps", type=opt.positive_int, help="number of time steps of a generated motion")
     p.add_argument("--scheme", choices=("exact", "thesis"), default="exact",

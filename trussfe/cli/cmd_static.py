@@ -24,7 +24,7 @@ def register(subparsers) -> None:
     p = subparsers.add_parser("static", help="linear static finite-element analysis",
                               description="Linear static finite-element analysis: "
                               "displacements, reactions, member forces and stresses.")
-    p.add_argument("model", help="model file (TOML)")
+    p.add_argument("model", type=opt.input_file, help="model file (TOML)")
     p.add_argument("--bar-model", choices=BAR_MODELS, default="truss",
                    help="bars as axial-only truss elements (default) or as pinned beams")
     p.add_argument("--subdivisions", type=opt.positive_int, default=None, metavar="K",

@@ -24,7 +24,7 @@ def register(subparsers) -> None:
     """Add the ``trace`` command."""
     p = subparsers.add_parser("trace", help="finite-mechanism motion",
                               description=__doc__.splitlines()[0].strip("`"))
-    p.add_argument("model", help="model file (TOML)")
+    p.add_argument("model", type=opt.input_file, help="model file (TOML)")
     p.add_argument("--drive", action="append", required=True, metavar="NODE:AXIS",
                    help="prescribed coordinate (repeat for several degrees of freedom)")
     p.add_argument("--step", action="append", type=opt.nonzero_real, required=True, metavar="S",

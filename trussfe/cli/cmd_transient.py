@@ -24,7 +24,7 @@ def register(subparsers) -> None:
         description="Linearised FE dynamics about the moving configuration (Newmark average "
         "acceleration): elastic member forces compared with the quasi-static FE and the "
         "rigid-body ones, and the energy balance.")
-    p.add_argument("model", help="model file (TOML) with [active_members]")
+    p.add_argument("model", type=opt.input_file, help="model file (TOML) with [active_members]")
     p.add_argument("--motion", required=True, type=opt.input_file, help="motion file: TOML [motion] or CSV")
     p.add_argument("--steps", type=opt.positive_int, help="number of time steps of a generated motion")
     p.add_argument("--dt", type=opt.positive_real, help="time step, s (default: the motion's sampling)")

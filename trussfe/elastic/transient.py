@@ -259,7 +259,8 @@ def motion_on_grid(motion: Motion, dt: float | None = None, t_end: float | None 
                          " the motion is too short for this step: give a smaller dt")
     n_float = np.floor((end - t[0]) / dt * (1 + 1e-12)) + 1
     # the FE response at every step dwarfs the motion itself: refuse what cannot fit
-    require(along_motion_bytes(n_float, 0, motion.length.shape[1]), "--dt",
+    require(along_motion_bytes(n_float, 0, motion.length.shape[1]),
+            "--dt" if t_end is None else "--dt, --t-end",
             f"{n_float:,.0f} time steps of {dt:g} s", "give a longer time step")
     n = int(n_float)
     tq = t[0] + dt * np.arange(n)
