@@ -162,6 +162,10 @@ def _run_command(args: argparse.Namespace) -> int:
         with contextlib.suppress(OSError):
             os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 128 + signal.SIGPIPE
+    except OSError as exc:
+        # the machine refused a file operation (permissions, a vanished folder, a full disk)
+        _error(str(exc.filename or where), exc.strerror or str(exc))
+        return 2
     except Exception as exc:  # an internal fault: one line, traceback only on request
         if os.environ.get("TRUSSFE_DEBUG"):
             raise

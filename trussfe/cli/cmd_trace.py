@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import os
 import sys
 from typing import Callable, Iterator
 
@@ -132,8 +133,12 @@ def _progress_bar(steps: int) -> Iterator[Callable[[int], None] | None]:
         return
     from tqdm import tqdm
 
+    try:                    # a terminal that reports no width (a bare pty): 80 columns
+        width = os.get_terminal_size(sys.stderr.fileno()).columns or 80
+    except (OSError, ValueError, AttributeError):
+        width = 80
     with tqdm(total=steps, desc="trace", unit="step", leave=False, file=sys.stderr,
-              mininterval=0.5) as bar:
+              mininterval=0.5, ncols=width) as bar:
         def tick(k: int) -> None:
             bar.update(k - bar.n)
         yield tick
