@@ -310,3 +310,23 @@ def test_three_parallel_validate_runs_give_identical_reports(tmp_path):
         texts = {(tmp_path / f"r{k}" / name).read_bytes() for k in range(3)}
         assert len(texts) == 1, name
     assert (tmp_path / "r0" / "timings.txt").read_text().count("\n") == 3
+
+
+def test_non_finite_result_is_refused_naming_the_quantity(model, tmp_path, capsys,
+                                                          monkeypatch):
+    """An infinite number reaching a JSON result (a Python float overflow numpy cannot see)
+    is refused naming the quantity and the units; nothing is written."""
+    import trussfe.cli.cmd_static as cmd
+
+    real = cmd.static_json
+
+    def overflowing(result):
+        doc = real(result)
+        doc["members"]["AB"]["axial_force"] = 1e308 * 10.0
+        return doc
+
+    monkeypatch.setattr(cmd, "static_json", overflowing)
+    rc = main(["static", str(model), "--json", str(tmp_path / "r.json")])
+    line = _one_error_line(capsys.readouterr().err)
+    assert rc == 2 and "members.AB.axial_force" in line and "units" in line
+    assert not (tmp_path / "r.json").exists()

@@ -40,6 +40,8 @@ class OutputTransaction:
     pending: list[tuple[Path, Path, bool]] = field(default_factory=list)
     created: list[Path] = field(default_factory=list)
     done: bool = False
+    #: Refuse JSON results holding a non-finite number (see :func:`write_json`).
+    finite_only: bool = True
 
     def make_parents(self, folder: Path) -> None:
         """Create ``folder`` and its missing ancestors, remembering which were new."""
@@ -240,10 +242,68 @@ def _jsonable(obj: Any) -> Any:
     return obj
 
 
+#: Result keys whose value may be infinite or undefined by definition: the buckling margin of a
+#: member never in compression, the singular value bounds of a rank decision with nothing kept
+#: or dropped.  Written as ``null``.
+NON_FINITE_ALLOWED = frozenset({"margin", "largest_dropped_singular_value",
+                                "smallest_kept_singular_value", "yield_strength"})
+
+
+def first_non_finite(obj: Any, path: str = "") -> tuple[str, float] | None:
+    """The first number in ``obj`` (nested dicts, lists, arrays) that is not finite, as
+    ``(dotted path, value)``, skipping the keys of :data:`NON_FINITE_ALLOWED`; else ``None``.
+
+    Examples
+    --------
+    >>> first_non_finite({"members": {"M1": {"axial_force": [1.0, float("inf")]}}})
+    ('members.M1.axial_force[1]', inf)
+    >>> first_non_finite({"buckling": {"margin": float("inf")}}) is None
+    True
+    """
+    if isinstance(obj, dict):
+        for k, v in obj.items():
+            if str(k) in NON_FINITE_ALLOWED:
+                continue
+            hit = first_non_finite(v, f"{path}.{k}" if path else str(k))
+            if hit:
+                return hit
+        return None
+    if isinstance(obj, np.ndarray):
+        if obj.dtype.kind in "fc":
+            bad = np.flatnonzero(~np.isfinite(obj.ravel()))
+            if bad.size:
+                return f"{path}[{int(bad[0])}]", float(obj.ravel()[bad[0]].real)
+        return None
+    if isinstance(obj, (list, tuple)):
+        for i, v in enumerate(obj):
+            if isinstance(v, (float, np.floating)):
+                if not np.isfinite(v):
+                    return f"{path}[{i}]", float(v)
+            elif isinstance(v, (dict, list, tuple, np.ndarray)):
+                hit = first_non_finite(v, f"{path}[{i}]")
+                if hit:
+                    return hit
+        return None
+    if isinstance(obj, (float, np.floating)) and not np.isfinite(obj):
+        return path, float(obj)
+    return None
+
+
 def write_json(path: str | Path, data: dict) -> None:
     """Write ``data`` as JSON atomically (numpy arrays and scalars converted).
 
     Non-finite floats become ``null``: JSON has no NaN and a reader should see "no value".
+    Inside an :func:`output_transaction` (a command-line run) a non-finite number outside the
+    keys of :data:`NON_FINITE_ALLOWED` is refused instead: it means an overflow, almost always
+    from inputs in the wrong units.
     """
+    tx = _TRANSACTION.get()
+    if tx is not None and tx.finite_only:
+        hit = first_non_finite(data)
+        if hit:
+            from ..errors import AnalysisError
+            raise AnalysisError(f"result {hit[0]}", f"is {hit[1]}, not a finite number: a "
+                                "value overflowed; check the units (SI: m, N, Pa, kg, s) and "
+                                "the magnitudes in the model")
     with atomic_path(path) as tmp:
         tmp.write_text(json.dumps(_jsonable(data), indent=1, allow_nan=False))
