@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 """Timing of the actuator and motor model, the rotation-to-lengths conversion and the bay-by-bay
-chain kinematics.  Prints a table (best wall-clock and CPU time); asserts nothing (targets in
-the issue: the whole double-octahedral slew of 10,000 steps, actuators included, < 1 s).
+chain kinematics.  Prints a table (best wall-clock and CPU time); asserts nothing (target in
+docs/performance.md: the whole double-octahedral slew of 10,000 steps, actuators included, < 1 s).
 
 The bay-by-bay chain kinematics solve every bay alone for all bays and steps at once (one
 batched Newton iteration over bays × steps), then carry the frames up the chain bay by bay.

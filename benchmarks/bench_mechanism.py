@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
 """Mechanism-analysis benchmarks: trace speed on a large spatial mechanism, rank of a large
-framework.  Prints a table; targets (issue 5): ≥ 10 steps/s tracing 1,000 joints (3,000
+framework.  Prints a table; targets (docs/performance.md): ≥ 10 steps/s tracing 1,000 joints (3,000
 coordinates), rank analysis of a 10^5-bar framework in < 10 s.
 
 Run: ``python benchmarks/bench_mechanism.py [--quick]``.

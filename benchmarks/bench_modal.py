@@ -10,7 +10,7 @@ A chain of 10,000 bays is 11 km tall and 1.2 m wide: its lowest eigenvalues are 
 double precision resolves.  The benchmark still times it and prints, beside every row, the
 largest eigen-residual of trussfe's modes and of OpenSeesPy's (computed with trussfe's K and M),
 flagging the row "unresolved" (``trussfe modes`` refuses such a model; docs/modal-buckling.md).
-Target (issue 4, item 8): 10,000 bays (180,000 DOFs) in ≤ 1.0 s for the eigen-solution, and the
+Target (docs/performance.md): 10,000 bays (180,000 DOFs) in ≤ 1.0 s for the eigen-solution, and the
 180 × 180 grid no slower than OpenSeesPy in the same run.
 """
 from __future__ import annotations

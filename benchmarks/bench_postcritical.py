@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 """Speed of the post-critical analysis.
 
-Targets (issue "Elastic post-critical studies"):
+Targets (docs/performance.md):
 
 * the von Mises truss's full path, 200 arc-length steps: < 1 s;
 * progressive failure of a 10^4-member lattice through 50 member events: < 60 s.

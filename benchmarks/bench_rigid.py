@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Speed of the rigid-body dynamic force model (issue item 12); prints a table.
+"""Speed of the rigid-body dynamic force model (targets in docs/performance.md); prints a table.
 
 Targets: the double-octahedral slew with 10,000 time steps (kinematics, nodal forces,
 section forces, stresses, buckling, actuator force and, when available, motor histories)

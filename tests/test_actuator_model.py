@@ -7,8 +7,9 @@ import pytest
 from numpy.testing import assert_allclose
 
 from trussfe.errors import AnalysisError, InputError
+from trussfe.io.extension_tables import parse_actuator
 from trussfe.rigid.actuator import (Actuator, max_leadscrew_gain, motor_histories,
-                                    parse_actuator, select_gearhead_gain, thread_ratio)
+                                    select_gearhead_gain, thread_ratio)
 from trussfe.rigid.motion import third_order_response
 
 NAN = math.nan

@@ -66,17 +66,17 @@ back_emf_constant = 0.0398
      r"actuators\.M7_8\.resistance: is required"),
 ])
 def test_bad_actuator_tables(tmp_path, extra, match):
-    """Bad [actuators] tables give one InputError naming the actuator (issue item 11)."""
+    """Bad [actuators] tables give one InputError naming the actuator."""
     with pytest.raises(InputError, match=match):
         read_model(write_model(tmp_path, extra))
 
 
 def test_simulate_json_carries_motor_histories():
-    """``simulate`` JSON (CONTRACT §3): actuators.ID has length, force, motor torque, current
+    """``simulate`` JSON (docs/json.md): actuators.ID has length, force, motor torque, current
     and voltage per time step; current = torque / K_t (eq. 2.43) and the first step at rest
     needs V = T R_a / K_t (eq. 2.44, no back emf)."""
-    from trussfe.cli.cmd_simulate import analyse
-    d = analyse(str(MODEL), motion=str(MESHES / "slew1_motion.csv"))
+    from trussfe import api
+    d = api.simulate(MODEL, motion=MESHES / "slew1_motion.csv").to_dict()
     a = d["actuators"]["M7_8"]
     nt = len(d["time"])
     for key in ("length", "force", "motor_torque", "motor_current", "motor_voltage"):

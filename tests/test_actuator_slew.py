@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Top-plane rotations converted to active-member lengths (issue item 2c, Lacy section 5.5)."""
+"""Top-plane rotations converted to active-member lengths (Lacy section 5.5)."""
 import math
 
 import numpy as np

@@ -40,7 +40,7 @@ def test_euler_column_and_convergence():
     err = np.array([solve_buckling(s, count=1, subdivisions=k).load_factors[0] / pe - 1
                     for k in (4, 8, 16)])
     assert np.all(err > 0)                     # the FE model is stiffer than the column
-    assert err[0] < 6e-4                       # k = 4 (the issue's minimum)
+    assert err[0] < 6e-4                       # k = 4 (the smallest subdivision offered)
     assert_allclose(np.log2(err[:-1] / err[1:]), 4.0, atol=0.1)
 
 
@@ -113,7 +113,7 @@ def test_thesis_allowables(name, section, L, printed, rtol):
 
 
 def test_top_plane_real_length_unconservative():
-    """The top-plane members are 1.2192 m long (base-triangle side, DESIGN.md): their Euler
+    """The top-plane members are 1.2192 m long (the base-triangle side): their Euler
     load is 1624.4 N, so the thesis' 3055.2 N over-states the allowable by 1.88×."""
     pe = euler_load(column(1.2192, section=FIXED_TUBE))[0]
     assert_allclose(pe, 1624.4, rtol=5e-5)

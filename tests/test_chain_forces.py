@@ -25,10 +25,11 @@ def case():
     L = EQUILIBRIUM_LENGTH + y[:, None, None] * amp
     Ld, Ldd = dy[:, None, None] * amp, ddy[:, None, None] * amp
     bbb = chain_forces(bay, t, L, Ld, Ldd, TOP)
-    chain = stack_bays(bay, NB)
-    chain.gravity = bay.gravity
+    chain = stack_bays(bay, NB).with_gravity(bay.gravity)
     top_nodes = [chain.node_index(f"N{i}.{NB}") for i in (7, 8, 9)]
-    chain.loads[top_nodes, :3] = TOP
+    loads = np.array(chain.loads)
+    loads[top_nodes, :3] = TOP
+    chain = chain.with_loads(loads)
     acts = np.array([a.member for a in chain.extensions["active_members"]])
     motion = Motion(t, acts, L.reshape(t.size, -1), Ld.reshape(t.size, -1),
                     Ldd.reshape(t.size, -1), source="test")

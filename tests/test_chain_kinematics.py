@@ -34,7 +34,7 @@ def motion():
 def direct(chain, lengths):
     """Independent reference: the whole chain as one assembly — forward position by Newton
     (solve_positions, warm-started), velocities from B v = L̇ and accelerations from
-    B a = L̈ − (|v_rel|² − L̇²)/L with B the chain's sparse compatibility matrix (DESIGN.md)."""
+    B a = L̈ − (|v_rel|² − L̇²)/L with B the chain's sparse compatibility matrix."""
     L, Ld, Ldd = lengths
     nt = L.shape[0]
     acts = np.array([a.member for a in chain.extensions["active_members"]])

@@ -318,14 +318,13 @@ def test_non_finite_result_is_refused_naming_the_quantity(model, tmp_path, capsy
     is refused naming the quantity and the units; nothing is written."""
     import trussfe.cli.cmd_static as cmd
 
-    real = cmd.static_json
+    real = cmd.write_json
 
-    def overflowing(result):
-        doc = real(result)
+    def overflowing(path, doc):
         doc["members"]["AB"]["axial_force"] = 1e308 * 10.0
-        return doc
+        real(path, doc)
 
-    monkeypatch.setattr(cmd, "static_json", overflowing)
+    monkeypatch.setattr(cmd, "write_json", overflowing)
     rc = main(["static", str(model), "--json", str(tmp_path / "r.json")])
     line = _one_error_line(capsys.readouterr().err)
     assert rc == 2 and "members.AB.axial_force" in line and "units" in line

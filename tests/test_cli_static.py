@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""``trussfe static``: outputs, exit statuses and atomic writes (CONTRACT.md §2–4).
+"""``trussfe static``: outputs, exit statuses and atomic writes (docs/cli.md, json.md, vtk.md).
 Expected numbers: Lacy Table 3.2 (follower tension −78.5429 N, reactions at O1)."""
 from __future__ import annotations
 
@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from trussfe.cli import main
-from trussfe.cli.cmd_static import analyse
+from trussfe import api
 
 MODEL = textwrap.dedent("""
     [model]
@@ -115,7 +115,7 @@ def test_analyse_returns_the_json_document(model, tmp_path):
     assert main(["static", str(model), "--json", str(out), "--bar-model", "pinned-beam",
                  "--subdivisions", "2"]) == 2   # follower has no Iz: pinned-beam refuses
     assert not out.exists()
-    doc = analyse(model)
+    doc = api.static(model).to_dict()
     main(["static", str(model), "--json", str(out)])
     assert json.loads(out.read_text()) == json.loads(json.dumps(doc))
 

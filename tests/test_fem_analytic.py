@@ -230,7 +230,7 @@ def test_3d_frame_with_releases_bars_and_self_weight_is_in_equilibrium():
                                6: [0.0, 150.0, -800.0, 0.0, 0.0, 0.0]},
                         masses={7: 20.0}, gravity=[0.0, 0.0, -9.81],
                         is_beam=[True] * 8 + [False, False])
-    s.releases[4] = [False, True]          # beam 4-5 pinned at node 5
+    s = s.with_member_data(releases={4: [False, True]})   # beam 4-5 pinned at node 5
     for bar_model in ("truss", "pinned-beam"):
         r = solve_static(s, bar_model=bar_model, subdivisions=3)
         # resultant of the applied loads, member weights and the nodal mass's weight

@@ -5,7 +5,7 @@ to round-off (1e-12 relative), for every matrix and vector a bar contributes to.
 
 The general path is the independent computation here: it assembles every bar with
 scikit-fem on its own local axis and rotates it through the sparse transformation ``T``
-(DESIGN.md, "Finite elements with scikit-fem"), and is itself checked against closed-form
+(docs/fem.md), and is itself checked against closed-form
 element matrices in ``tests/test_fem_local_matrices.py``.
 """
 from __future__ import annotations
@@ -39,8 +39,7 @@ def _mixed_3d():
     s = build_structure(x, members, section=SEC, material=MAT, is_beam=beam,
                         supports={0: "xyz", 3: "xyz", 2: "z"}, loads={4: [1.0, -2.0, -3.0]},
                         masses={5: 2.5}, gravity=[0.0, 0.0, -9.81])
-    s.releases[8, 1] = True
-    return s
+    return s.with_member_data(releases={8: [False, True]})
 
 
 def _truss_2d():
@@ -106,7 +105,7 @@ def test_vectors_equal_general_path(case):
 
 
 def test_lumped_mass_is_half_each_end():
-    """Lumped bar mass: ρAL/2 on each end's translations (CONTRACT.md §2)."""
+    """Lumped bar mass: ρAL/2 on each end's translations (docs/cli.md, ``--bar-model``)."""
     s = _truss_2d()
     fe = discretise(s)
     d = fe.mass("lumped").diagonal()

@@ -115,7 +115,7 @@ def test_global_matrices_are_rotated_closed_forms(direction):
 
 def test_truss_bar_mass_and_geometric_stiffness():
     """Truss bar: consistent mass ρAL/6 [[2,1],[1,2]] on every translation, lumped ρAL/2 per
-    end, geometric stiffness N/L (I − e eᵀ) (CONTRACT.md §2; brief formula)."""
+    end, geometric stiffness N/L (I − e eᵀ) (docs/cli.md, ``--bar-model``)."""
     e = np.array([2.0, -1.0, 2.0]) / 3.0
     L = 1.5
     s = build_structure([[0, 0, 0], L * e], [(0, 1)], section=SEC, material=MAT)

@@ -110,7 +110,7 @@ def test_validation_entry_counts():
 
 
 def test_direction_count_sweep_never_gives_two():
-    """Seed finding (section 6): folded states of the section-6 graph with a ground bar removed
+    """Recomputed (section 6): folded states of the section-6 graph with a ground bar removed
     have 0 or 8 real unfolding directions (a flat four-bar with two branches carrying two
     dyads that open both ways or not at all), never the 2 the text's "two shapes and their
     symmetric pairs" needs.  Small deterministic sample of the documented sweep."""

@@ -1,4 +1,4 @@
-"""Velocities and accelerations from B v = L̇, B a = L̈ − (|v_rel|² − L̇²)/L (DESIGN.md)."""
+"""Velocities and accelerations from B v = L̇, B a = L̈ − (|v_rel|² − L̇²)/L."""
 import numpy as np
 import pytest
 

@@ -9,7 +9,6 @@ Hermite beams.
 """
 from __future__ import annotations
 
-from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -19,6 +18,7 @@ from trussfe.errors import AnalysisError, InputError
 from trussfe.fem import discretise
 from trussfe.fem.modal import (active_member_mass, mass_matrix, modes_json, rigid_translations,
                                solve_modes)
+from trussfe.model.active import ActiveMember
 from trussfe.model.sections import Material, Section
 from trussfe.model.structure import build_structure
 
@@ -176,9 +176,9 @@ def test_active_member_rigid_body_mass():
     translation, moment of inertia I_b + I_t about the start node for a rotation about it."""
     L = 3.0
     s = build_structure([[0, 0], [L, 0]], [(0, 1)], section=TUBE, material=STEEL)
-    act = SimpleNamespace(member=0, base_mass=2.4, base_cg=1.05, base_inertia=2.4 * 2.1**2 / 3,
-                          tube_length=2.0)
-    s.extensions["active_members"] = [act]
+    act = ActiveMember(member=0, base_mass=2.4, base_length=2.1, base_cg=1.05,
+                       base_inertia=2.4 * 2.1**2 / 3, tube_length=2.0)
+    s = s.with_extensions(active_members=[act])
     fe = discretise(s)
     Ma = active_member_mass(fe).toarray()
     rhoA = STEEL.density * TUBE.area
@@ -207,11 +207,9 @@ def test_active_member_pendulum_frequencies():
     s = build_structure([[0, 0], [L, 0], [L, -h]], [(0, 1), (1, 2)], section=TUBE,
                         material=STEEL, supports={0: "xy", 2: "xy"})
     spring = Material("spring", E=5e9, G=2e9, density=0.0)
-    s.materials[1] = spring
-    s.__dict__.pop("_prop_cache", None)
-    act = SimpleNamespace(member=0, base_mass=3.0, base_cg=0.35, base_inertia=3.0 * 0.7**2 / 3,
-                          tube_length=0.254)
-    s.extensions["active_members"] = [act]
+    act = ActiveMember(member=0, base_mass=3.0, base_length=0.7, base_cg=0.35,
+                       base_inertia=3.0 * 0.7**2 / 3, tube_length=0.254)
+    s = s.with_materials({1: spring}).with_extensions(active_members=[act])
     r = solve_modes(s, count=2)
     rhoA = STEEL.density * TUBE.area
     mt = rhoA * 0.254

@@ -51,8 +51,7 @@ def test_round_trip_through_mesh(tmp_path, key):
 def test_quoted_keys_and_strings(tmp_path):
     """Ids that are not bare TOML keys are quoted; names with quotes survive."""
     s = M.two_bar()
-    s.node_ids = ['a "b"', "c.d", "é"]
-    s.name = 'with "quotes" \\ and\nnewline'
+    s = s.variant(node_ids=['a "b"', "c.d", "é"], name='with "quotes" \\ and\nnewline')
     r = read_model(write_model(s, tmp_path / "q.toml"))
     assert r.node_ids == s.node_ids and r.name == s.name
 

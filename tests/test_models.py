@@ -1,4 +1,4 @@
-"""The model catalogue (trussfe.models): geometry against the seeds and hand solutions.
+"""The model catalogue (trussfe.models): geometry against the sources and hand solutions.
 
 Forces are checked with an independent determinate solve Bᵀ t = f
 (:func:`trussfe.kinematics.equilibrium_matrix`), not with the finite-element solver, so that a
@@ -35,7 +35,7 @@ def determinate_solve(s):
 def test_triangular_truss_geometry_appendix_b():
     """Appendix B node 3 (B) = (1.5625, 1.9516); lengths from Table 3.1 (L1 = 2, 0.5 + 2)."""
     s = M.triangular_truss()
-    assert s.node_ids == ["O2", "B", "O1"]
+    assert s.node_ids == ("O2", "B", "O1")
     assert_allclose(s.coords[s.node_index("B")], [1.5625, 1.9516], atol=5e-5)
     assert_allclose(s.lengths(), [2.0, 2.5], rtol=1e-12)
     assert_allclose(s.area, 1.1876e-4, rtol=5e-5)     # Appendix B "beam type 1 1.1876e-4"
@@ -67,7 +67,7 @@ def test_triangular_truss_options():
     assert_allclose(s.gravity, [0.0, -9.81])
     assert s.masses[s.node_index("B")] == 10.0
     sp = M.triangular_truss(split_active=True)
-    assert sp.member_ids == ["follower", "active_base", "leadscrew_tube"]
+    assert sp.member_ids == ("follower", "active_base", "leadscrew_tube")
     assert_allclose(sp.coords[sp.node_index("B")], M.triangular_truss().coords[1], rtol=1e-12)
     # C is 0.5 m from O2 along O2–B: (0.3125, 0.3903).  Appendix B prints node 2 as
     # (0.3128, 0.3903), 0.5002 m from O2 and 3e-4 m off the line O2–B: a misprint.
@@ -96,7 +96,7 @@ APPENDIX_D_CONNECT = [(2, 6), (1, 6), (1, 4), (3, 4), (3, 5), (2, 5), (4, 5), (5
 def test_double_octahedron_appendix_d():
     """Coordinates (printed to 4 decimals) and the Connect list of Appendix D, in order."""
     s = M.double_octahedron()
-    assert s.node_ids == [f"N{i}" for i in range(1, 10)]
+    assert s.node_ids == tuple(f"N{i}" for i in range(1, 10))
     # Appendix D truncates to 4 decimals (−0.351953 is printed −0.3519), hence 1e-4.
     assert_allclose(s.coords, APPENDIX_D, atol=1e-4)
     got = [tuple(sorted(c)) for c in (s.connectivity + 1).tolist()]
@@ -150,7 +150,7 @@ TABLES = {
                 vm=[3.4750e5, 1.0435e5]),
 }
 # Tables 5.3 and 5.4 are swapped: Table 5.3 ("first slewed position", M7/8 at maximum by the
-# text) holds the numbers of M7/8 at its minimum (DESIGN.md; checked below).
+# text) holds the numbers of M7/8 at its minimum (case lacy-table-5-3-as-captioned; checked below).
 TABLE_POSITION = {"5.2": "equilibrium", "5.3": "slew2", "5.4": "slew1"}
 
 
@@ -304,11 +304,11 @@ def test_shipped_models_static_equilibrium(name):
     """Every shipped model solves with ``trussfe static`` (truss bar model) and its reactions
     balance the applied loads (global statics), e.g. 3 × 46.0 N on the double octahedron."""
     from trussfe._resources import mesh_path
-    from trussfe.cli.cmd_static import analyse
+    from trussfe import api
     from trussfe.io.model_file import read_model
 
     s = read_model(mesh_path(name))
-    doc = analyse(mesh_path(name), bar_model="truss")
+    doc = api.static(mesh_path(name), bar_model="truss").to_dict()
     reactions = np.array([v["reaction"] for v in doc["nodes"].values() if "reaction" in v])
     weight = (s.masses.sum() + s.member_mass.sum()) * s.gravity
     applied = s.loads[:, : s.dim].sum(axis=0) + weight

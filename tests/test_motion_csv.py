@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Measured motion histories from CSV (issue item 2b, 11)."""
+"""Measured motion histories from CSV (docs/actuators.md) and their one-line errors."""
 import numpy as np
 import pytest
 from numpy.testing import assert_allclose

@@ -32,8 +32,7 @@ def _frame(is_beam=True, **kw):
                         is_beam=is_beam, supports={0: ["x", "y", "z", "rx", "ry", "rz"],
                                                    2: ["x", "y", "z"], 3: ["x", "y", "z"]},
                         **kw)
-    s.orientation[2] = (0.3, -0.5, 0.8)
-    return s
+    return s.with_member_data(orientation={2: (0.3, -0.5, 0.8)})
 
 
 # ------------------------------------------------------------------------ rotations
@@ -252,15 +251,16 @@ def test_three_controls_trace_the_same_3d_path_from_the_command_line(tmp_path):
     """``trussfe postcritical`` on the 3-D column with load, displacement and arc-length
     control: every point of the load- and displacement-controlled paths lies on the
     arc-length path (λ interpolated, monotone cubic, at the same top displacement: to 2e-4,
-    the interpolation error between arc-length points), and the JSON follows CONTRACT §3."""
+    the interpolation error between arc-length points), and the JSON follows docs/json.md."""
     from scipy.interpolate import PchipInterpolator
     from trussfe.cli import main
-    from trussfe.cli.cmd_postcritical import analyse
+    from trussfe import api
     model = str(__import__("trussfe._resources", fromlist=["mesh_path"])
                 .mesh_path("postcritical_euler_column_3d.toml"))
-    docs = {c: analyse(model, control=c, max_load_factor=1.2, **kw) for c, kw in (
-        ("arc-length", dict(steps=150, step=1e-3, max_step=4e-3)), ("load", dict(steps=12)),
-        ("displacement", dict(steps=20)))}
+    runs = (("arc-length", dict(steps=150, step=1e-3, max_step=4e-3)),
+            ("load", dict(steps=12)), ("displacement", dict(steps=20)))
+    docs = {c: api.postcritical(model, control=c, max_load_factor=1.2, **kw).to_dict()
+            for c, kw in runs}
 
     def top(doc):
         return (np.array([p["load_factor"] for p in doc["path"]]),
@@ -297,7 +297,7 @@ def test_pinned_beam_start_holds_its_axial_rotation():
     s2 = build_structure(X, [(0, 1), (1, 2), (1, 3)], section=SEC, material=MAT,
                          supports={0: "xyz", 2: "xyz", 3: "xyz"}, loads={1: list(-a)},
                          is_beam=np.array([True, False, False]))
-    s2.releases[0] = True                                   # both ends of the beam released
+    s2 = s2.with_member_data(releases={0: [True, True]})   # both ends of the beam released
     nl = NonlinearModel(s2, subdivisions=16)
     start = nl.b_slot[0, 0]
     assert nl.slot_additive.sum() == 1 and nl.slot_additive[start]

@@ -6,7 +6,7 @@ import pytest
 
 from trussfe._resources import mesh_path
 from trussfe.cli import main
-from trussfe.cli.cmd_postcritical import analyse
+from trussfe import api
 from trussfe.io.vtk import read_pvd
 
 DOME = str(mesh_path("postcritical_dome.toml"))
@@ -15,7 +15,7 @@ VON_MISES = str(mesh_path("postcritical_von_mises.toml"))
 
 def test_dome_from_the_command_line_to_a_mechanism(tmp_path, capsys):
     """The lattice dome runs to the mechanism and its equilibrium form; the JSON follows
-    CONTRACT §3 (path with load factors and displacements; events with kinds), the .pvd has
+    docs/json.md (path with load factors and displacements; events with kinds), the .pvd has
     one .vtu per path point with failed members marked, and the plot is a PNG."""
     out = tmp_path / "out"
     rc = main(["postcritical", DOME, "--json", str(out / "d.json"), "--vtk", str(out / "vtk"),
@@ -50,15 +50,17 @@ def test_dome_from_the_command_line_to_a_mechanism(tmp_path, capsys):
 
 
 def test_analyse_von_mises_contract_and_controls():
-    """analyse() returns the contract document; the three controls give the same limit load
-    (closed form 381.0871904 N) — displacement control to its step resolution."""
-    arc = analyse(VON_MISES)
+    """trussfe.postcritical(...).to_dict() is the contract document; the three controls give
+    the same limit load (closed form 381.0871904 N) — displacement control to its step
+    resolution."""
+    arc = api.postcritical(VON_MISES).to_dict()
     lim = [e["load_factor"] for e in arc["events"] if e["kind"] == "limit_point"]
     assert max(lim) == pytest.approx(381.0871904181, rel=1e-9)
-    disp = analyse(VON_MISES, control="displacement", step=0.002)
+    disp = api.postcritical(VON_MISES, control="displacement", step=0.002).to_dict()
     lim = [e["load_factor"] for e in disp["events"] if e["kind"] == "limit_point"]
     assert max(lim) == pytest.approx(381.0871904181, rel=1e-9)
-    load = analyse(VON_MISES, control="load", max_load_factor=500.0, steps=50)
+    load = api.postcritical(VON_MISES, control="load", max_load_factor=500.0,
+                            steps=50).to_dict()
     assert load["termination"].startswith("path cannot be continued at load factor 381.0")
 
 

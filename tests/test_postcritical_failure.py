@@ -11,7 +11,7 @@ from trussfe.errors import InputError, MechanismError
 from trussfe.model.sections import Material, Section
 from trussfe.model.structure import build_structure
 from trussfe.nonlinear import NonlinearModel, build_failure_laws, follow_path
-from trussfe.nonlinear.failure import parse_failure_table
+from trussfe.io.extension_tables import parse_failure_table
 
 A, E, FY = 1e-4, 2e11, 2.5e8
 SEC = Section(name="s", area=A, Iy=1e-8, Iz=1e-8, J=2e-8, c=0.01)
@@ -169,7 +169,9 @@ def test_load_control_stops_at_the_limit_point_and_says_why():
                         section=Section(name="b", area=1e-4), material=Material(
                             name="m", E=1e10, G=4e9, density=0.0, yield_strength=math.nan),
                         supports={0: "xy", 2: "xy"}, loads={1: [0.0, -1.0]})
-    s.supports[1, 0] = True
+    supports = np.array(s.supports)
+    supports[1, 0] = True
+    s = s.with_supports(supports)
     r = follow_path(NonlinearModel(s), "load", steps=100, step=10.0, max_load_factor=500.0,
                     monitor=3)
     assert r.termination.startswith("path cannot be continued at load factor 381.0")

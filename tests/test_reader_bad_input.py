@@ -121,7 +121,7 @@ def test_good_model_reads(tmp_path):
     path = tmp_path / "m.toml"
     path.write_text(GOOD, encoding="utf-8")
     s = read_model(path)
-    assert s.member_ids == ["AB", "BC"] and s.dim == 2
+    assert s.member_ids == ("AB", "BC") and s.dim == 2
 
 
 def test_missing_and_undecodable_file(tmp_path):

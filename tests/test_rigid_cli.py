@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""``trussfe simulate`` end to end, and the one-line errors for bad input (issue item 11)."""
+"""``trussfe simulate`` end to end, and the one-line errors for bad input."""
 import json
 
 import numpy as np
@@ -8,12 +8,18 @@ from numpy.testing import assert_allclose
 
 from trussfe._resources import mesh_path
 from trussfe.cli import main
-from trussfe.cli.cmd_simulate import analyse
 from trussfe.errors import AnalysisError, InputError
 from trussfe.io.model_file import read_model
 from trussfe.rigid.motion import Motion, load_motion
 from trussfe.rigid.reproductions import triangular_truss
 from trussfe.rigid.simulate import simulate
+from trussfe import api
+
+
+def analyse(model, **options):
+    """The ``simulate`` JSON document through the Python API."""
+    return api.simulate(model, **options).to_dict()
+
 
 MODEL = "triangular_truss_motion_active.toml"
 

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Lacy's double-octahedral bay (seed 002, chapter 5, Tables 5.2–5.4) with the rigid model."""
+"""Lacy's double-octahedral bay (1991, chapter 5, Tables 5.2–5.4) with the rigid model."""
 import numpy as np
 import pytest
 from numpy.testing import assert_allclose
@@ -24,7 +24,7 @@ def tables():
 
 @pytest.mark.parametrize("key", list(TABLES))
 def test_tables_5_2_to_5_4(tables, key):
-    """With 44.498 N per top node, 1.1079 m and Tables 5.3/5.4 swapped (DESIGN.md), every value
+    """With 44.498 N per top node, 1.1079 m and Tables 5.3/5.4 swapped (docs/model-format.md), every
     agrees to 1e-4 relative (the thesis prints 5–6 digits of a geometry rounded to 0.1 mm)."""
     react, m6, m19, vm6, vm19 = TABLES[key]
     r = tables[key]

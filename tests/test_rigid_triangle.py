@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Lacy's triangular truss (seed 002, chapters 2–3, Appendix A) with the rigid-body model."""
+"""Lacy's triangular truss (1991, chapters 2–3, Appendix A) with the rigid-body model."""
 import numpy as np
 import pytest
 from numpy.testing import assert_allclose
@@ -83,7 +83,7 @@ def test_table_3_3_buckling(base):
 
 def test_forty_kg_variant():
     """Section 3.5 and Table 3.3 with 40 kg: static max 1.0296e7, motion-induced 1.4617e6;
-    compressions 1115.1 / 336.2 N printed, 1114.96 / 336.07 N recomputed (DESIGN.md)."""
+    compressions 1115.1 / 336.2 N printed, 1114.96 / 336.07 N recomputed (checked here)."""
     r = base_simulation(mass=40.0)
     assert_allclose(r["follower"]["static_max"], 1.0296e7, rtol=5e-5)
     assert_allclose(r["follower"]["motion_induced_max"], 1.4617e6, rtol=5e-5)

@@ -10,11 +10,16 @@ from numpy.testing import assert_allclose
 
 import trussfe.rigid.actuator  # noqa: F401  (registers [actuators])
 from trussfe.cli import main
-from trussfe.cli.cmd_actuators import analyse as actuators_analyse
-from trussfe.cli.cmd_simulate import analyse
 from trussfe.errors import InputError
 from trussfe.io.model_file import read_model
 from trussfe.rigid.motion import load_motion
+from trussfe import api
+
+
+def analyse(model, **options):
+    """The ``simulate`` JSON document through the Python API."""
+    return api.simulate(model, **options).to_dict()
+
 
 MESHES = Path(__file__).resolve().parents[1] / "meshes"
 BAY = str(MESHES / "double_octahedron_actuators.toml")
@@ -52,7 +57,7 @@ def test_actuators_command_honours_steps_for_a_rotation(tmp_path):
     for a in doc["actuators"].values():
         k = a["motor_voltage"]["time"] / (5.5 / 12)
         assert abs(k - round(k)) < 1e-9
-    assert doc == actuators_analyse(BAY, ROTATION, 12)
+    assert doc == api.actuators(BAY, motion=ROTATION, steps=12).to_dict()
 
 
 def test_steps_refused_for_sampled_motions(tmp_path):
@@ -93,8 +98,7 @@ def test_steps_sets_a_third_order_motion():
 def test_sections_and_scheme_options():
     """--sections k gives k sections (positions 0 … L_t from the end node); --scheme thesis
     reaches the thesis scheme (its first-step angular rates are zero, Lacy Appendix A)."""
-    from trussfe.cli.cmd_simulate import _simulate
-    r = _simulate(TRIANGLE, TRIANGLE_MOTION, sections=3, scheme="thesis")
+    r = api.simulate(TRIANGLE, motion=TRIANGLE_MOTION, sections=3, scheme="thesis").solution
     assert r.stresses.von_mises.shape[2] == 3
     assert r.options["scheme"] == "thesis"
     assert_allclose(r.kinematics.omega[0], 0.0, atol=0)

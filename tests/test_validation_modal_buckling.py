@@ -21,8 +21,9 @@ def _compute(case: dict, path) -> dict:
     if "python" in c:
         mod, fn = c["python"].split(":")
         return getattr(importlib.import_module(mod), fn)()
-    cmd = importlib.import_module(f"trussfe.cli.cmd_{c['analysis']}")
-    return cmd.analyse((path.parent / c["model"]).resolve(), **c.get("options", {}))
+    from trussfe import api
+    return api.ANALYSES[c["analysis"]]((path.parent / c["model"]).resolve(),
+                                       **c.get("options", {})).to_dict()
 
 
 @pytest.mark.parametrize("path", CASES, ids=[p.stem for p in CASES])

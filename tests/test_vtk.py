@@ -160,7 +160,7 @@ def test_static_fields_along_members(tmp_path):
     s = build_structure([[0, 0], [2, 0], [2, -1]], [[0, 1], [1, 2]], section=sec, material=mat,
                         supports={0: "xy", 2: "xy"}, gravity=[0.0, -9.81],
                         is_beam=[True, False])
-    s.releases[0] = [True, True]                      # member 0: pinned beam, 8 elements
+    s = s.with_member_data(releases={0: [True, True]})   # member 0: pinned beam, 8 elements
     r = solve_static(s, subdivisions=8)
     files = write_static(tmp_path / "static.vtu", r)
     assert [f.name for f in files] == ["static.vtu", "static_stations.vtu"]

@@ -3,7 +3,17 @@
 
 One :class:`Structure` is read by three solver families: kinematics and mechanisms
 (:mod:`trussfe.kinematics`), the rigid-body dynamic force model (:mod:`trussfe.rigid`) and
-finite elements (:mod:`trussfe.fem`).
+finite elements (:mod:`trussfe.fem`).  The Python API (:mod:`trussfe.api`, docs/python.md)
+has one function per analysis, available here::
+
+    import trussfe
+    model = trussfe.read_model("meshes/triangular_truss_static.toml")
+    result = trussfe.static(model)          # result.axial_force, result.to_dict(), ...
+
+``static``, ``modes``, ``buckling``, ``simulate``, ``actuators``, ``elastic``, ``transient``,
+``mechanism``, ``trace``, ``postcritical`` and ``validate`` are imported on first use, so that
+``import trussfe`` stays light.  ``trussfe.elastic`` and ``trussfe.validate`` are also the
+subpackages of those names; calling them runs the analysis.
 """
 from importlib.metadata import PackageNotFoundError, version as _version
 
@@ -17,5 +27,26 @@ from .io.model_file import read_model  # noqa: E402
 from .model.sections import Material, Section  # noqa: E402
 from .model.structure import Structure, build_structure  # noqa: E402
 
+#: Analyses of the Python API, imported from :mod:`trussfe.api` on first use.
+_API = ("static", "modes", "buckling", "simulate", "actuators", "transient", "mechanism",
+        "trace", "postcritical", "model_from_dict")
+#: Subpackages that are callable as the analysis of the same name.
+_CALLABLE_PACKAGES = ("elastic", "validate")
+
 __all__ = ["AnalysisError", "InputError", "MechanismError", "TrussfeError", "Material",
-           "Section", "Structure", "build_structure", "read_model", "__version__"]
+           "Section", "Structure", "build_structure", "read_model", "__version__",
+           *_API, *_CALLABLE_PACKAGES]
+
+
+def __getattr__(name: str):
+    if name in _API:
+        from . import api
+        return getattr(api, name)
+    if name in _CALLABLE_PACKAGES:
+        import importlib
+        return importlib.import_module(f"{__name__}.{name}")
+    raise AttributeError(f"module 'trussfe' has no attribute '{name}'")
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Command line: ``trussfe COMMAND MODEL [options]`` (CONTRACT.md §2).
+"""Command line: ``trussfe COMMAND MODEL [options]`` (docs/cli.md).
 
 Each command lives in a module ``trussfe/cli/cmd_<name>.py`` that defines
 ``register(subparsers)``; the parser it adds sets ``func`` to a callable taking the parsed

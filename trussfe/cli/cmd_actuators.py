@@ -5,16 +5,14 @@ Runs the rigid-body force analysis (as ``simulate``) and summarises, for every a
 ``[actuators]`` table, the self-locking check (Lacy eq. 2.45), the gains (eq. 3.1 when the
 gearhead gain is selected), and the peak force, motor speed, torque, current and voltage with
 their times, with and without leadscrew friction, and the flags (e.g. a voltage above the
-motor's maximum, Lacy section 5.7).  Importing this module registers the ``[actuators]`` table.
+motor's maximum, Lacy section 5.7).
 """
 from __future__ import annotations
 
 import argparse
 
-import numpy as np
-
+from .. import api
 from ..io.output import write_json
-from ..rigid import actuator as _actuator  # noqa: F401  (registers [actuators])
 from . import options as opt
 
 
@@ -31,51 +29,8 @@ def register(subparsers) -> None:
     p.set_defaults(func=_run)
 
 
-def _peak(t: np.ndarray, x: np.ndarray) -> dict:
-    k = int(np.argmax(np.abs(x)))
-    return {"value": float(x[k]), "time": float(t[k])}
-
-
-def analyse(model_path, motion=None, steps=None, **options) -> dict:
-    """Summary of the actuator and motor demands (JSON document of ``--json``).
-
-    Returns
-    -------
-    dict
-        ``{"units": "SI", "command": "actuators", "model": name, "actuators": {id: {...}}}``
-        with, per actuator, ``self_locking``, ``self_locking_limit``, ``leadscrew_gain``,
-        ``gearhead_gain``, ``gearhead_gain_selected``, ``convention``, peaks ``force``,
-        ``motor_speed``, ``motor_torque``, ``motor_current``, ``motor_voltage`` and
-        ``motor_voltage_frictionless`` (``{"value", "time"}``) and ``flags``.
-    """
-    from ..rigid.actuator import actuators_of
-    from .cmd_simulate import _simulate
-
-    res = _simulate(model_path, motion, steps, **options)
-    s = res.structure
-    t = res.time
-    out = {}
-    for act in actuators_of(s):
-        h = res.actuators.get(act.name)
-        if h is None:
-            continue
-        out[act.name] = {
-            "self_locking": bool(act.self_locking),
-            "self_locking_limit": act.self_locking_limit,
-            "leadscrew_gain": act.leadscrew_gain,
-            "gearhead_gain": float(h["gearhead_gain"]),
-            "gearhead_gain_selected": bool(h["gearhead_gain_selected"]),
-            "convention": act.convention,
-            **{k: _peak(t, np.asarray(h[k])) for k in
-               ("force", "motor_speed", "motor_torque", "motor_current", "motor_voltage",
-                "motor_voltage_frictionless")},
-            "flags": list(h["flags"]),
-        }
-    return {"units": "SI", "command": "actuators", "model": s.name, "actuators": out}
-
-
 def _run(args: argparse.Namespace) -> int:
-    doc = analyse(args.model, args.motion, args.steps)
+    doc = api.actuators(args.model, motion=args.motion, steps=args.steps).to_dict()
     if args.json:
         write_json(args.json, doc)
     for aid, a in doc["actuators"].items():

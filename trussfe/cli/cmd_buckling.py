@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 """``trussfe buckling MODEL [--count N] [--bar-model pinned-beam|truss] [--subdivisions K]
 [--json OUT] [--vtk DIR]``: linear buckling load factors about the static state
-(CONTRACT.md §2–4)."""
+(docs/cli.md, docs/json.md, docs/vtk.md)."""
 from __future__ import annotations
 
 import argparse
@@ -10,9 +10,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ..fem.buckling import BucklingResult, buckling_json, solve_buckling
+from .. import api
+from ..fem.buckling import BucklingResult
 from ..fem.discretisation import BAR_MODELS
-from ..io.model_file import read_model
 from ..io.output import write_json
 from ._modeshapes import write_modes_vtk
 from . import options as opt
@@ -35,20 +35,6 @@ def register(subparsers) -> None:
     p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the results as JSON")
     p.add_argument("--vtk", metavar="DIR", type=opt.output_dir, help="write DIR/buckling.pvd, a step per mode")
     p.set_defaults(func=_main)
-
-
-def run_buckling(model_path: str | Path, count: int = 4, bar_model: str = "pinned-beam",
-                 subdivisions: int | None = None) -> BucklingResult:
-    """Read a model file and compute its buckling load factors."""
-    structure = read_model(model_path)
-    return solve_buckling(structure, count=count, bar_model=bar_model,
-                          subdivisions=subdivisions)
-
-
-def analyse(model_path: str | Path, count: int = 4, bar_model: str = "pinned-beam",
-            subdivisions: int | None = None, **_ignored) -> dict:
-    """Buckling analysis of a model file; returns the CONTRACT.md §3 ``buckling`` document."""
-    return buckling_json(run_buckling(model_path, count, bar_model, subdivisions))
 
 
 def write_vtk(directory: str | Path, result: BucklingResult) -> list[Path]:
@@ -85,8 +71,10 @@ def _table(result: BucklingResult) -> str:
 
 
 def _main(args: argparse.Namespace) -> int:
-    result = run_buckling(args.model, args.count, args.bar_model, args.subdivisions)
-    doc = buckling_json(result)
+    res = api.buckling(args.model, count=args.count, bar_model=args.bar_model,
+                       subdivisions=args.subdivisions)
+    result = res.solution
+    doc = res.to_dict()
     if args.vtk:
         write_vtk(args.vtk, result)
     if args.json:

@@ -3,18 +3,13 @@
 from __future__ import annotations
 
 import argparse
-import logging
 from pathlib import Path
 
 import numpy as np
 
-from .. import rigid as _rigid  # noqa: F401  (registers [active_members])
-from ..errors import InputError
-from ..io.model_file import read_model
+from .. import api
 from ..io.output import write_json
 from . import options as opt
-
-log = logging.getLogger(__name__)
 
 
 def register(subparsers) -> None:
@@ -39,60 +34,11 @@ def register(subparsers) -> None:
     p.set_defaults(func=_run)
 
 
-def _elastic(model_path, motion=None, steps=None, scheme="exact", sections=7,
-             subdivisions=None):
-    from ..elastic.along_motion import simulate_elastic
-    from ..rigid.motion import load_motion
-
-    structure = read_model(model_path)
-    mot = None
-    if motion is not None:
-        beside = Path(model_path).parent / motion
-        if not Path(motion).is_file() and not Path(motion).is_absolute() and beside.is_file():
-            motion = beside
-        mot = load_motion(motion, structure, steps=steps)
-    elif steps is not None:
-        raise InputError("--steps", "needs --motion (without a motion the model is at rest)")
-    return simulate_elastic(structure, mot, scheme=scheme, n_sections=sections,
-                            subdivisions=subdivisions)
-
-
-def to_json(sim, resp, cmp) -> dict:
-    """The ``elastic`` JSON document (CONTRACT.md §3 style, one value per time step).
-
-    ``members[id]``: ``axial_force`` (FE, tube midpoint), ``strain`` (N/EA there),
-    ``rigid_axial_force``; ``nodes[id]``: ``displacement`` (elastic, from the rigid-body
-    position), ``reaction`` (supported nodes); ``comparison``: largest scaled FE − rigid
-    differences (:func:`trussfe.elastic.along_motion.compare_with_rigid`).
-    """
-    s = sim.structure
-    dim = s.dim
-    members = {mid: {"axial_force": resp.midpoint_axial_force[:, i].tolist(),
-                     "strain": resp.strain[:, i].tolist(),
-                     "rigid_axial_force": sim.midpoint_axial_force[:, i].tolist()}
-               for i, mid in enumerate(s.member_ids)}
-    nodes = {}
-    for i, nid in enumerate(s.node_ids):
-        d = {"displacement": resp.displacements[:, i].tolist()}
-        if s.supports[i, :dim].any():
-            d["reaction"] = resp.reactions[:, i].tolist()
-        nodes[nid] = d
-    return {"units": "SI", "command": "elastic", "model": s.name, "bar_model": "pinned-beam",
-            "subdivisions": resp.subdivisions, "time": sim.time.tolist(),
-            "members": members, "nodes": nodes, "comparison": cmp}
-
-
-def analyse(model_path, **options) -> dict:
-    """Run ``elastic`` and return its JSON document (options: ``motion``, ``steps``,
-    ``scheme``, ``sections``, ``subdivisions``)."""
-    return to_json(*_elastic(model_path, **options))
-
-
 def write_vtk(directory, sim, resp, stem: str = "elastic") -> Path:
-    """Two time series at the positions of the rigid motion (CONTRACT.md §4).
+    """Two time series at the positions of the rigid motion (docs/vtk.md).
 
     ``stem.pvd``: point data ``displacement`` (elastic), cell data ``axial_force`` (FE,
-    midpoint), ``strain``, ``rigid_axial_force``.  ``stem_stations.pvd``: every member as a
+    midpoint), ``strain``, ``axial_force_rigid``.  ``stem_stations.pvd``: every member as a
     polyline through its FE stations with point data ``axial_force``, ``shear_y``,
     ``shear_z``, ``moment_y``, ``moment_z`` (member axes, N and N·m).
     """
@@ -103,7 +49,7 @@ def write_vtk(directory, sim, resp, stem: str = "elastic") -> Path:
                "point_data": {"displacement": resp.displacements[k]},
                "cell_data": {"axial_force": resp.midpoint_axial_force[k],
                              "strain": resp.strain[k],
-                             "rigid_axial_force": sim.midpoint_axial_force[k]}}
+                             "axial_force_rigid": sim.midpoint_axial_force[k]}}
               for k, t in enumerate(sim.time))
     out = write_series(directory, s, frames, stem)
     names = {"axial_force": 0, "shear_y": 1, "shear_z": 2, "moment_y": 4, "moment_z": 5}
@@ -116,10 +62,11 @@ def write_vtk(directory, sim, resp, stem: str = "elastic") -> Path:
 
 
 def _run(args: argparse.Namespace) -> int:
-    sim, resp, cmp = _elastic(args.model, args.motion, args.steps, args.scheme, args.sections,
-                              args.subdivisions)
+    result = api.elastic(args.model, motion=args.motion, steps=args.steps, scheme=args.scheme,
+                         sections=args.sections, subdivisions=args.subdivisions)
+    sim, resp, cmp = result.rigid, result.solution, result.comparison
     if args.json:
-        write_json(args.json, to_json(sim, resp, cmp))
+        write_json(args.json, result.to_dict())
     if args.vtk:
         write_vtk(args.vtk, sim, resp, stem=Path(args.model).stem)
     k = int(np.argmax(np.abs(resp.strain).max(axis=0)))

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 """``trussfe modes MODEL [--count N] [--mass consistent|lumped] [--bar-model ...]
 [--subdivisions K] [--json OUT] [--vtk DIR]``: natural frequencies and mode shapes
-(CONTRACT.md §2–4)."""
+(docs/cli.md, docs/json.md, docs/vtk.md)."""
 from __future__ import annotations
 
 import argparse
@@ -9,8 +9,8 @@ import sys
 from pathlib import Path
 
 from ..fem.discretisation import BAR_MODELS
-from ..fem.modal import MASS_KINDS, ModalResult, modes_json, solve_modes
-from ..io.model_file import read_model
+from .. import api
+from ..fem.modal import MASS_KINDS, ModalResult
 from ..io.output import write_json
 from ._modeshapes import write_modes_vtk
 from . import options as opt
@@ -35,20 +35,6 @@ def register(subparsers) -> None:
     p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the results as JSON")
     p.add_argument("--vtk", metavar="DIR", type=opt.output_dir, help="write DIR/modes.pvd, a step per mode")
     p.set_defaults(func=_main)
-
-
-def run_modes(model_path: str | Path, count: int = 6, mass: str = "consistent",
-              bar_model: str = "truss", subdivisions: int | None = None) -> ModalResult:
-    """Read a model file and compute its modes."""
-    structure = read_model(model_path)
-    return solve_modes(structure, count=count, mass=mass, bar_model=bar_model,
-                       subdivisions=subdivisions)
-
-
-def analyse(model_path: str | Path, count: int = 6, mass: str = "consistent",
-            bar_model: str = "truss", subdivisions: int | None = None, **_ignored) -> dict:
-    """Modal analysis of a model file; returns the CONTRACT.md §3 ``modes`` document."""
-    return modes_json(run_modes(model_path, count, mass, bar_model, subdivisions))
 
 
 def write_vtk(directory: str | Path, result: ModalResult) -> list[Path]:
@@ -81,8 +67,10 @@ def _table(result: ModalResult) -> str:
 
 
 def _main(args: argparse.Namespace) -> int:
-    result = run_modes(args.model, args.count, args.mass, args.bar_model, args.subdivisions)
-    doc = modes_json(result)
+    res = api.modes(args.model, count=args.count, mass=args.mass, bar_model=args.bar_model,
+                    subdivisions=args.subdivisions)
+    result = res.solution
+    doc = res.to_dict()
     if args.vtk:
         write_vtk(args.vtk, result)
     if args.json:

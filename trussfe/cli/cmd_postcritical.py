@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 """``trussfe postcritical MODEL [--control load|displacement|arc-length] [--steps N]
 [--json OUT] [--vtk DIR] [--plot PNG] ...``: geometrically nonlinear path with member failure
-(CONTRACT.md §2–4).
+(docs/cli.md, docs/json.md, docs/vtk.md).
 
 The model's ``[loads]`` are the reference load pattern scaled by the load factor λ; failure
 laws come from its ``[failure]`` table and analysis settings from ``[postcritical]`` (options
@@ -9,21 +9,17 @@ given here override them).
 """
 from __future__ import annotations
 
-import logging
 import sys
 from pathlib import Path
 
 import numpy as np
 
-from ..errors import InputError
-from ..io.model_file import read_model
-from ..io.output import atomic_path, write_json
-from ..nonlinear.analysis import result_document, run_postcritical
+from .. import api
+from ..io.output import write_json
 from ..nonlinear.model import BAR_MODELS
 from ..nonlinear.path import CONTROLS, PathResult
+from ..nonlinear.plot import write_plot
 from . import options as opt
-
-log = logging.getLogger(__name__)
 
 
 def register(subparsers) -> None:
@@ -59,36 +55,6 @@ def register(subparsers) -> None:
     p.set_defaults(func=_main)
 
 
-def _options(args) -> dict:
-    for name in ("steps", "subdivisions"):
-        v = getattr(args, name)
-        if v is not None and v < 1:
-            raise InputError(f"--{name}", f"must be a positive integer, got {v}")
-    for name in ("step", "max_load_factor", "max_displacement"):
-        v = getattr(args, name)
-        if v is not None and not (np.isfinite(v) and v > 0):
-            raise InputError(f"--{name.replace('_', '-')}", f"must be positive, got {v}")
-    if args.imperfection is not None and not (np.isfinite(args.imperfection)
-                                              and args.imperfection >= 0):
-        raise InputError("--imperfection", f"must not be negative, got {args.imperfection}")
-    return dict(control=args.control, steps=args.steps, step=args.step,
-                max_load_factor=args.max_load_factor, max_displacement=args.max_displacement,
-                monitor=args.monitor, bar_model=args.bar_model,
-                subdivisions=args.subdivisions, imperfection=args.imperfection,
-                branch=args.branch)
-
-
-def run(model_path: str | Path, **options) -> PathResult:
-    """Read a model file and follow its path (options as the command's, ``None`` = default)."""
-    structure = read_model(model_path)
-    return run_postcritical(structure, **options)
-
-
-def analyse(model_path: str | Path, **options) -> dict:
-    """Post-critical analysis of a model file; returns the CONTRACT.md §3 document."""
-    return result_document(run(model_path, **options))
-
-
 def write_vtk(directory: str | Path, result: PathResult) -> Path:
     """The path as ``DIR/<model>_path.pvd``: one ``.vtu`` per path point, the pvd time being
     the point index; point data ``displacement``; cell data ``axial_force`` and ``failed``
@@ -118,46 +84,14 @@ def write_vtk(directory: str | Path, result: PathResult) -> Path:
     return write_series(directory, s, frames, name)
 
 
-def write_plot(path: str | Path, result: PathResult) -> None:
-    """Load factor against the monitored displacement, events marked; written atomically."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    s = result.model.structure
-    node, axis = divmod(result.monitor, s.dim)
-    lam = result.load_factors
-    u = result.displacement()
-    eq = np.array([p.stage == "equilibrium" for p in result.path])
-    fig, ax = plt.subplots(figsize=(6.4, 4.4))
-    ax.plot(u[eq], lam[eq], ".-", lw=1.2, ms=3, label="equilibrium path")
-    if (~eq).any():
-        j = np.flatnonzero(~eq)
-        j = np.concatenate([[j[0] - 1], j])              # from the hand-over state
-        ax.plot(u[j], lam[j], "--", color="0.5", label="mechanism motion (λ held)")
-    marks = {"limit_point": ("o", "limit point"), "bifurcation": ("s", "bifurcation"),
-             "buckling": ("v", "buckling"), "yield": ("^", "yield"),
-             "fracture": ("x", "fracture"), "mechanism": ("*", "mechanism")}
-    seen = set()
-    for e in result.events:
-        if e.kind in marks and 0 <= e.point < len(result.path):
-            mk, lab = marks[e.kind]
-            ax.plot(u[e.point], result.path[e.point].load_factor, mk, ms=8, mfc="none",
-                    color="C3", label=None if lab in seen else lab)
-            seen.add(lab)
-    ax.set_xlabel(f"displacement of node {s.node_ids[node]}, {'xyz'[axis]} (m)")
-    ax.set_ylabel("load factor λ")
-    ax.set_title(s.name)
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    with atomic_path(path) as tmp:
-        fig.savefig(tmp, dpi=120, format="png")
-    plt.close(fig)
-
-
 def _main(args) -> int:
-    result = run(args.model, **_options(args))
-    doc = result_document(result)
+    res = api.postcritical(args.model, control=args.control, steps=args.steps, step=args.step,
+                           max_load_factor=args.max_load_factor,
+                           max_displacement=args.max_displacement, monitor=args.monitor,
+                           bar_model=args.bar_model, subdivisions=args.subdivisions,
+                           imperfection=args.imperfection, branch=args.branch)
+    result = res.solution
+    doc = res.to_dict()
     if args.json:
         write_json(args.json, doc)
     if args.vtk:

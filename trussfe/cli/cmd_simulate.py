@@ -7,9 +7,7 @@ import logging
 import sys
 from pathlib import Path
 
-from ..errors import InputError
-from ..io.model_file import read_model
-from .. import rigid as _rigid  # noqa: F401  (registers [active_members])
+from .. import api
 from ..io.output import write_json
 from . import options as opt
 
@@ -37,40 +35,14 @@ def register(subparsers) -> None:
     p.set_defaults(func=_run)
 
 
-def _simulate(model_path, motion=None, steps=None, scheme="exact", sections=7, progress=False):
-    from ..rigid.motion import load_motion
-    from ..rigid.simulate import simulate
-
-    structure = read_model(model_path)
-    mot = None
-    if motion is not None:
-        # A relative motion path that does not exist here is looked up beside the model.
-        beside = Path(model_path).parent / motion
-        if not Path(motion).is_file() and not Path(motion).is_absolute() and beside.is_file():
-            motion = beside
-        mot = load_motion(motion, structure, steps=steps)
-    elif steps is not None:
-        raise InputError("--steps", "needs --motion (without a motion the model is at rest)")
-    return simulate(structure, mot, scheme=scheme, n_sections=sections, progress=progress)
-
-
-def analyse(model_path, **options) -> dict:
-    """Run ``simulate`` and return the CONTRACT §3 JSON document.
-
-    Options: ``motion`` (path; a relative path not found from the working directory is taken
-    relative to the model file), ``steps``, ``scheme``, ``sections``.
-    """
-    from ..rigid.output import to_json
-    return to_json(_simulate(model_path, **options))
-
-
 def _run(args: argparse.Namespace) -> int:
-    from ..rigid.output import to_json, write_npz, write_plots, write_vtk
+    from ..rigid.output import write_npz, write_plots, write_vtk
 
-    res = _simulate(args.model, args.motion, args.steps, args.scheme, args.sections,
-                    progress=sys.stderr.isatty())
+    result = api.simulate(args.model, motion=args.motion, steps=args.steps, scheme=args.scheme,
+                          sections=args.sections, progress=sys.stderr.isatty())
+    res = result.solution
     if args.json:
-        write_json(args.json, to_json(res))
+        write_json(args.json, result.to_dict())
     if args.npz:
         write_npz(args.npz, res)
     if args.vtk:

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
 """``trussfe static MODEL [--bar-model truss|pinned-beam] [--subdivisions K]
-[--solver auto|superlu|pardiso] [--json OUT] [--vtk OUT.vtu]``: linear static finite-element analysis (CONTRACT.md §2–4)."""
+[--solver auto|superlu|pardiso] [--json OUT] [--vtk OUT.vtu]``: linear static finite-element analysis (docs/cli.md)."""
 from __future__ import annotations
 
 import argparse
@@ -9,11 +9,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import InputError
+from .. import api
 from ..fem.discretisation import BAR_MODELS
-from ..fem.linsolve import pardiso_available
-from ..fem.static import StaticResult, solve_static, static_json
-from ..io.model_file import read_model
+from ..fem.static import StaticResult
 from ..io.output import write_json
 from ..io.vtk import write_vtu as _write_vtu
 from . import options as opt
@@ -35,25 +33,6 @@ def register(subparsers) -> None:
     p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the results as JSON")
     p.add_argument("--vtk", metavar="OUT.vtu", type=opt.output_file, help="write the deformed-shape fields as VTU")
     p.set_defaults(func=_main)
-
-
-def run_static(model_path: str | Path, bar_model: str = "truss",
-               subdivisions: int | None = None, solver: str = "auto") -> StaticResult:
-    """Read a model file and solve it (errors name the file)."""
-    if subdivisions is not None and subdivisions < 1:
-        raise InputError("--subdivisions", f"must be a positive integer, got {subdivisions}")
-    structure = read_model(model_path)
-    if solver == "pardiso" and not pardiso_available():
-        raise InputError("--solver", "PARDISO is not available (pip install pypardiso); "
-                         "use --solver superlu")
-    return solve_static(structure, bar_model=bar_model, subdivisions=subdivisions,
-                        backend=solver)
-
-
-def analyse(model_path: str | Path, bar_model: str = "truss", subdivisions: int | None = None,
-            solver: str = "auto", **_ignored) -> dict:
-    """Static analysis of a model file; returns the CONTRACT.md §3 ``static`` document."""
-    return static_json(run_static(model_path, bar_model, subdivisions, solver))
 
 
 def write_vtu(path: str | Path, result: StaticResult) -> None:
@@ -114,8 +93,10 @@ def _table(result: StaticResult) -> str:
 
 
 def _main(args: argparse.Namespace) -> int:
-    result = run_static(args.model, args.bar_model, args.subdivisions, args.solver)
-    doc = static_json(result)
+    res = api.static(args.model, bar_model=args.bar_model, subdivisions=args.subdivisions,
+                     solver=args.solver)
+    result = res.solution
+    doc = res.to_dict()
     # all outputs are produced before any is renamed into place
     if args.vtk:
         write_vtu(args.vtk, result)

@@ -2,7 +2,7 @@
 """``trussfe trace MODEL --drive NODE:AXIS --step S --steps N``: finite-mechanism motion.
 
 Follows the motion of an inextensional bar-and-joint mechanism (Hortobágyi's algorithm) and
-reports every state, the bifurcation points and the limit points (CONTRACT.md §3, ``trace``).
+reports every state, the bifurcation points and the limit points (docs/json.md, ``trace``).
 """
 from __future__ import annotations
 
@@ -14,10 +14,8 @@ from typing import Callable, Iterator
 
 import numpy as np
 
-from ..errors import InputError
-from ..io.model_file import read_model
+from .. import api
 from ..io.output import atomic_path, write_json
-from ..kinematics.mechanism import trace_structure
 from . import options as opt
 
 
@@ -42,49 +40,6 @@ def register(subparsers) -> None:
     p.add_argument("--vtk", metavar="DIR", type=opt.output_dir, help="write every state as .vtu and a .pvd")
     p.add_argument("--plot", metavar="PNG", type=opt.output_file, help="plot the node trajectories")
     p.set_defaults(func=_run)
-
-
-def analyse(model_path: str, *, drive, step, steps: int, branch: int = 0,
-            tolerance: float = 1e-10, frozen: bool = False, vtk: str | None = None,
-            plot: str | None = None, structure=None, progress=None) -> dict:
-    """Trace a model file's mechanism; returns the JSON document of CONTRACT.md §3.
-
-    ``path``: one entry per state, ``{"parameter", "positions": {node: [..]}, "rank"}`` (and
-    ``iterations`` and ``residual``, beyond the contract); ``events``: bifurcation and limit
-    points with the step after which they were found.
-    """
-    s = read_model(model_path) if structure is None else structure
-    drives = [drive] if isinstance(drive, str) else list(drive)
-    steps_ = [step] if np.isscalar(step) else list(step)
-    if len(steps_) == 1 and len(drives) > 1:
-        steps_ = steps_ * len(drives)
-    if len(steps_) != len(drives):
-        raise InputError("--step", f"give one --step per --drive ({len(drives)} drives, "
-                                   f"{len(steps_)} steps)")
-    if not isinstance(steps, (int, np.integer)) or steps < 1:
-        raise InputError("--steps", f"must be a positive integer, got {steps!r}")
-    if branch < 0:
-        raise InputError("--branch", f"must be 0 or more, got {branch}")
-    r = trace_structure(s, drives, steps_ if len(steps_) > 1 else steps_[0], steps,
-                        branch=branch, tolerance=tolerance, newton=not frozen,
-                        progress=progress)
-    path = []
-    for k in range(r.coords.shape[0]):
-        entry = {"parameter": float(r.parameter[k]),
-                 "positions": {nid: r.coords[k, i].tolist() for i, nid in enumerate(s.node_ids)},
-                 "rank": int(r.rank[k]), "residual": float(r.residual[k])}
-        if k > 0:
-            entry["iterations"] = int(r.iterations[k - 1])
-        path.append(entry)
-    doc = {"units": "SI", "command": "trace", "model": s.name, "drive": drives,
-           "step": steps_, "steps": steps, "branch": branch, "path": path,
-           "events": r.events}
-    if vtk:
-        from ._mechanism_vtk import write_trace_vtk
-        write_trace_vtk(vtk, s, r)
-    if plot:
-        _plot(plot, s, r)
-    return doc
 
 
 def _plot(path: str, s, r) -> None:
@@ -146,9 +101,15 @@ def _progress_bar(steps: int) -> Iterator[Callable[[int], None] | None]:
 
 def _run(args: argparse.Namespace) -> int:
     with _progress_bar(args.steps) as tick:
-        doc = analyse(args.model, drive=args.drive, step=args.step, steps=args.steps,
-                      branch=args.branch, tolerance=args.tolerance, frozen=args.frozen,
-                      vtk=args.vtk, plot=args.plot, progress=tick)
+        result = api.trace(args.model, drive=args.drive, step=args.step, steps=args.steps,
+                           branch=args.branch, tolerance=args.tolerance, frozen=args.frozen,
+                           progress=tick)
+        doc = result.to_dict()
+        if args.vtk:
+            from ._mechanism_vtk import write_trace_vtk
+            write_trace_vtk(args.vtk, result.structure, result.solution)
+        if args.plot:
+            _plot(args.plot, result.structure, result.solution)
     if args.json:
         write_json(args.json, doc)
     ev = ", ".join(f"{e['kind']} at state {e['step']}" for e in doc["events"]) or "none"

@@ -3,18 +3,14 @@
 from __future__ import annotations
 
 import argparse
-import logging
 from pathlib import Path
 
 import numpy as np
 
-from .. import rigid as _rigid  # noqa: F401  (registers [active_members])
+from .. import api
 from ..errors import InputError
-from ..io.model_file import read_model
 from ..io.output import atomic_path, write_json
 from . import options as opt
-
-log = logging.getLogger(__name__)
 
 
 def register(subparsers) -> None:
@@ -43,58 +39,8 @@ def register(subparsers) -> None:
     p.set_defaults(func=_run)
 
 
-def _transient(model_path, motion, steps=None, dt=None, t_end=None, bar_model="pinned-beam",
-               subdivisions=None, update="per-step", damping=None):
-    from ..elastic.transient import transient_response
-    from ..rigid.motion import load_motion
-
-    structure = read_model(model_path)
-    beside = Path(model_path).parent / motion
-    if not Path(motion).is_file() and not Path(motion).is_absolute() and beside.is_file():
-        motion = beside
-    mot = load_motion(motion, structure, steps=steps)
-    return transient_response(structure, mot, bar_model=bar_model, k=subdivisions, dt=dt,
-                              t_end=t_end, damping=damping, update=update)
-
-
-def to_json(res) -> dict:
-    """The ``transient`` JSON document (CONTRACT §3 style, one value per time step)."""
-    s = res.structure
-    members = {}
-    for j, mid in enumerate(s.member_ids):
-        members[mid] = {
-            "axial_force": res.axial_force[:, j].tolist(),
-            "axial_force_quasi_static": res.axial_force_qs[:, j].tolist(),
-            "axial_force_rigid": res.axial_force_rigid[:, j].tolist(),
-            "moment": res.moment[:, j].tolist(),
-            "moment_quasi_static": res.moment_qs[:, j].tolist(),
-            "moment_rigid": res.moment_rigid[:, j].tolist()}
-    return {"units": "SI", "command": "transient", "model": s.name,
-            "time": res.time.tolist(), "members": members,
-            "nodes": {nid: {"displacement": res.displacement[:, i].tolist()}
-                      for i, nid in enumerate(s.node_ids)},
-            "departure": res.departure(),
-            "energy": {k: v.tolist() for k, v in res.energy.items()},
-            "energy_residual": res.energy_residual(),
-            "frequencies_hz": res.frequencies_hz.tolist(),
-            "options": {k: (list(v) if isinstance(v, tuple) else v)
-                        for k, v in res.options.items()}}
-
-
-def analyse(model_path, **options) -> dict:
-    """Run ``transient`` and return its JSON document.
-
-    Options: ``motion`` (required; a relative path not found from the working directory is
-    taken relative to the model file), ``steps``, ``dt``, ``t_end``, ``bar_model``,
-    ``subdivisions``, ``update``, ``damping``.
-    """
-    if "motion" not in options:
-        raise InputError("motion", "the transient analysis needs a motion file")
-    return to_json(_transient(model_path, **options))
-
-
 def write_vtk(directory, res, stem: str = "transient", every: int = 1) -> Path:
-    """The response as a time series at the positions of the rigid motion (CONTRACT.md §4).
+    """The response as a time series at the positions of the rigid motion (docs/vtk.md).
 
     ``stem.pvd``: point data ``displacement`` (elastic, dynamic) and
     ``displacement_quasi_static``; cell data ``axial_force``, ``axial_stress`` (N/A),
@@ -146,10 +92,13 @@ def _plot(path, res) -> None:
 def _run(args: argparse.Namespace) -> int:
     if args.vtk_every < 1:          # before a long analysis, not after it
         raise InputError("--vtk-every", f"must be a positive integer, got {args.vtk_every}")
-    res = _transient(args.model, args.motion, args.steps, args.dt, args.t_end, args.bar_model,
-                     args.subdivisions, args.update, args.damping)
+    result = api.transient(args.model, motion=args.motion, steps=args.steps, dt=args.dt,
+                           t_end=args.t_end, bar_model=args.bar_model,
+                           subdivisions=args.subdivisions, update=args.update,
+                           damping=args.damping)
+    res = result.solution
     if args.json:
-        write_json(args.json, to_json(res))
+        write_json(args.json, result.to_dict())
     if args.plot:
         _plot(args.plot, res)
     if args.vtk:

@@ -11,8 +11,8 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from .._resources import data_dir
-from ..validate import load_cases, run_cases, write_report
+from .. import api
+from ..api.validation import default_cases_dir
 from ..errors import InputError
 from . import options as opt
 
@@ -33,19 +33,14 @@ def register(subparsers) -> None:
     p.set_defaults(func=_main)
 
 
-def default_cases_dir() -> Path:
-    """The built-in case folder."""
-    return data_dir("validation") / "cases"
-
-
 def _main(args) -> int:
-    folder = Path(args.cases) if args.cases else default_cases_dir()
-    cases = load_cases(folder, args.cases_selected)
-    if not cases:
-        raise InputError("--cases", f"no validation case files (*.toml) in '{folder}'")
-    results = run_cases(cases, progress=not args.no_progress and sys.stderr.isatty())
-    md, page = write_report(results, args.out)
-    failed = [r for r in results if not r.passed]
+    run = api.validate(Path(args.cases) if args.cases else default_cases_dir(),
+                       case=args.cases_selected,
+                       progress=not args.no_progress and sys.stderr.isatty())
+    if not run.cases:
+        raise InputError("--cases", f"no validation case files (*.toml) in '{args.cases}'")
+    page = run.write_report(args.out)
+    results, failed = run.cases, run.failed
     for r in results:
         line = f"{r.status:5s}  {r.case.id}"
         if r.error:

@@ -7,3 +7,17 @@ configuration with gravity and the d'Alembert inertial loads of that motion: qua
 (member section forces compared with the rigid-body internal forces, member strains) and
 dynamically (the elastic vibration superposed on the prescribed motion).
 """
+import sys as _sys
+import types as _types
+
+
+class _CallablePackage(_types.ModuleType):
+    """This package, callable as the analysis of the same name: ``trussfe.elastic(...)`` is
+    :func:`trussfe.api.elastic`, while ``trussfe.elastic.<module>`` stays the package's."""
+
+    def __call__(self, *args, **kwargs):
+        from ..api import elastic as analysis
+        return analysis(*args, **kwargs)
+
+
+_sys.modules[__name__].__class__ = _CallablePackage

@@ -43,7 +43,7 @@ log = logging.getLogger(__name__)
 TABLE_5_5 = {"equilibrium": (5.8631, 5.9468), "slew1": (5.2094, 5.1829),
              "slew2": (6.8197, 7.1210)}
 #: Positions of Table 5.5: slew position 1 = M7/8 at its maximum (section 5.1's first slewed
-#: position); Tables 5.3/5.4 print these two swapped (DESIGN.md), Table 5.5 does not: its
+#: position); Tables 5.3/5.4 print these two swapped (docs/model-format.md), Table 5.5 does not: its
 #: strains follow the forces of M7/8 at the maximum for "slew position 1".
 TABLE_5_5_LENGTHS = {"equilibrium": DO_POSITIONS["table_5_2"],
                      "slew1": DO_POSITIONS["table_5_4"], "slew2": DO_POSITIONS["table_5_3"]}

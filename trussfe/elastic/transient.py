@@ -390,7 +390,7 @@ def transient_response(structure: Structure, motion: Motion, *, bar_model: str =
     motion : Motion
         Active-member histories (:mod:`trussfe.rigid.motion`).
     bar_model : {"pinned-beam", "truss"}
-        FE model of the bars (CONTRACT.md §2); pinned beams bend under their own distributed
+        FE model of the bars (docs/cli.md); pinned beams bend under their own distributed
         inertia and weight.
     k : int, optional
         Sub-elements per pinned-beam member (default 4).

@@ -58,16 +58,15 @@ log = logging.getLogger(__name__)
 
 
 def massless_active(structure: Structure) -> Structure:
-    """A copy of the structure whose active members carry no distributed mass.
+    """The structure with active members that carry no distributed mass.
 
     Their inertia enters through :func:`~trussfe.fem.modal.active_member_mass` (elastic part)
     and :func:`active_member_loads` (rigid motion) instead.
     """
-    s = structure.copy()
-    for a in active_members(structure):
-        s.materials[a.member] = dataclasses.replace(s.materials[a.member], density=0.0)
-    s.__dict__.pop("_prop_cache", None)
-    return s
+    mats = structure.materials
+    return structure.with_materials(
+        {a.member: dataclasses.replace(mats[a.member], density=0.0)
+         for a in active_members(structure)})
 
 
 def batch_structure(structure: Structure, coords: np.ndarray) -> Structure:

@@ -236,7 +236,7 @@ def solve_buckling(structure: Structure, count: int = 4, bar_model: str = "pinne
 
 
 def buckling_json(result: BucklingResult, command: str = "buckling") -> dict:
-    """The CONTRACT.md §3 ``buckling`` document.
+    """The ``buckling`` JSON document (docs/json.md, ``buckling``).
 
     ``load_factors`` ascending by absolute value (sign kept), ``critical_load_factor`` (the
     smallest positive one, ``null`` if none), ``modes[i]`` with ``load_factor`` and ``shape``

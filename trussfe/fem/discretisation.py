@@ -24,7 +24,7 @@ Global DOFs
   Its twist follows the joint's rotation when the joint has rotations and is zero otherwise
   (a pin-ended member cannot spin freely about its own axis).
 
-Bar models (CONTRACT.md §2)
+Bar models (docs/cli.md, ``--bar-model``)
 ---------------------------
 ``truss``: bars are axial-only two-node elements (``k = 1``) with P1 transverse fields that
 carry mass and geometric stiffness only; their self-weight is lumped half to each end node
@@ -1062,7 +1062,7 @@ def discretise(structure: Structure, bar_model: str = "truss",
     ----------
     structure : Structure
     bar_model : {"truss", "pinned-beam"}
-        How members of type ``bar`` are modelled (CONTRACT.md §2).
+        How members of type ``bar`` are modelled (docs/cli.md, ``--bar-model``).
     subdivisions : int, optional
         Sub-elements per frame member (default :data:`DEFAULT_FRAME_SUBDIVISIONS`).
 

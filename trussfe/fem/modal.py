@@ -12,7 +12,7 @@ factorisation of ``K − σM`` from :mod:`trussfe.fem.linsolve`, or densely for 
 Mass
 ----
 * member mass: consistent (``ρA`` with the element shape functions; a truss bar gives
-  ``ρAL/6 [[2, 1], [1, 2]]`` on every translation, CONTRACT.md §2) or lumped (``ρAL/2`` at the
+  ``ρAL/6 [[2, 1], [1, 2]]`` on every translation, docs/cli.md) or lumped (``ρAL/2`` at the
   ends of every element);
 * lumped nodal masses ``[masses]``;
 * active members (Lacy section 2.1, 4.7; ``[active_members]``): the active base (mass
@@ -135,10 +135,9 @@ def mass_matrix(fe: FEModel, kind: str = "consistent", include_nodal_masses: boo
     if not acts:
         return fe.mass(kind=kind, include_nodal_masses=include_nodal_masses)
     # The same topology with massless active members: DOF numbering is identical.
-    s = fe.structure.copy()
-    for a in acts:
-        s.materials[a.member] = dataclasses.replace(s.materials[a.member], density=0.0)
-    s.__dict__.pop("_prop_cache", None)
+    mats = fe.structure.materials
+    s = fe.structure.with_materials(
+        {a.member: dataclasses.replace(mats[a.member], density=0.0) for a in acts})
     fe0 = discretise(s, bar_model=fe.bar_model, subdivisions=fe.subdivisions)
     return (fe0.mass(kind=kind, include_nodal_masses=include_nodal_masses)
             + active_member_mass(fe)).tocsr()
@@ -484,7 +483,7 @@ def solve_modes(structure: Structure, count: int = 6, mass: str = "consistent",
 
 
 def modes_json(result: ModalResult, command: str = "modes") -> dict:
-    """The CONTRACT.md §3 ``modes`` document.
+    """The ``modes`` JSON document (docs/json.md, ``modes``).
 
     Besides ``frequencies_hz`` and ``modes[i].frequency_hz`` / ``shape`` (node id →
     mass-normalised translations, m·kg^-½), it gives ``rigid_modes`` (number of zero-frequency

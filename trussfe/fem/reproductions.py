@@ -5,7 +5,7 @@ files compare with their references.
 
 Sources are named in the case files: closed-form frequencies and Euler loads, Lacy's Table 3.3
 and section 5.8 allowables, and an independent dense assembly ``K = Bᵀ diag(EA/L) B`` from the
-compatibility matrix (Hortobágyi eq. 2; DESIGN.md) for the double-octahedral bay.
+compatibility matrix (Hortobágyi eq. 2) for the double-octahedral bay.
 """
 from __future__ import annotations
 
@@ -29,7 +29,7 @@ LEADSCREW_TUBE = Section.tube("leadscrew", 0.75 * INCH, 0.63 * INCH)
 #: Fixed members with Appendix D's area 9.0245e-5 m² (ID 0.62 in).
 FIXED_TUBE = Section.tube("fixed", 0.75 * INCH, 0.62 * INCH)
 
-#: Double-octahedral bay (DESIGN.md): base side, cross-longeron length (Appendix D
+#: Double-octahedral bay (docs/model-format.md): base side, cross-longeron length (Appendix D
 #: coordinates), active lengths at the equilibrium and the two slewed positions (1.1079 m is the
 #: short length that reproduces Tables 5.2–5.4; the thesis prints 1.1077 m).
 BASE_SIDE = 1.2192
@@ -112,7 +112,7 @@ def double_octahedron(active: tuple[float, float, float] = (ACTIVE_EQUILIBRIUM,)
     """The double-octahedral bay (9 nodes, 21 members as 18 bars + 3 active bars).
 
     Built at the symmetric position from the base side, cross-longeron length and active
-    length (DESIGN.md geometry), then moved to the active lengths ``active`` by the
+    length (docs/model-format.md), then moved to the active lengths ``active`` by the
     forward-position solver.  Base nodes pinned; ``top_mass`` on each top node.  Node ids
     ``B1..B3`` (base), ``M1..M3`` (midplane), ``T1..T3`` (top); active members ``A1..A3``
     (midplane triangle, ``A1`` = M1–M2).

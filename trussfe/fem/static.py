@@ -260,7 +260,7 @@ def solve_static(structure: Structure, bar_model: str = "truss",
 
 
 def static_json(result: StaticResult, command: str = "static") -> dict:
-    """The CONTRACT.md §3 ``static`` document.
+    """The ``static`` JSON document (docs/json.md, ``static``).
 
     ``nodes[id]``: ``displacement`` (translations), ``rotation`` (where the node has
     rotational DOFs), ``reaction`` (supported nodes: forces) and ``reaction_moment`` (where a

@@ -1,9 +1,10 @@
 # SPDX-License-Identifier: MIT
-"""Reader of trussfe model files (TOML, CONTRACT.md §1).
+"""Reader of trussfe model files (TOML, docs/model-format.md).
 
-Every check on user input lives here (or in the extension readers registered through
-:func:`register_table`), so that any input either becomes a :class:`~trussfe.model.Structure`
-or raises one :class:`~trussfe.errors.InputError` naming the file and the item.
+Every check on user input lives here (or in the extension-table readers of
+:mod:`trussfe.io.extension_tables`), so that any input either becomes a
+:class:`~trussfe.model.Structure` or raises one :class:`~trussfe.errors.InputError` naming the
+file and the item.  Reading a model imports the model layer only, none of the analyses.
 """
 from __future__ import annotations
 
@@ -12,13 +13,14 @@ import difflib
 import logging
 import math
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
 import numpy as np
 
 from ..budget import check_input_file
 from ..errors import InputError, TrussfeError, one_line
 from . import toml_text
+from .extension_tables import TABLES as EXTENSION_TABLES
 from ..model.ids import IdIndex, IdRange, id_index
 from ..model.sections import Material, Section
 from ..model.structure import DOF_NAMES, Structure
@@ -32,38 +34,6 @@ _source: contextvars.ContextVar[str] = contextvars.ContextVar("trussfe_model_sou
 #: Top-level tables of the core format.
 CORE_TABLES = ("model", "materials", "sections", "nodes", "members", "supports", "loads",
                "masses", "groups")
-
-#: Extension tables: name -> parser(raw_table, structure, base_dir) -> object stored in
-#: ``structure.extensions[name]``.  Parsers raise InputError with the item inside the table.
-_EXTENSIONS: dict[str, Callable[[Any, Structure, Path], Any]] = {}
-
-
-def register_table(name: str, parser: Callable[[Any, Structure, Path], Any]) -> None:
-    """Register the reader of an extension table (e.g. ``active_members``).
-
-    Parameters
-    ----------
-    name : str
-        Top-level table name.
-    parser : callable
-        ``parser(raw, structure, base_dir)``; its return value is stored in
-        ``structure.extensions[name]``.
-    """
-    _EXTENSIONS[name] = parser
-
-
-#: Modules that register extension tables; imported before a model is parsed so that any
-#: entry point (CLI command, Python API, validation case) reads every table.
-_EXTENSION_MODULES = ("trussfe.rigid.active", "trussfe.rigid.actuator",
-                      "trussfe.nonlinear.analysis")
-
-
-def _load_extensions() -> None:
-    import importlib
-
-    for name in _EXTENSION_MODULES:
-        importlib.import_module(name)
-
 
 #: Most valid names a message lists; a larger set is summarised by its nearest few and a count.
 MAX_LISTED = 8
@@ -275,8 +245,7 @@ def parse_model(data: dict, base_dir: Path | str = ".", source: str = "") -> Str
 
 
 def _parse_model(data: dict, base_dir: Path, source: str) -> Structure:
-    _load_extensions()
-    allowed = CORE_TABLES + tuple(_EXTENSIONS)
+    allowed = CORE_TABLES + tuple(EXTENSION_TABLES)
     for key in data:
         if key not in allowed:
             raise InputError(f"[{key}]", f"unknown table '{key}'{_suggest(key, allowed)}")
@@ -345,15 +314,17 @@ def _parse_model(data: dict, base_dir: Path, source: str) -> Structure:
         i = _node_ref(k, node_index, "masses")
         masses[i] = _number(v, f"masses.{k}", nonneg=True)
 
+    for a in (coords, conn, supports, loads, masses, beam, rel, orient):
+        a.flags.writeable = False           # the reader's own arrays: the model need not copy
     s = Structure(name=name, dim=dim, node_ids=node_ids, coords=coords, member_ids=member_ids,
                   connectivity=conn, sections=secs, materials=mats, is_beam=beam, releases=rel,
                   supports=supports, loads=loads, masses=masses, gravity=gravity,
-                  orientation=orient, source=source)
-    if group_code is not None:
-        _share_property_groups(s, group_code)
-    for key, parser in _EXTENSIONS.items():
+                  orientation=orient, source=source, member_groups=group_code)
+    # each table is read against the model holding the ones before it (actuators need the
+    # active members)
+    for key, reader in EXTENSION_TABLES.items():
         if key in data:
-            s.extensions[key] = parser(data[key], s, base_dir)
+            s = s.with_extensions(**{key: reader(data[key], s, base_dir)})
     return s
 
 
@@ -383,20 +354,6 @@ def _loads_fast(table: dict, node_index: dict, loads: np.ndarray, dim: int) -> b
         return False
     np.add.at(loads[:, :width], rows, arr)
     return True
-
-
-def _share_property_groups(s: Structure, code: np.ndarray) -> None:
-    """Hand the structure the member grouping the mesh reader already knows.
-
-    ``Structure`` finds which members share a section or material object by their ids
-    (:meth:`Structure._prop`), a Python pass over every member; the cell-set code of a mesh
-    member gives the same grouping from one ``np.unique``.  Members with equal codes share
-    their section and material objects (``_mesh_geometry``), so the cached grouping is exact.
-    """
-    _, first, inverse = np.unique(code, return_index=True, return_inverse=True)
-    cache = s.__dict__.setdefault("_prop_cache", {})
-    for objs in (s.sections, s.materials):
-        cache[("_groups", id(objs), len(objs))] = (first, inverse.reshape(-1))
 
 
 def _bad_coords(k, v, dim):
@@ -550,8 +507,8 @@ def _mesh_geometry(mesh_name, base_dir, dim, data, sections, materials):
     # mesh items are named by their index: ids made on demand, not a string per item
     node_ids = IdRange(coords.shape[0])
     member_ids = IdRange(m)
-    return (node_ids, coords, member_ids, conn, sec_obj[code].tolist(),
-            mat_obj[code].tolist(), beam_of[code], rel_of[code], orient_of[code], code)
+    return (node_ids, coords, member_ids, conn, tuple(sec_obj[code].tolist()),
+            tuple(mat_obj[code].tolist()), beam_of[code], rel_of[code], orient_of[code], code)
 
 
 def _read_mesh(path: Path):
@@ -596,7 +553,7 @@ def read_model(path: str | Path) -> Structure:
     Parameters
     ----------
     path : path
-        TOML model file (CONTRACT.md §1).
+        TOML model file (docs/model-format.md).
 
     Returns
     -------

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Writer of trussfe model files (TOML, CONTRACT.md §1): the inverse of
+"""Writer of trussfe model files (TOML, docs/model-format.md): the inverse of
 :func:`trussfe.io.model_file.read_model`.
 
 ``read_model(write_model(s, path))`` gives back the same nodes, members, sections, materials,

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""VTK output through meshio (CONTRACT.md §4): results that open in ParaView without plugins.
+"""VTK output through meshio (docs/vtk.md): results that open in ParaView without plugins.
 
 Members are ``line`` cells between the structure's nodes; results on nodes are point data,
 results on members are cell data.  Names are snake_case and values SI:

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 """VTK files of analysis results: a static solution with the fields along its members.
 
-:func:`write_static` writes the CONTRACT.md §4 file of a :class:`~trussfe.fem.StaticResult`
+:func:`write_static` writes the VTK file (docs/vtk.md) of a :class:`~trussfe.fem.StaticResult`
 and, beside it, ``<name>_stations.vtu`` with the section forces, von Mises stresses and
 displacements at every station of every member (members subdivided by the pinned-beam model or
 beams show their bending along their length).

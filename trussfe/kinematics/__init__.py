@@ -5,8 +5,8 @@ from .compatibility import compatibility_matrix, equilibrium_matrix
 
 __all__ = ["AssemblyResult", "compatibility_matrix", "equilibrium_matrix", "solve_positions",
            "solve_structure_positions"]
-from .mechanism import (TraceResult, compatibility_error, hortobagyi_step, pivoted_partition,
-                        trace_mechanism, trace_structure)
+from .mechanism import compatibility_error, hortobagyi_step, pivoted_partition
+from .trace import TraceResult, trace_mechanism, trace_structure
 from .rank import RankResult, rank_analysis, rigid_body_modes, structure_rank
 from .topology import (EquivalentAssembly, GraphTopology, compatibility_from_incidence,
                        cycle_kinematics, equivalent_assembly, graph_topology, incidence_matrix,

@@ -2,7 +2,7 @@
 """The compatibility matrix B of a pin-jointed assembly and the DOF bookkeeping around it.
 
 Row i of B (b × μ·j) holds the unit vector of bar i at its two joints, so that ``B d = e`` maps
-joint displacements d to bar elongations e (Hortobágyi eq. 2, linearised; DESIGN.md).  Its
+joint displacements d to bar elongations e (Hortobágyi eq. 2, linearised).  Its
 transpose is the equilibrium matrix, ``Bᵀ t = f`` (the axial part of Lacy eq. 2.13 / 4.20), and
 the truss stiffness is ``K = Bᵀ diag(EA/L) B``.
 """

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Reproductions of the seed examples and closed-form checks, as plain dicts of numbers.
+"""Reproductions of the published examples and closed-form checks, as plain dicts of numbers.
 
 The validation cases ``validation/cases/mech_*.toml`` point at these functions
 (``python = "trussfe.kinematics.reproductions:<name>"``) and compare entries of the returned
@@ -10,9 +10,10 @@ from __future__ import annotations
 import numpy as np
 
 from .compatibility import compatibility_matrix
-from .mechanism import _jacobian, compatibility_error, trace_mechanism
+from .mechanism import _jacobian, compatibility_error
 from .rank import rank_analysis
 from .topology import cycle_kinematics, equivalent_assembly
+from .trace import trace_mechanism
 from .velocity import bar_angular_velocity, mechanism_acceleration, mechanism_velocity
 
 # --------------------------------------------------------------------------- Hortobágyi sec. 4
@@ -79,7 +80,7 @@ def hortobagyi_section4(tolerance: float = 1e-14) -> dict:
         paper's matrix entries, the first iterates (as ``l/value`` denominators, paper sign), the
         converged coordinates, the iteration counts with frozen and refreshed B11, and the
         coordinates after the paper's fifth iterate; ``trace`` with the same two paths followed
-        by :func:`~trussfe.kinematics.mechanism.trace_mechanism` (branches 0 and 1).
+        by :func:`~trussfe.kinematics.trace.trace_mechanism` (branches 0 and 1).
 
     Notes
     -----

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Graph topology of bar-and-joint assemblies and cycle kinematics (Vlase, seed 001).
+"""Graph topology of bar-and-joint assemblies and cycle kinematics (Vlase et al. 2008).
 
 The joints are the graph's nodes and the bars its edges, each edge oriented from its start to
 its end joint (Vlase section 2.1).  With ``r + 1`` nodes and ``s`` edges:

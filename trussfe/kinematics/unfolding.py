@@ -14,7 +14,7 @@ which is solvable exactly when q(v) is orthogonal to every state of self-stress 
     ωᵀ q(v) = Σ_i ω_i |v_k − v_h|² / l_i = 0                 (one quadric per self-stress).
 
 The real solution lines of these quadrics form the second-order tangent cone (Connelly and
-Whiteley 1996, the seed's ref. [2]).  A simple real root is the tangent of a branch of the
+Whiteley 1996, Hortobágyi's ref. [2]).  A simple real root is the tangent of a branch of the
 finite motion leaving the singular state, so the lines are the *unfolding shapes*; no real root
 means the state is second-order rigid (hence rigid: the eight-bar assembly of section 6).
 Given a prescribed direction (Hortobágyi: "prescribe the vertical co-ordinate increments of the

@@ -2,7 +2,7 @@
 """Joint velocities and accelerations of a mechanism from its compatibility matrix.
 
 Differentiating the bar-length condition ``|x_k − x_h|² = L²`` once and twice in time gives,
-per bar (DESIGN.md; Hortobágyi eq. 2 is the first-order form)
+per bar (Hortobágyi eq. 2 is the first-order form)
 
 .. math::
 

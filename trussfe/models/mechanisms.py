@@ -6,7 +6,7 @@ source named in the entry, or from the construction) and a drive for tracing its
 Tests parametrise over :data:`CATALOGUE`; the shipped models ``meshes/mech_*.toml`` are written
 from it by :func:`write_toml` (and a test checks they agree).
 
-Hortobágyi's figures are missing from the text of seed 000; the assemblies of sections 6, 8 and
+Hortobágyi's figures are missing from the 1999 paper's text; the assemblies of sections 6, 8 and
 9 are constructions that satisfy every property the text states, documented in their builders.
 """
 from __future__ import annotations
@@ -316,7 +316,7 @@ CATALOGUE: dict[str, MechanismEntry] = _build()
 
 
 def to_toml(entry: MechanismEntry) -> str:
-    """The entry as a trussfe model file (CONTRACT.md §1)."""
+    """The entry as a trussfe model file (docs/model-format.md)."""
     fmt = "{:.15g}".format
     lines = [f"# {entry.title}", f"# expected: {entry.expected}; source: {entry.source}"]
     if entry.extra.get("trace"):

@@ -364,4 +364,5 @@ def double_octahedral_chain(n_bays: int, active_lengths: np.ndarray | None = Non
         connectivity=conn, sections=[section] * m, materials=[ALUMINIUM] * m,
         is_beam=np.zeros(m, bool), releases=np.zeros((m, 2), bool), supports=supports,
         loads=loads, masses=np.zeros(n),
-        gravity=np.zeros(3) if gravity is None else np.asarray(gravity, float).reshape(3))
+        gravity=np.zeros(3) if gravity is None else np.asarray(gravity, float).reshape(3),
+        member_groups=np.zeros(m, dtype=np.int64))     # one tube and one material

@@ -21,7 +21,7 @@ def two_bar(span: float = 2.0, height: float = 1.0, load: float = 1000.0) -> Str
     --------
     >>> s = two_bar()
     >>> s.member_ids, s.loads[1, :2].tolist()
-    (['AB', 'BC'], [0.0, -1000.0])
+    (('AB', 'BC'), [0.0, -1000.0])
     """
     if span <= 0 or height <= 0:
         raise InputError("two_bar", "span and height must be positive")
@@ -51,8 +51,7 @@ def three_bar(width: float = 1.0, height: float = 1.0, load: tuple[float, float]
         [[0, 3], [1, 3], [2, 3]], section=Section(name="bar", area=areas[0]),
         material=ALUMINIUM, supports={0: "xy", 1: "xy", 2: "xy"}, loads={3: list(load)},
         name="three-bar truss", node_ids=["A", "B", "C", "D"], member_ids=["AD", "BD", "CD"])
-    s.sections = [Section(name=f"bar{i + 1}", area=a) for i, a in enumerate(areas)]
-    return s
+    return s.with_sections([Section(name=f"bar{i + 1}", area=a) for i, a in enumerate(areas)])
 
 
 def four_bar_linkage(crank_angle: float = np.pi / 3, ground: float = 4.0, crank: float = 1.0,

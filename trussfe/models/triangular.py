@@ -77,7 +77,7 @@ def triangular_truss(x: float = 0.0, lumped_mass: float = 10.0, member_weight: b
     --------
     >>> s = triangular_truss()
     >>> s.node_ids, s.member_ids
-    (['O2', 'B', 'O1'], ['follower', 'active'])
+    (('O2', 'B', 'O1'), ('follower', 'active'))
     >>> np.round(s.coords[1], 4)    # Appendix B, node 3
     array([1.5625, 1.9516])
     """
@@ -115,6 +115,4 @@ def triangular_truss(x: float = 0.0, lumped_mass: float = 10.0, member_weight: b
         node_ids=["O2", "C", "B", "O1"],
         member_ids=["follower", "active_base", "leadscrew_tube"])
     # Pinned at O2 and B, rigid at the cantilever connection C.
-    s.releases[1] = (True, False)
-    s.releases[2] = (False, True)
-    return s
+    return s.with_member_data(releases={1: (True, False), 2: (False, True)})

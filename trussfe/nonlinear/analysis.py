@@ -1,8 +1,9 @@
 # SPDX-License-Identifier: MIT
 """The post-critical analysis of a model file: settings, run, JSON document, VTK, plot.
 
-Analysis settings may be given in the model file's ``[postcritical]`` table (command-line
-options override them)::
+Analysis settings may be given in the model file's ``[postcritical]`` table
+(:class:`trussfe.model.postcritical.PostcriticalSettings`; command-line options override
+them)::
 
     [postcritical]
     control = "arc-length"        # "load" | "displacement" | "arc-length"
@@ -20,79 +21,20 @@ options override them)::
 from __future__ import annotations
 
 import logging
-import math
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 
-from ..errors import AnalysisError, InputError
-from ..io.model_file import read_model, register_table
+from ..errors import AnalysisError
+from ..io.extension_tables import AXES, parse_monitor
+from ..io.model_file import read_model
 from ..model.structure import Structure
 from .buckling import apply_imperfection, linear_buckling
-from .failure import FailureLaws, parse_failure_table
-from .model import BAR_MODELS, NonlinearModel
-from .path import CONTROLS, PathResult, follow_path
+from .failure import FailureLaws
+from .model import NonlinearModel
+from .path import PathResult, follow_path
 
-SETTINGS = {"control": str, "steps": int, "step": float, "max_load_factor": float,
-            "monitor": str, "bar_model": str, "subdivisions": int, "imperfection": float,
-            "branch": bool, "max_displacement": float, "max_step": float}
-AXES = "xyz"
 log = logging.getLogger(__name__)
-
-
-def parse_settings(raw: Any, structure: Structure | None = None, base_dir=None) -> dict:
-    """Read the ``[postcritical]`` table (every value checked, item named)."""
-    if not isinstance(raw, dict):
-        raise InputError("[postcritical]", "expected a table of analysis settings")
-    out = {}
-    for k, v in raw.items():
-        item = f"postcritical.{k}"
-        if k not in SETTINGS:
-            raise InputError(item, f"unknown key; valid: {', '.join(SETTINGS)}")
-        typ = SETTINGS[k]
-        if typ is float:
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
-                raise InputError(item, f"expected a finite number, got {v!r}")
-            v = float(v)
-            if k in ("step", "max_load_factor", "max_displacement", "max_step") and v <= 0:
-                raise InputError(item, f"must be positive, got {v}")
-            if k == "imperfection" and v < 0:
-                raise InputError(item, f"must not be negative, got {v}")
-        elif typ is int:
-            if isinstance(v, bool) or not isinstance(v, int) or v < 1:
-                raise InputError(item, f"expected a positive integer, got {v!r}")
-        elif typ is bool:
-            if not isinstance(v, bool):
-                raise InputError(item, f"expected true or false, got {v!r}")
-        else:
-            if not isinstance(v, str):
-                raise InputError(item, f"expected a string, got {v!r}")
-        out[k] = v
-    if "control" in out and out["control"] not in CONTROLS:
-        raise InputError("postcritical.control", f"unknown control {out['control']!r}; "
-                                                 f"valid: {', '.join(CONTROLS)}")
-    if "bar_model" in out and out["bar_model"] not in BAR_MODELS:
-        raise InputError("postcritical.bar_model", f"unknown bar model; valid: "
-                                                   f"{', '.join(BAR_MODELS)}")
-    if "monitor" in out and structure is not None:
-        parse_monitor(out["monitor"], structure, "postcritical.monitor")
-    return out
-
-
-def parse_monitor(text: str, structure: Structure, item: str = "--monitor") -> tuple[int, int]:
-    """``"NODE:AXIS"`` → (node index, axis index)."""
-    node, sep, axis = str(text).rpartition(":")
-    if not sep or axis not in AXES[: structure.dim]:
-        raise InputError(item, f"expected NODE:AXIS with AXIS in {AXES[:structure.dim]}, "
-                               f"got {text!r}")
-    if node not in structure.node_ids:
-        raise InputError(item, f"node '{node}' is not defined")
-    return structure.node_index(node), AXES.index(axis)
-
-
-register_table("failure", parse_failure_table)
-register_table("postcritical", parse_settings)
 
 
 def run_postcritical(structure: Structure, **options) -> PathResult:
@@ -101,7 +43,8 @@ def run_postcritical(structure: Structure, **options) -> PathResult:
     Options given as keywords override the model's ``[postcritical]`` table; ``None`` values
     are ignored.  Extra keywords go to :func:`~trussfe.nonlinear.path.follow_path`.
     """
-    opts = dict(structure.extensions.get("postcritical", {}))
+    settings = structure.extensions.get("postcritical")
+    opts = settings.options() if settings is not None else {}
     given = {k: v for k, v in options.items() if v is not None}
     if "control" in given and given["control"] != opts.get("control", "arc-length") \
             and "step" not in given:
@@ -130,7 +73,7 @@ def run_postcritical(structure: Structure, **options) -> PathResult:
 
 
 def result_document(result: PathResult) -> dict:
-    """The CONTRACT §3 ``postcritical`` JSON document of a path."""
+    """The ``postcritical`` JSON document of a path (docs/json.md, ``postcritical``)."""
     m = result.model
     s = m.structure
     ids = s.node_ids

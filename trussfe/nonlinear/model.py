@@ -38,6 +38,7 @@ import logging
 import numpy as np
 
 from ..errors import InputError
+from ..model.postcritical import BAR_MODELS
 from ..model.structure import Structure
 from .beam3d import (beam3d_matrices, compose, expm_so3, reference_frames,
                      tangent_operator, tangent_operator_derivative)
@@ -46,8 +47,6 @@ from .elements import (beam2d_local, beam2d_matrices, truss_kinematics,
 from .failure import FailureLaws, axial_law, failure_margins
 
 log = logging.getLogger(__name__)
-
-BAR_MODELS = ("truss", "pinned-beam")
 
 
 class NonlinearModel:

@@ -31,13 +31,13 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import InputError, MechanismError
+from ..model.postcritical import CONTROLS
 from .mechanism import MechanismMotion, equilibrium_form, mechanism_count
 from .model import NonlinearModel
 from .solvers import SingularTangent, critical_mode, factorize
 
 log = logging.getLogger(__name__)
 
-CONTROLS = ("load", "displacement", "arc-length")
 _CAUSE = ("buckling", "yield", "fracture")
 #: |φᵀf|/(|φ||f|) below which a critical point is a bifurcation (φ orthogonal to the load).
 _BIFURCATION_RATIO = 1e-3

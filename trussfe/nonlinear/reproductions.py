@@ -12,6 +12,7 @@ suite (``validation/cases/postcritical_*.toml``) and the tests:
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -101,7 +102,7 @@ def _figure(result, name: str) -> dict:
     """The load–displacement plot of a path as a PNG in a temporary folder."""
     import tempfile
     from pathlib import Path
-    from ..cli.cmd_postcritical import write_plot
+    from .plot import write_plot
     path = Path(tempfile.mkdtemp(prefix="trussfe_postcritical_")) / f"{name}.png"
     write_plot(path, result)
     return {name: str(path)}
@@ -294,7 +295,7 @@ def lattice_progressive(figures: bool = True) -> dict:
 
 def linear_buckling_agreement(subdivisions: int = 16) -> dict:
     """First linear buckling load factor of the Euler column: co-rotational tangent, Euler
-    formula, and the FE core's eigen solver when it is installed (``trussfe.cli.cmd_buckling``).
+    formula, and the FE core's eigen solver when it is installed (:func:`trussfe.api.buckling`).
     """
     s = read_model(mesh_path("postcritical_euler_column.toml"))
     L = float(s.lengths()[0])
@@ -305,10 +306,10 @@ def linear_buckling_agreement(subdivisions: int = 16) -> dict:
     out = {"load_factor": float(lf[0]), "euler_load_factor": Pe / P,
            "second_load_factor": float(lf[1]), "second_euler_load_factor": 4 * Pe / P}
     try:
-        from ..cli import cmd_buckling  # noqa: F401  (FE core eigen solver)
-        doc = cmd_buckling.analyse(str(mesh_path("postcritical_euler_column.toml")),
-                                   bar_model="pinned-beam", subdivisions=subdivisions)
-        out["fe_core_load_factor"] = float(doc["load_factors"][0])
+        from ..api import buckling  # FE core eigen solver
+        res = buckling(mesh_path("postcritical_euler_column.toml"), bar_model="pinned-beam",
+                       subdivisions=subdivisions)
+        out["fe_core_load_factor"] = float(res.load_factors[0])
         out["fe_core_relative_difference"] = abs(out["load_factor"] / out[
             "fe_core_load_factor"] - 1.0)
     except Exception:  # not installed yet: the comparison is skipped, not faked
@@ -357,13 +358,16 @@ def double_layer_grid(n: int, spacing: float = 1.0, depth: float = 0.7,
                         material=Material(name="steel", E=2.1e11, G=8.1e10, density=7850.0,
                                           yield_strength=3.55e8),
                         name=f"double-layer grid {n}x{n}")
-    s.supports[np.flatnonzero(edge.ravel()), :3] = True
-    s.loads[np.flatnonzero(~edge.ravel()), 2] = load
+    supports = np.array(s.supports)
+    supports[np.flatnonzero(edge.ravel()), :3] = True
+    loads = np.array(s.loads)
+    loads[np.flatnonzero(~edge.ravel()), 2] = load
+    s = s.with_supports(supports).with_loads(loads)
     m = s.n_members
     rng = np.random.default_rng(seed)
-    laws = FailureLaws.none(m)
-    laws.buckling[:] = BUCKLING.index(law)
     L = s.lengths()
-    laws.critical_load[:] = (math.pi ** 2 * s.E * s.Iy / L ** 2
-                             * (1.0 + spread * (2 * rng.random(m) - 1)))
+    laws = dataclasses.replace(
+        FailureLaws.none(m), buckling=np.full(m, BUCKLING.index(law)),
+        critical_load=(math.pi ** 2 * s.E * s.Iy / L ** 2
+                       * (1.0 + spread * (2 * rng.random(m) - 1))))
     return s, laws

@@ -22,121 +22,18 @@ Example (the triangular truss of Lacy Table 3.1)::
     tube_length = 2.0        # m
     min_length = 2.5         # m, optional stroke limits
     max_length = 3.7
+
+The data live in :mod:`trussfe.model.active` and are read by
+:mod:`trussfe.io.extension_tables`; this module gives the analyses their view of them.
 """
 from __future__ import annotations
 
-import math
-from dataclasses import dataclass
-from pathlib import Path
-from typing import Any
-
 import numpy as np
 
-from ..errors import InputError
-from ..io.model_file import register_table
+from ..model.active import ActiveMember
 from ..model.structure import Structure
 
-_KEYS = ("base_mass", "base_length", "base_cg", "base_inertia", "tube_length",
-         "min_length", "max_length")
-
-
-@dataclass(frozen=True)
-class ActiveMember:
-    """Data of one active member (see the module docstring for the model).
-
-    Attributes
-    ----------
-    member : int
-        Index of the member in the structure.
-    base_mass, base_cg, base_inertia : float
-        Active base mass (kg), centre of gravity from the start node (m) and moment of inertia
-        about the start node (kg·m²).
-    base_length : float
-        Overall base length, m (used for the default inertia).
-    tube_length : float
-        Leadscrew tube length, m; the tube's section and material are the member's.
-    min_length, max_length : float
-        Stroke limits of the whole member, m (``nan`` if not given).
-    """
-
-    member: int
-    base_mass: float
-    base_length: float
-    base_cg: float
-    base_inertia: float
-    tube_length: float
-    min_length: float = math.nan
-    max_length: float = math.nan
-
-    @property
-    def base_inertia_cg(self) -> float:
-        """Moment of inertia of the base about its own centre of gravity, kg·m²."""
-        return self.base_inertia - self.base_mass * self.base_cg ** 2
-
-
-def _num(raw: dict, key: str, item: str, *, positive=False, nonneg=False, default=None) -> float:
-    if key not in raw:
-        if default is None:
-            raise InputError(f"{item}.{key}", "is required")
-        return default
-    v = raw[key]
-    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(float(v)):
-        raise InputError(f"{item}.{key}", f"expected a finite number, got {v!r}")
-    v = float(v)
-    if positive and v <= 0:
-        raise InputError(f"{item}.{key}", f"must be positive, got {v!r}")
-    if nonneg and v < 0:
-        raise InputError(f"{item}.{key}", f"must not be negative, got {v!r}")
-    return v
-
-
-def parse_active_members(raw: Any, structure: Structure, base_dir: Path) -> list[ActiveMember]:
-    """Read the ``[active_members]`` table (registered with the model-file reader).
-
-    Raises
-    ------
-    InputError
-        For an unknown member id, a missing or non-positive quantity, a tube longer than the
-        member, or a member that is not a pin-jointed bar.
-    """
-    if not isinstance(raw, dict) or not raw:
-        raise InputError("[active_members]", "expected one table per active member, "
-                         "e.g. [active_members.M7_8]")
-    out = []
-    for mid, t in raw.items():
-        item = f"active_members.{mid}"
-        try:
-            k = structure.member_index(str(mid))
-        except KeyError:
-            raise InputError(item, f"'{mid}' is not a member of the model; the table key must "
-                             "be a member id from [members]") from None
-        if not isinstance(t, dict):
-            raise InputError(item, "expected a table")
-        for key in t:
-            if key not in _KEYS:
-                raise InputError(f"{item}.{key}", f"unknown key; valid: {', '.join(_KEYS)}")
-        if structure.is_beam[k]:
-            raise InputError(item, "an active member must be a pin-jointed bar (type = \"bar\")")
-        mb = _num(t, "base_mass", item, nonneg=True)
-        lb = _num(t, "base_length", item, positive=True)
-        cg = _num(t, "base_cg", item, nonneg=True, default=lb / 2.0)
-        ib = _num(t, "base_inertia", item, nonneg=True, default=mb * lb * lb / 3.0)
-        if ib < mb * cg * cg * (1 - 1e-12):
-            raise InputError(f"{item}.base_inertia", f"{ib} kg·m² is less than base_mass·"
-                             f"base_cg² = {mb * cg * cg} kg·m²; give it about the start node")
-        lt = _num(t, "tube_length", item, positive=True)
-        L0 = float(structure.lengths()[k])
-        if lt > L0 * (1 + 1e-12):
-            raise InputError(f"{item}.tube_length", f"{lt} m is longer than the member "
-                             f"({L0:.6g} m at rest)")
-        lo = _num(t, "min_length", item, positive=True, default=math.nan)
-        hi = _num(t, "max_length", item, positive=True, default=math.nan)
-        out.append(ActiveMember(member=k, base_mass=mb, base_length=lb, base_cg=cg,
-                                base_inertia=ib, tube_length=lt, min_length=lo, max_length=hi))
-    return out
-
-
-register_table("active_members", parse_active_members)
+__all__ = ["ActiveMember", "active_indices", "active_members"]
 
 
 def active_members(structure: Structure) -> list[ActiveMember]:

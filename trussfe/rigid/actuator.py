@@ -62,108 +62,19 @@ from __future__ import annotations
 
 import logging
 import math
-from dataclasses import dataclass, replace
-from pathlib import Path
-from typing import Any
+from dataclasses import replace
 
 import numpy as np
 
-from ..errors import AnalysisError, InputError
-from ..io.model_file import register_table
+from ..errors import AnalysisError
+from ..model.actuators import (ACME_THREAD_ANGLE, SELF_LOCKING_RTOL, Actuator,
+                               max_leadscrew_gain)
 from ..model.structure import Structure
-from .active import active_members
 
 log = logging.getLogger(__name__)
 
-_KEYS = ("leadscrew_gain", "mean_diameter", "thread", "thread_angle", "friction",
-         "gearhead_gain", "armature_inertia", "resistance", "torque_constant",
-         "back_emf_constant", "max_speed", "max_voltage", "require_self_locking", "convention")
-#: Half-angle of an Acme thread (29° included angle), degrees (Shigley, Lacy ref. 19).
-ACME_THREAD_ANGLE = 14.5
-#: Relative slack on the self-locking limit: Lacy's triangular truss uses G_ls = μ d_m / 2
-#: exactly (0.003 m/rad, section 3.7), the limiting value the thesis itself selects.
-SELF_LOCKING_RTOL = 1e-9
-
-
-@dataclass(frozen=True)
-class Actuator:
-    """Leadscrew, gearhead and motor data of one active member.
-
-    Attributes
-    ----------
-    member : int
-        Index of the active member in the structure.
-    name : str
-        Its id (for messages and output keys).
-    leadscrew_gain : float
-        G_ls, extension per radian of the leadscrew, m/rad (lead l = 2π G_ls).
-    mean_diameter : float
-        d_m, m.
-    thread : str
-        ``"square"`` or ``"acme"``.
-    thread_angle : float
-        α_T, radians (0 for a square thread).
-    friction : float
-        μ, thread friction coefficient.
-    gearhead_gain : float
-        G_gh (``nan``: select it from ``max_speed`` with eq. 3.1).
-    armature_inertia, resistance, torque_constant, back_emf_constant : float
-        J_m (kg·m²), R_a (Ω), K_t (N·m/A), K_b (V·s/rad).
-    max_speed, max_voltage : float
-        Motor limits, rad/s and V (``nan`` if not given).
-    require_self_locking : bool
-        Raise :class:`InputError` if the screw does not self-lock (eq. 2.45).
-    convention : str
-        ``"physical"`` or ``"thesis"`` (module docstring).
-    """
-
-    member: int
-    name: str
-    leadscrew_gain: float
-    mean_diameter: float
-    thread: str
-    thread_angle: float
-    friction: float
-    gearhead_gain: float
-    armature_inertia: float
-    resistance: float
-    torque_constant: float
-    back_emf_constant: float
-    max_speed: float = math.nan
-    max_voltage: float = math.nan
-    require_self_locking: bool = True
-    convention: str = "physical"
-
-    @property
-    def lead(self) -> float:
-        """Lead of the thread, l = 2π G_ls, m (Lacy eq. 2.34)."""
-        return 2.0 * math.pi * self.leadscrew_gain
-
-    @property
-    def self_locking_limit(self) -> float:
-        """Largest self-locking leadscrew gain μ d_m sec α_T / 2, m/rad (Lacy eq. 2.45)."""
-        return max_leadscrew_gain(self.friction, self.mean_diameter, self.thread_angle)
-
-    @property
-    def self_locking(self) -> bool:
-        """Whether the screw holds a static load without motor torque (Lacy eq. 2.45)."""
-        return self.leadscrew_gain <= self.self_locking_limit * (1.0 + SELF_LOCKING_RTOL)
-
-
-def max_leadscrew_gain(friction: float, mean_diameter: float, thread_angle: float = 0.0) -> float:
-    """Largest leadscrew gain for which the screw self-locks (Lacy eq. 2.45).
-
-    The with-load torque of eq. 2.38 is non-negative while ``l ≤ π μ d_m sec α_T``, i.e.
-    ``G_ls ≤ μ d_m sec α_T / 2``; for a square thread (α_T = 0) this is eq. 2.45.
-
-    Examples
-    --------
-    Lacy section 3.7: μ = 0.3 and d_m = 0.02 m give 0.003 m/rad.
-
-    >>> round(max_leadscrew_gain(0.3, 0.02), 6)
-    0.003
-    """
-    return friction * mean_diameter / (2.0 * math.cos(thread_angle))
+__all__ = ["ACME_THREAD_ANGLE", "Actuator", "SELF_LOCKING_RTOL", "actuators_of",
+           "max_leadscrew_gain", "motor_histories", "select_gearhead_gain", "thread_ratio"]
 
 
 def select_gearhead_gain(leadscrew_gain: float, max_speed: float, max_velocity: float) -> float:
@@ -206,115 +117,6 @@ def thread_ratio(lead: float, mean_diameter: float, friction: float, thread_angl
     pd = math.pi * mean_diameter
     return np.where(against, (lead + mu * pd) / (pd - mu * lead),
                     (mu * pd - lead) / (pd + mu * lead))
-
-
-def _num(raw: dict, key: str, item: str, *, positive=False, nonneg=False,
-         default: float | None = None) -> float:
-    if key not in raw:
-        if default is None:
-            raise InputError(f"{item}.{key}", "is required")
-        return default
-    v = raw[key]
-    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(float(v)):
-        raise InputError(f"{item}.{key}", f"expected a finite number, got {v!r}")
-    v = float(v)
-    if positive and not v > 0:
-        raise InputError(f"{item}.{key}", f"must be positive, got {v!r}")
-    if nonneg and v < 0:
-        raise InputError(f"{item}.{key}", f"must not be negative, got {v!r}")
-    return v
-
-
-def parse_actuator(mid: str, t: Any, member: int) -> Actuator:
-    """One ``[actuators.ID]`` table → :class:`Actuator` (checks every value)."""
-    item = f"actuators.{mid}"
-    if not isinstance(t, dict):
-        raise InputError(item, "expected a table")
-    for key in t:
-        if key not in _KEYS:
-            raise InputError(f"{item}.{key}", f"unknown key; valid: {', '.join(_KEYS)}")
-    thread = t.get("thread", "square")
-    if thread not in ("square", "acme"):
-        raise InputError(f"{item}.thread", f"must be \"square\" or \"acme\", got {thread!r}")
-    if thread == "square":
-        if "thread_angle" in t and float(_num(t, "thread_angle", item)) != 0.0:
-            raise InputError(f"{item}.thread_angle", "a square thread has no thread angle; "
-                             "set thread = \"acme\" or remove thread_angle")
-        angle = 0.0
-    else:
-        angle = _num(t, "thread_angle", item, nonneg=True, default=ACME_THREAD_ANGLE)
-        if angle >= 90.0:
-            raise InputError(f"{item}.thread_angle", f"must be below 90 degrees, got {angle}")
-    convention = t.get("convention", "physical")
-    if convention not in ("physical", "thesis"):
-        raise InputError(f"{item}.convention", f"must be \"physical\" or \"thesis\", got "
-                         f"{convention!r}")
-    req = t.get("require_self_locking", True)
-    if not isinstance(req, bool):
-        raise InputError(f"{item}.require_self_locking", f"expected true or false, got {req!r}")
-    act = Actuator(
-        member=member, name=str(mid),
-        leadscrew_gain=_num(t, "leadscrew_gain", item, positive=True),
-        mean_diameter=_num(t, "mean_diameter", item, positive=True),
-        thread=thread, thread_angle=math.radians(angle),
-        friction=_num(t, "friction", item, nonneg=True),
-        gearhead_gain=_num(t, "gearhead_gain", item, positive=True, default=math.nan),
-        armature_inertia=_num(t, "armature_inertia", item, nonneg=True),
-        resistance=_num(t, "resistance", item, nonneg=True),
-        torque_constant=_num(t, "torque_constant", item, positive=True),
-        back_emf_constant=_num(t, "back_emf_constant", item, nonneg=True),
-        max_speed=_num(t, "max_speed", item, positive=True, default=math.nan),
-        max_voltage=_num(t, "max_voltage", item, positive=True, default=math.nan),
-        require_self_locking=req, convention=convention)
-    if math.isnan(act.gearhead_gain) and math.isnan(act.max_speed):
-        raise InputError(f"{item}.gearhead_gain", "is required unless max_speed is given "
-                         "(the gain is then selected from the motion, Lacy eq. 3.1)")
-    pd = math.pi * act.mean_diameter
-    if act.friction / math.cos(act.thread_angle) * act.lead >= pd:
-        raise InputError(item, "the thread cannot be driven against the load "
-                         "(μ l sec α_T ≥ π d_m in Lacy eq. 2.35); check friction and gain")
-    check_self_locking(act)
-    return act
-
-
-def check_self_locking(act: Actuator) -> None:
-    """Raise :class:`InputError` if ``act`` must self-lock and does not (Lacy eq. 2.45)."""
-    if act.require_self_locking and not act.self_locking:
-        raise InputError(
-            f"actuators.{act.name}",
-            f"the leadscrew is not self-locking: G_ls = {act.leadscrew_gain:.6g} m/rad exceeds "
-            f"μ d_m sec α_T / 2 = {act.self_locking_limit:.6g} m/rad (Lacy eq. 2.45); lower "
-            "leadscrew_gain or set require_self_locking = false")
-
-
-def parse_actuators(raw: Any, structure: Structure, base_dir: Path) -> list[Actuator]:
-    """Read the ``[actuators]`` table (registered with the model-file reader).
-
-    Raises
-    ------
-    InputError
-        Unknown or passive member, missing or invalid value, a screw that is not self-locking
-        when it must be.
-    """
-    if not isinstance(raw, dict) or not raw:
-        raise InputError("[actuators]", "expected one table per active member, "
-                         "e.g. [actuators.M7_8]")
-    active = {a.member for a in active_members(structure)}
-    out = []
-    for mid, t in raw.items():
-        try:
-            k = structure.member_index(str(mid))
-        except KeyError:
-            raise InputError(f"actuators.{mid}", f"'{mid}' is not a member of the model") \
-                from None
-        if k not in active:
-            raise InputError(f"actuators.{mid}", f"'{mid}' is not an active member; add an "
-                             f"[active_members.{mid}] table")
-        out.append(parse_actuator(str(mid), t, k))
-    return out
-
-
-register_table("actuators", parse_actuators)
 
 
 def actuators_of(structure: Structure) -> list[Actuator]:

@@ -59,10 +59,9 @@ def base_simulation_gains() -> dict:
 def slew1_structure(convention: str = "thesis") -> Structure:
     """The hanging double-octahedral bay at equilibrium with 46.0 N on N7–N9 and actuators."""
     s = double_octahedron(top_load=46.0, gravity=-9.81)
-    s.extensions["actuators"] = [
+    return s.with_extensions(actuators=[
         Actuator(member=s.member_index(k), name=k, convention=convention,
-                 require_self_locking=True, **PROTOTYPE) for k in ACTIVE]
-    return s
+                 require_self_locking=True, **PROTOTYPE) for k in ACTIVE])
 
 
 def slew1_motion(structure: Structure | None = None, *, duration: float = 5.5,
@@ -192,8 +191,8 @@ def base_simulation_motor(convention: str = "thesis") -> dict:
 
     s = triangular_truss(mass=10.0)
     k = s.member_index("active")
-    s.extensions["actuators"] = [Actuator(member=k, name="active", convention=convention,
-                                          **TRIANGLE_MOTOR)]
+    s = s.with_extensions(actuators=[Actuator(member=k, name="active", convention=convention,
+                                              **TRIANGLE_MOTOR)])
     m = third_order_motion(s, [L3MIN + L2], [L3MIN + 1.2 + L2], 3.0, 50)
     r = simulate(s, m, scheme="thesis", full_length_inertia=True)
     h = r.actuators["active"]

@@ -27,7 +27,7 @@ difference can be shown.
 
 Bay-local kinematics (:func:`bay_kinematics`) use the forward-position solver and the
 compatibility matrix of the bay: ``B ṗ = L̇``, ``B p̈ = L̈ − (|ṗ_b − ṗ_a|² − L̇²)/L``
-(DESIGN.md), exact, batched over time steps.
+(the bar-length condition differentiated twice), exact, batched over time steps.
 """
 from __future__ import annotations
 
@@ -309,11 +309,10 @@ def stack_bays(bay: Structure, n_bays: int) -> Structure:
                         supports={i: "xyz" for i in range(3)}, node_ids=node_ids,
                         member_ids=mids, name=f"{n_bays}-bay chain of {bay.name}")
     m = bay.n_members
-    s.extensions["active_members"] = [
+    return s.with_extensions(active_members=[
         ActiveMember(member=a.member + k * m, base_mass=a.base_mass, base_length=a.base_length,
                      base_cg=a.base_cg, base_inertia=a.base_inertia, tube_length=a.tube_length)
-        for k in range(n_bays) for a in active_members(bay)]
-    return s
+        for k in range(n_bays) for a in active_members(bay)])
 
 
 def chain_kinematics(bay: Structure, lengths: np.ndarray, rates: np.ndarray,
@@ -466,8 +465,7 @@ def chain_forces(bay: Structure, time: np.ndarray, lengths: np.ndarray, rates: n
     nt, nb, _ = lengths.shape
     acts = np.array([a.member for a in active_members(bay)], dtype=np.int64)
     m = bay.n_members
-    template = bay.copy()
-    template.masses = np.zeros_like(template.masses)
+    template = bay.with_masses(np.zeros(bay.n_nodes))
     tension = np.empty((nt, nb * m))
     react = np.empty((nt, nb, 3, 3))
     idx_of = []
@@ -487,9 +485,9 @@ def chain_forces(bay: Structure, time: np.ndarray, lengths: np.ndarray, rates: n
         kin = kinematics_from_nodes(template, time, ck.coords[:, idx], ck.velocity[:, idx],
                                     ck.acceleration[:, idx], Ld, Ldd)
         for t in range(nt):             # loads change with time: one step at a time
-            s = template.with_coords(ck.coords[t, idx])
-            s.loads = np.zeros_like(s.loads)
-            s.loads[6:9, :3] = below[t]
+            loads = np.zeros(template.loads.shape)
+            loads[6:9, :3] = below[t]
+            s = template.variant(coords=ck.coords[t, idx], loads=loads)
             kt = _step(kin, t)
             f = nodal_forces(s, kt)
             tension[t, k * m:(k + 1) * m] = f.tension_end[0]

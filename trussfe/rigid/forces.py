@@ -25,7 +25,7 @@ tension ``t = F_b·e`` at its end node (then ``−F_a·e = t − R·e``).
 tensions enter through the equilibrium matrix, ``Bᵀ t = P + M g − M a − Σ F_known``, a sparse
 square system for a statically determinate truss; the reactions then follow on the supported
 coordinates.  This is Lacy's 11 × 11 (triangle) and 117 × 117 (double octahedron) system
-with each member's transverse forces eliminated by its own equations (DESIGN.md); it is
+with each member's transverse forces eliminated by its own equations; it is
 solved for all time steps at once.
 """
 from __future__ import annotations

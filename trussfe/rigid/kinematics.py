@@ -11,7 +11,7 @@ At every time step (Lacy sections 2.3 and 4.4, done here for any topology):
 
    .. math:: e\\cdot(a_b - a_a) = \\ddot L - \\frac{\\lVert v_b - v_a\\rVert^2 - \\dot L^2}{L},
 
-   i.e. ``B a = d2L/dt2 - (|v_rel|^2 - (dL/dt)^2)/L`` — exact, no finite differences (DESIGN.md);
+   i.e. ``B a = d2L/dt2 - (|v_rel|^2 - (dL/dt)^2)/L`` — exact, no finite differences;
 4. each member's unit vector e, its rates ė = (v_rel − L̇ e)/L and
    ë = (a_rel − L̈ e − 2 L̇ ė)/L, angular velocity ω = e × ė and acceleration α = e × ë
    (a slender member has no spin about its own axis).

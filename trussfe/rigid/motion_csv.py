@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Measured motion histories from a CSV file (issue item 2b).
+"""Measured motion histories from a CSV file (docs/actuators.md, *Measured motions*).
 
 The file has one header row and one row per sample; lines starting with ``#`` are comments.
 Columns::

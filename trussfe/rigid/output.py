@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Outputs of a simulation: the CONTRACT §3 JSON document, NPZ arrays, VTK time series, plots.
+"""Outputs of a simulation: the JSON document (docs/json.md), NPZ arrays, VTK time series, plots.
 
 Every writer goes through :mod:`trussfe.io.output` (temporary file, then rename), so a failed
 run leaves nothing half-written.
@@ -16,7 +16,7 @@ from .simulate import SimulationResult
 
 
 def to_json(res: SimulationResult) -> dict:
-    """The ``simulate`` JSON document of CONTRACT.md §3 (plus a ``summary`` section).
+    """The ``simulate`` JSON document (docs/json.md, ``simulate``), with its ``summary`` section.
 
     ``members.ID.axial_force`` is the axial force at the middle of the member's tube (N,
     positive in tension), ``max_von_mises`` the largest von Mises stress over its sections (Pa),
@@ -87,7 +87,7 @@ def write_npz(path: str | Path, res: SimulationResult) -> None:
 
 
 def write_vtk(directory: str | Path, res: SimulationResult, stem: str = "simulate") -> Path:
-    """A ParaView time series: ``stem.pvd`` + one ``.vtu`` per step (CONTRACT.md §4).
+    """A ParaView time series: ``stem.pvd`` + one ``.vtu`` per step (docs/vtk.md).
 
     Point data ``displacement`` (from the first step), ``velocity``, ``acceleration``; cell data
     ``axial_force`` (midpoint), ``von_mises`` and ``static_von_mises`` (maxima over sections),

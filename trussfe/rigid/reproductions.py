@@ -58,11 +58,10 @@ def triangular_truss(x: float = 0.0, mass: float = 10.0, *, gravity: bool = True
                         gravity=[0.0, -9.81] if gravity else None,
                         node_ids=["O2", "O1", "B"], member_ids=["follower", "active"],
                         name="triangular truss (Lacy Fig. 2.1)")
-    s.extensions["active_members"] = [ActiveMember(
+    return s.with_extensions(active_members=[ActiveMember(
         member=1, base_mass=2.4, base_length=L3MAX, base_cg=L3MAX / 2,
         base_inertia=2.4 * L3MAX ** 2 / 3, tube_length=L2, min_length=L3MIN + L2,
-        max_length=L3MAX + L2)]
-    return s
+        max_length=L3MAX + L2)])
 
 
 def static_reactions() -> dict:
@@ -188,16 +187,15 @@ def double_octahedron(active_lengths=(EQUILIBRIUM_LENGTH,) * 3, *, top_load: flo
                         masses={i: top_masses for i in (6, 7, 8)} if top_masses else None,
                         gravity=g, node_ids=[f"N{i}" for i in range(1, 10)], member_ids=names,
                         name="double-octahedral VGT bay (Lacy Fig. 4.1)")
-    s.extensions["active_members"] = [
+    return s.with_extensions(active_members=[
         ActiveMember(member=names.index(k), base_mass=3.0, base_length=0.7, base_cg=0.35,
                      base_inertia=3.0 * 0.7 ** 2 / 3, tube_length=0.254)
-        for k in ("M7_8", "M9_10", "M11_12")]
-    return s
+        for k in ("M7_8", "M9_10", "M11_12")])
 
 
 #: Active lengths of Tables 5.2–5.4.  The short slewed length reproduces as 1.1079 m (printed
 #: 1.1077 m); the numbers printed as Table 5.3 ("first slewed position") belong to M7/8 at its
-#: minimum and those of Table 5.4 to M7/8 at its maximum (DESIGN.md).
+#: minimum and those of Table 5.4 to M7/8 at its maximum (case lacy-table-5-3-as-captioned).
 DO_POSITIONS = {
     "table_5_2": (EQUILIBRIUM_LENGTH,) * 3,
     "table_5_3": (1.1079, 1.2289, 1.2289),
@@ -209,7 +207,7 @@ def double_octahedron_static(top_load: float = 44.498) -> dict:
     """Tables 5.2–5.4 with the rigid-body model at rest (no gravity, vertical top loads).
 
     The tables reproduce with 44.498 N per top node (4.536 kg × 9.81: the printed reaction),
-    not the stated 46.0 N, which makes every value 3.4 % high (DESIGN.md).
+    not the stated 46.0 N, which makes every value 3.4 % high (case lacy-table-5-2-stated-load).
     """
     out = {}
     for key, lengths in DO_POSITIONS.items():
@@ -285,8 +283,7 @@ def double_octahedral_chain(n_bays: int, *, top_load: float = 0.0, gravity: floa
                         gravity=None if gravity == 0.0 else [0.0, 0.0, -gravity],
                         node_ids=[f"N{i + 1}" for i in range(len(X))], member_ids=names,
                         name=f"{n_bays}-bay double-octahedral chain")
-    s.extensions["active_members"] = [
+    return s.with_extensions(active_members=[
         ActiveMember(member=i, base_mass=3.0, base_length=0.7, base_cg=0.35,
                      base_inertia=3.0 * 0.7 ** 2 / 3, tube_length=0.254)
-        for i, nm in enumerate(names) if nm.split(".")[0] in ("M7_8", "M9_10", "M11_12")]
-    return s
+        for i, nm in enumerate(names) if nm.split(".")[0] in ("M7_8", "M9_10", "M11_12")])

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Top-plane rotations converted to active-member lengths (issue item 2c, Lacy section 5.5).
+"""Top-plane rotations converted to active-member lengths (Lacy section 5.5; docs/actuators.md).
 
 A slew such as Lacy's Slewing Experiment 1 (−10° → +10° about n̂1) prescribes the orientation
 of a truss's top plane, not the lengths of its active members.  The lengths q (one per active
@@ -150,7 +150,7 @@ class TopPlaneInverse:
                                item=item).coords
 
     def _sensitivity(self, x: np.ndarray) -> np.ndarray:
-        """∂x/∂q, shape (3 active, n, 3): B(x) dx = e_j (Hortobágyi eq. 2 / DESIGN.md)."""
+        """∂x/∂q, shape (3 active, n, 3): B(x) dx = e_j (Hortobágyi eq. 2)."""
         free = ~self.fixed
         B = compatibility_matrix(x, self.conn, free=free).toarray()
         rhs = np.zeros((self.conn.shape[0], self.active.size))

@@ -2,7 +2,6 @@
 """Reading validation case files (TOML) into :class:`Case` objects, with input checks."""
 from __future__ import annotations
 
-import functools
 import math
 import tomllib
 from dataclasses import dataclass, field
@@ -116,20 +115,10 @@ def _quantity(raw: Any, item: str) -> Quantity:
     return q
 
 
-@functools.lru_cache(maxsize=1)
 def analysis_names() -> tuple[str, ...]:
-    """Commands with an ``analyse(model_path, **options)`` entry point usable by a case."""
-    import importlib
-    import pkgutil
-
-    from .. import cli
-    out = []
-    for info in pkgutil.iter_modules(cli.__path__):
-        if info.name.startswith("cmd_") and info.name != "cmd_validate":
-            module = importlib.import_module(f"{cli.__name__}.{info.name}")
-            if callable(getattr(module, "analyse", None)):
-                out.append(info.name[4:])
-    return tuple(sorted(out))
+    """Analyses of the Python API that a case can run (``analysis = "static"`` …)."""
+    from .. import api
+    return tuple(sorted(api.ANALYSES))
 
 
 def resolve_model_path(model: str, case_file: Path) -> Path:

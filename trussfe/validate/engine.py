@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import importlib
+import inspect
 import logging
 import math
 import re
@@ -167,20 +168,25 @@ def _call_python(spec: str, options: dict) -> dict:
 
 
 def _analyse(name: str):
-    try:
-        module = importlib.import_module(f"trussfe.cli.cmd_{name}")
-    except ImportError:
-        import pkgutil
+    """The API function of an analysis, refusing options it does not take."""
+    from .. import api
 
-        from .. import cli
-        names = [i.name[4:] for i in pkgutil.iter_modules(cli.__path__)
-                 if i.name.startswith("cmd_")]
+    func = api.ANALYSES.get(name)
+    if func is None:
         from ..io.model_file import _suggest
         raise InputError("case.analysis", f"unknown analysis '{name}'"
-                                          f"{_suggest(name, names)}") from None
-    if not hasattr(module, "analyse"):
-        raise InputError("case.analysis", f"command '{name}' has no analyse() entry point")
-    return module.analyse
+                                          f"{_suggest(name, sorted(api.ANALYSES))}") from None
+    known = [p.name for p in inspect.signature(func).parameters.values()
+             if p.kind is inspect.Parameter.KEYWORD_ONLY]
+
+    def analyse(model: str, **options) -> dict:
+        for key in options:
+            if key not in known:
+                from ..io.model_file import _suggest
+                raise InputError("case.options", f"'{name}' has no option '{key}'"
+                                                 f"{_suggest(key, known)}")
+        return func(model, **options).to_dict()
+    return analyse
 
 
 def _catalogue_model(case: Case, folder: Path) -> Path:

@@ -1,0 +1,95 @@
+# SPDX-License-Identifier: MIT
+"""The typed tables a model may carry beside its geometry: ``Structure.extensions``.
+
+=================  ==============================================  ==========================
+table              value                                           data module
+=================  ==============================================  ==========================
+active_members     tuple of :class:`~.active.ActiveMember`         :mod:`trussfe.model.active`
+actuators          tuple of :class:`~.actuators.Actuator`          :mod:`trussfe.model.actuators`
+failure            :class:`~.failure.FailureLaws`                  :mod:`trussfe.model.failure`
+postcritical       :class:`~.postcritical.PostcriticalSettings`    :mod:`trussfe.model.postcritical`
+=================  ==============================================  ==========================
+
+Members are referred to by index, so a variant of a model with other members
+(:meth:`~trussfe.model.structure.Structure.subset_members`) renumbers them here.
+"""
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import replace
+from types import MappingProxyType
+from typing import Any
+
+import numpy as np
+
+from .active import ActiveMember
+from .actuators import Actuator
+from .failure import FailureLaws
+from .postcritical import PostcriticalSettings
+
+#: Extension tables, in the order a model file lists them.
+EXTENSION_TABLES = ("active_members", "actuators", "failure", "postcritical")
+
+
+def _members(items, cls, table: str, m: int) -> tuple:
+    out = tuple(items)
+    for a in out:
+        if not isinstance(a, cls):
+            raise TypeError(f"extensions[{table!r}]: expected {cls.__name__} items, "
+                            f"got {type(a).__name__}")
+        if not 0 <= a.member < m:
+            raise ValueError(f"extensions[{table!r}]: member index {a.member} is not one of "
+                             f"the {m} members")
+    return out
+
+
+def freeze_extensions(tables: Mapping[str, Any], n_members: int) -> Mapping[str, Any]:
+    """Check the extension tables of a model of ``n_members`` members, as a read-only mapping.
+
+    Lists become tuples; a ``None`` value drops the table; a ``postcritical`` dict becomes
+    :class:`PostcriticalSettings`.
+
+    Raises
+    ------
+    ValueError, TypeError
+        An unknown table, a value of the wrong type, a member index out of range.
+    """
+    out: dict[str, Any] = {}
+    for key, value in tables.items():
+        if value is None:
+            continue
+        if key == "active_members":
+            value = _members(value, ActiveMember, key, n_members)
+        elif key == "actuators":
+            value = _members(value, Actuator, key, n_members)
+        elif key == "failure":
+            if not isinstance(value, FailureLaws) or value.n_members != n_members:
+                raise ValueError(f"extensions['failure']: expected FailureLaws of "
+                                 f"{n_members} members")
+        elif key == "postcritical":
+            if isinstance(value, Mapping):
+                value = PostcriticalSettings(**value)
+            if not isinstance(value, PostcriticalSettings):
+                raise TypeError("extensions['postcritical']: expected PostcriticalSettings")
+        else:
+            raise ValueError(f"unknown extension table {key!r}; valid: "
+                             f"{', '.join(EXTENSION_TABLES)}")
+        out[key] = value
+    return MappingProxyType(out)
+
+
+def subset_extensions(tables: Mapping[str, Any], keep: np.ndarray) -> dict[str, Any]:
+    """The extension tables of the members ``keep`` (indices, ascending), renumbered.
+
+    Active members and actuators of members not kept are dropped.
+    """
+    new_index = {int(old): new for new, old in enumerate(keep)}
+    out: dict[str, Any] = {}
+    for key, value in tables.items():
+        if key in ("active_members", "actuators"):
+            value = tuple(replace(a, member=new_index[a.member]) for a in value
+                          if a.member in new_index)
+        elif key == "failure":
+            value = value.subset(np.asarray(keep, dtype=np.int64))
+        out[key] = value
+    return out

@@ -1,0 +1,209 @@
+# SPDX-License-Identifier: MIT
+"""Member failure laws, the data: Euler buckling, yield of the section, fracture at a strain.
+
+The laws act on bar members (co-rotational truss elements) and are given in the model file's
+``[failure]`` table (read by :mod:`trussfe.io.extension_tables`)::
+
+    [failure.default]                 # every bar member
+    buckling = "cap"                  # "none" | "cap" | "softening" | "remove"
+    effective_length_factor = 1.0     # K in P_cr = π² E I / (K L)²
+    yield = "none"                    # "none" | "cap" | "remove"  (uses yield_strength)
+    fracture_strain = 0.05            # tensile strain at which the bar breaks (removed)
+
+    [failure.members.M3]              # overrides for one member
+    buckling = "softening"
+    critical_load = 1200.0            # N, instead of the Euler formula
+    residual = 0.3                    # softening: force kept, as a fraction of P_cr
+    softening_strain = 0.002          # softening: extra shortening over which it drops
+
+Force–strain laws (``ε`` engineering strain, ``ε_p`` plastic strain, ``N_e = EA(ε − ε_p)``):
+
+* buckling ``cap``: ``N = max(N_e, −P_cr)`` — the elastic strut after buckling carries P_cr
+  while it shortens (the elastica is flat to first order at the bifurcation);
+  ``softening``: beyond ``ε_cr = −P_cr/EA`` the compression drops linearly to ``residual·P_cr``
+  over ``softening_strain`` and stays there; ``remove``: the bar is removed when ``N_e``
+  reaches ``−P_cr``.  The buckling laws are elastic (path independent): an unloading strut
+  retraces the curve, as an elastic strut does.
+* yield ``cap``: elastic–perfectly plastic with a committed plastic strain; ``remove``: removed
+  when ``|N| = A f_y``.
+* fracture: removed when ``ε`` reaches ``fracture_strain``.
+
+The force–strain laws themselves are :func:`trussfe.nonlinear.failure.axial_law`; this module
+holds what a model carries: the law and its parameters for every member.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import InputError
+
+BUCKLING = ("none", "cap", "softening", "remove")
+YIELD = ("none", "cap", "remove")
+
+
+@dataclass(frozen=True, eq=False)
+class FailureLaws:
+    """Failure-law data of every member, as read-only arrays of shape (member,).
+
+    Attributes
+    ----------
+    buckling : ndarray of int
+        Index into :data:`BUCKLING`.
+    critical_load : ndarray
+        Euler load P_cr > 0, N (``inf`` where no buckling law).
+    residual, softening_strain : ndarray
+        Softening-law parameters.
+    yield_mode : ndarray of int
+        Index into :data:`YIELD`.
+    yield_force : ndarray
+        ``A f_y``, N (``inf`` where no yield law).
+    fracture_strain : ndarray
+        Tensile fracture strain (``inf`` where none).
+
+    Examples
+    --------
+    >>> laws = FailureLaws.none(2)
+    >>> laws.buckling[0] = 1
+    Traceback (most recent call last):
+    ...
+    ValueError: assignment destination is read-only
+    """
+
+    buckling: np.ndarray
+    critical_load: np.ndarray
+    residual: np.ndarray
+    softening_strain: np.ndarray
+    yield_mode: np.ndarray
+    yield_force: np.ndarray
+    fracture_strain: np.ndarray
+
+    def __post_init__(self) -> None:
+        m = np.shape(self.buckling)[0] if np.ndim(self.buckling) else 0
+        for name in ("buckling", "yield_mode"):
+            object.__setattr__(self, name, _frozen(getattr(self, name), np.int64, m))
+        for name in ("critical_load", "residual", "softening_strain", "yield_force",
+                     "fracture_strain"):
+            object.__setattr__(self, name, _frozen(getattr(self, name), float, m))
+
+    @classmethod
+    def none(cls, m: int) -> "FailureLaws":
+        """No failure law on any of ``m`` members (purely elastic bars)."""
+        return cls(np.zeros(m, int), np.full(m, np.inf), np.ones(m), np.ones(m),
+                   np.zeros(m, int), np.full(m, np.inf), np.full(m, np.inf))
+
+    @property
+    def n_members(self) -> int:
+        """Number of members the laws describe."""
+        return self.buckling.shape[0]
+
+    @property
+    def any(self) -> np.ndarray:
+        """Members with at least one law, shape (member,)."""
+        return ((self.buckling > 0) | (self.yield_mode > 0)
+                | np.isfinite(self.fracture_strain))
+
+    def subset(self, idx: np.ndarray) -> "FailureLaws":
+        """Laws of the members ``idx`` (e.g. the members modelled as truss elements)."""
+        return FailureLaws(self.buckling[idx], self.critical_load[idx], self.residual[idx],
+                           self.softening_strain[idx], self.yield_mode[idx],
+                           self.yield_force[idx], self.fracture_strain[idx])
+
+
+_FIELDS = ("buckling", "critical_load", "residual", "softening_strain", "yield_mode",
+           "yield_force", "fracture_strain")
+
+
+def _frozen(a, dtype, m: int) -> np.ndarray:
+    out = np.array(a, dtype=dtype).reshape(m)
+    out.flags.writeable = False
+    return out
+
+
+def build_failure_laws(structure, default: dict | None = None,
+                       per_member: dict[int, dict] | None = None) -> FailureLaws:
+    """Failure laws from a default law and per-member overrides (dicts as in the file).
+
+    Parameters
+    ----------
+    structure : Structure
+    default : dict, optional
+        Keys of a ``[failure.default]`` table.
+    per_member : dict, optional
+        Member index → keys overriding the default for that member.
+    """
+    m = structure.n_members
+    none = FailureLaws.none(m)
+    arrays = {name: getattr(none, name).copy() for name in _FIELDS}
+    default = default or {}
+    per_member = per_member or {}
+    L = structure.lengths()
+    E, A = structure.E, structure.area
+    Imin = np.fmin(structure.Iy, structure.Iz)
+    fy = structure.yield_strength
+    for i in range(m):   # input checking only: once per member, at read time
+        law = {**default, **per_member.get(i, {})}
+        if not law:
+            continue
+        item = (f"failure.members.{structure.member_ids[i]}" if i in per_member
+                else "failure.default")
+        mid = structure.member_ids[i]
+        for k in ("effective_length_factor", "critical_load", "softening_strain",
+                  "yield_strength", "fracture_strain"):
+            if k in law and law[k] <= 0.0:
+                raise InputError(f"{item}.{k}", f"must be positive, got {law[k]}")
+        bmode = law.get("buckling", "none")
+        if bmode != "softening":
+            for k in ("residual", "softening_strain"):
+                if k in law:
+                    raise InputError(f"{item}.{k}", f"'{k}' belongs to buckling = "
+                                                    f"\"softening\", not \"{bmode}\"")
+        if bmode == "none":
+            for k in ("effective_length_factor", "critical_load"):
+                if k in law:
+                    raise InputError(f"{item}.{k}", "given without a buckling law; set "
+                                                    "buckling = \"cap\", \"softening\" or "
+                                                    "\"remove\"")
+        if bmode != "none":
+            if "critical_load" in law:
+                if "effective_length_factor" in law:
+                    raise InputError(f"{item}.critical_load", "give either critical_load or "
+                                                              "effective_length_factor")
+                Pcr = law["critical_load"]
+            else:
+                if not np.isfinite(Imin[i]):
+                    raise InputError(item, f"member {mid}: section "
+                                           f"'{structure.sections[i].name}' has no second "
+                                           "moment of area; give critical_load")
+                K = law.get("effective_length_factor", 1.0)
+                Pcr = math.pi ** 2 * E[i] * Imin[i] / (K * L[i]) ** 2
+            arrays["buckling"][i] = BUCKLING.index(bmode)
+            arrays["critical_load"][i] = Pcr
+            if bmode == "softening":
+                r = law.get("residual", None)
+                es = law.get("softening_strain", None)
+                if r is None or es is None:
+                    raise InputError(item, "buckling = \"softening\" needs residual and "
+                                           "softening_strain")
+                if not 0.0 <= r <= 1.0:
+                    raise InputError(f"{item}.residual", f"must lie in [0, 1] (a fraction of "
+                                                         f"P_cr), got {r}")
+                arrays["residual"][i] = r
+                arrays["softening_strain"][i] = es
+        ymode = law.get("yield", "none")
+        if ymode == "none" and "yield_strength" in law:
+            raise InputError(f"{item}.yield_strength", "given without a yield law; set "
+                                                       "yield = \"cap\" or \"remove\"")
+        if ymode != "none":
+            f = law.get("yield_strength", fy[i])
+            if not np.isfinite(f):
+                raise InputError(item, f"member {mid}: material "
+                                       f"'{structure.materials[i].name}' has no "
+                                       "yield_strength; give yield_strength")
+            arrays["yield_mode"][i] = YIELD.index(ymode)
+            arrays["yield_force"][i] = A[i] * f
+        if "fracture_strain" in law:
+            arrays["fracture_strain"][i] = law["fracture_strain"]
+    return FailureLaws(**arrays)
