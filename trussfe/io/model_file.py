@@ -66,7 +66,7 @@ def _neighbours(word: str, names: list[str], k: int) -> list[str]:
 
     ordered = sorted(names)
     i = bisect.bisect_left(ordered, word)
-    lo = max(0, i - k // 2)
+    lo = max(0, min(i - k // 2, len(ordered) - k))
     return ordered[lo:lo + k]
 
 
@@ -410,14 +410,30 @@ def _warn_coincident(coords: np.ndarray, node_ids, scale: float) -> None:
     """
     if len(coords) < 2:
         return
-    q = np.round(coords / (1e-9 * scale))
-    order = np.lexsort(q.T[::-1])
-    same = np.all(q[order[1:]] == q[order[:-1]], axis=1)
-    if not same.any():
+    unit = 1e9 / scale
+    if not math.isfinite(unit):
         return
-    k = int(np.flatnonzero(same)[0])
+    # positions from the lower corner in 1e-9 of the model size (below 1e9: no overflow)
+    q = ((coords - coords.min(axis=0)) * unit).astype(np.int64)
+    # one integer key per node (a wrapping hash of its coordinates): a 1-D sort finds equal
+    # keys; only then are nodes ordered and neighbours compared exactly
+    key = q[:, 0] * np.int64(0x9E3779B97F4A7C15 - (1 << 64))
+    for j in range(1, q.shape[1]):
+        key = (key ^ q[:, j]) * np.int64(0x100000001B3)
+    ks = np.sort(key)
+    if not np.any(ks[1:] == ks[:-1]):
+        return
+    order = np.argsort(key, kind="stable")
+    ks = key[order]
+    cand = np.flatnonzero(ks[1:] == ks[:-1])
+    if not cand.size:
+        return
+    same = cand[np.all(q[order[cand]] == q[order[cand + 1]], axis=1)]
+    if not same.size:
+        return
+    k = int(same[0])
     a, b = sorted((int(order[k]), int(order[k + 1])))
-    more = int(same.sum()) - 1
+    more = int(same.size) - 1
     where = ", ".join(f"{x:.6g}" for x in coords[a])
     log.warning("warning: %s", one_line(
         f"{_source.get()}nodes '{node_ids[a]}' and '{node_ids[b]}' coincide at ({where})"
