@@ -156,3 +156,48 @@ def test_fuzz_command_line_options(inputs, data, capsys):
         assert not any(w in out.lower().split() for w in ("nan", "inf")), out
     assert sorted(p.name for p in inputs.iterdir()) == ["act.toml", "m.toml", "mech.toml",
                                                           "mot.toml"]
+
+
+# ----------------------------------------------------------------------------- extension tables
+ext_keys = {
+    "active_members": ["base_mass", "base_length", "base_cg", "base_inertia", "tube_length",
+                       "min_length", "max_length", "junk"],
+    "actuators": ["leadscrew_gain", "mean_diameter", "thread", "thread_angle", "friction",
+                  "gearhead_gain", "armature_inertia", "resistance", "torque_constant",
+                  "back_emf_constant", "max_speed", "max_voltage", "require_self_locking",
+                  "convention", "junk"],
+    "failure": ["buckling", "effective_length_factor", "critical_load", "residual",
+                "softening_strain", "yield", "yield_strength", "fracture_strain", "junk"],
+    "postcritical": ["control", "steps", "step", "max_load_factor", "max_displacement",
+                     "monitor", "bar_model", "subdivisions", "imperfection", "branch", "junk"],
+}
+member_names = st.sampled_from(["active", "follower", "nobody", "", "active\n"])
+
+
+@settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(data=st.data())
+def test_fuzz_extension_tables(data):
+    """Fuzzed ``[active_members]``, ``[actuators]``, ``[failure]``, ``[postcritical]``
+    tables on the triangular truss: a Structure or one InputError."""
+    doc = loads(hc.ACT)
+    table = data.draw(st.sampled_from(sorted(ext_keys)))
+    keys = st.sampled_from(ext_keys[table])
+    if table in ("postcritical",):
+        doc[table] = data.draw(st.dictionaries(keys, values, max_size=5))
+    elif table == "failure":
+        doc[table] = data.draw(st.one_of(st.dictionaries(keys, values, max_size=5),
+                                         st.dictionaries(member_names, st.dictionaries(
+                                             keys, values, max_size=4), max_size=2)))
+    else:
+        base = dict(doc.get(table, {}))
+        extra = data.draw(st.dictionaries(member_names, st.one_of(
+            values, st.dictionaries(keys, values, max_size=5)), max_size=2))
+        base.update(extra)
+        doc[table] = base
+    try:
+        with np.errstate(all="raise"):
+            s = parse_model(doc, source="fuzz.toml")
+    except TrussfeError as err:
+        assert str(err) and "\n" not in str(err)
+        return
+    assert s.n_members == 2
