@@ -101,9 +101,9 @@ def main(argv: list[str] | None = None) -> int:
     Exit status: 0 success, 1 a validation check failed, 2 bad input or an analysis that
     cannot be carried out (one line on stderr), 3 an internal fault, 130 interrupted (Ctrl-C).
     """
-    tune_allocator()   # numpy temporaries reuse heap memory (see trussfe.allocator)
-    parser = build_parser()
     try:
+        tune_allocator()   # numpy temporaries reuse heap memory (see trussfe.allocator)
+        parser = build_parser()
         args = parser.parse_args(argv)
     except SystemExit as stop:      # --help, --version, or a bad option (message printed)
         return stop.code if isinstance(stop.code, int) else 2
@@ -176,4 +176,9 @@ def _run_command(args: argparse.Namespace) -> int:
 
 def run() -> None:
     """Console-script entry point."""
-    sys.exit(main())
+    try:
+        status = main()
+    except KeyboardInterrupt:       # Ctrl-C between two of main's own handlers
+        _error("", "interrupted; no output written")
+        status = 130
+    sys.exit(status)
