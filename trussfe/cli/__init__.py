@@ -147,7 +147,7 @@ def _run_command(args: argparse.Namespace) -> int:
     except KeyboardInterrupt:
         _error("", "interrupted; no output written")
         return 130
-    except (FloatingPointError, RuntimeWarning, np.linalg.LinAlgError) as exc:
+    except (FloatingPointError, OverflowError, RuntimeWarning, np.linalg.LinAlgError) as exc:
         _error(where, f"numerical failure ({one_line(str(exc), 200)}): {UNITS_HINT}")
         return 2
     except MemoryError:

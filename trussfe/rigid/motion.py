@@ -143,6 +143,11 @@ def third_order_response(t: np.ndarray, duration: float, *, damping_ratio: float
     if not (0.0 < z < 1.0):
         raise InputError("motion.damping_ratio", f"must lie in (0, 1), got {z}")
     wn = settling_constant / (z * settling_fraction * duration)
+    # the residues below take wn³: refuse time scales no actuator has (and floats cannot hold)
+    if not (1e-50 < wn < 1e50 and 1e-50 < real_root_factor * wn < 1e50):
+        raise InputError("motion.duration", f"{duration:g} s with these settling parameters "
+                         f"gives a natural frequency of {wn:g} rad/s, beyond any actuator; "
+                         "check the units (duration in s)")
     wd = wn * math.sqrt(1.0 - z * z)
     poles = np.array([-z * wn + 1j * wd, -z * wn - 1j * wd, -real_root_factor * wn])
     gain = real_root_factor * wn ** 3            # num = den(4): unit static gain
