@@ -25,9 +25,7 @@ from trussfe.rigid.chain import chain_kinematics  # noqa: E402
 from trussfe.rigid.motion import third_order_response  # noqa: E402
 from trussfe.rigid.reproductions import EQUILIBRIUM_LENGTH, double_octahedron  # noqa: E402
 from trussfe.rigid.slew import rotation_motion  # noqa: E402
-from trussfe.allocator import tune_allocator  # noqa: E402
 
-tune_allocator()   # numpy temporaries reuse heap pages, as in the trussfe command
 
 
 def best(fn, repeat=3):
@@ -70,4 +68,8 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    from trussfe.cli import environment_workers
+    from trussfe.threads import compute_threads
+
+    with compute_threads(workers=environment_workers(), blas=1):   # as the trussfe command
+        main()

@@ -15,9 +15,7 @@ from trussfe.elastic.along_motion import compare_with_rigid, elastic_along_motio
 from trussfe.elastic.reproductions import slew2_motion
 from trussfe.rigid.actuator_reproductions import slew1_motion, slew1_structure
 from trussfe.rigid.simulate import simulate
-from trussfe.allocator import tune_allocator
 
-tune_allocator()   # numpy temporaries reuse heap pages, as in the trussfe command
 
 
 def _step_by_step(sim, k):
@@ -60,4 +58,8 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    from trussfe.cli import environment_workers
+    from trussfe.threads import compute_threads
+
+    with compute_threads(workers=environment_workers(), blas=1):   # as the trussfe command
+        main()

@@ -13,9 +13,7 @@ import time
 import numpy as np
 
 from trussfe.kinematics import rank_analysis, trace_mechanism
-from trussfe.allocator import tune_allocator
 
-tune_allocator()   # numpy temporaries reuse heap pages, as in the trussfe command
 
 
 def spatial_mechanism(n_joints: int, seed: int = 0):
@@ -127,4 +125,8 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    from trussfe.cli import environment_workers
+    from trussfe.threads import compute_threads
+
+    with compute_threads(workers=environment_workers(), blas=1):   # as the trussfe command
+        main()

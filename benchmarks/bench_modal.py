@@ -29,10 +29,11 @@ for _v in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_v, "1")
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from trussfe.allocator import tune_allocator  # noqa: E402
+from trussfe.cli import environment_workers  # noqa: E402
+from trussfe.threads import compute_threads  # noqa: E402
 from trussfe.fem import discretise  # noqa: E402
 from trussfe.fem.modal import RESOLVED_RESIDUAL, mass_matrix, solve_modes  # noqa: E402
-from trussfe.fem.solver import free_submatrix  # noqa: E402
+from trussfe.linalg import free_submatrix  # noqa: E402
 from trussfe.model.sections import Material, Section  # noqa: E402
 from trussfe.model.structure import Structure  # noqa: E402
 
@@ -156,7 +157,6 @@ def main(argv=None) -> None:
     ap.add_argument("--modes", type=int, default=10)
     ap.add_argument("--no-opensees", action="store_true")
     a = ap.parse_args(argv)
-    tuned = tune_allocator()
     rows = []
     cases = [(f"chain {b}", lambda b=b: octahedral_chain(b)) for b in a.bays]
     if a.grid:
@@ -166,7 +166,8 @@ def main(argv=None) -> None:
           f"{'max |df/f|':>11} {'f1 [Hz]':>12} {'f_last [Hz]':>12}")
     for name, build in cases:
         s = build()
-        r, t = trussfe_modes(s, a.modes)
+        with compute_threads(workers=environment_workers(), blas=1):   # as the command does
+            r, t = trussfe_modes(s, a.modes)
         f = r.frequencies_hz
         res = float(np.max(r.residuals))
         ops = None if a.no_opensees else opensees_modes(s, a.modes, r)
@@ -180,7 +181,6 @@ def main(argv=None) -> None:
     print(f"\nresidual: max over the modes of ‖Kφ − ω²Mφ‖ / (ω²‖Mφ‖) with trussfe's K and M; "
           f"above {RESOLVED_RESIDUAL} a mode is not resolved in double precision "
           "(trussfe modes refuses it).")
-    print(f"allocator thresholds raised as by the trussfe command: {'yes' if tuned else 'no'}")
 
 
 if __name__ == "__main__":

@@ -20,9 +20,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from trussfe.io.model_file import read_model  # noqa: E402
 from trussfe.io.model_writer import write_model  # noqa: E402
 from trussfe.models import double_octahedral_chain  # noqa: E402
-from trussfe.allocator import tune_allocator  # noqa: E402
 
-tune_allocator()   # numpy temporaries reuse heap pages, as in the trussfe command
 
 
 def _best(fn, repeat: int) -> float:
@@ -63,4 +61,8 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    from trussfe.cli import environment_workers
+    from trussfe.threads import compute_threads
+
+    with compute_threads(workers=environment_workers(), blas=1):   # as the trussfe command
+        main()

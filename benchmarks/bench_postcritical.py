@@ -23,10 +23,8 @@ from trussfe._resources import mesh_path
 from trussfe.io.model_file import read_model
 from trussfe.nonlinear import NonlinearModel, follow_path
 from trussfe.nonlinear.reproductions import double_layer_grid
-from trussfe.nonlinear.solvers import factorize
-from trussfe.allocator import tune_allocator
+from trussfe.linalg import factor
 
-tune_allocator()   # numpy temporaries reuse heap pages, as in the trussfe command
 
 
 def von_mises(steps: int = 200):
@@ -47,7 +45,7 @@ def lattice(n: int = 36, events: int = 50, law: str = "cap"):
     # first arc length: the linear displacement norm of one load factor unit
     free = np.flatnonzero(m.free)
     K = m.reference_tangent()[free][:, free]
-    ds = float(np.linalg.norm(factorize(K).solve(m.load[free])))
+    ds = float(np.linalg.norm(factor(K, "symmetric").solve(m.load[free], refine=False)))
     r = follow_path(m, "arc-length", steps=100000, monitor=m.dof(centre, 2),
                     max_failures=events, step=ds)
     dt = time.perf_counter() - t
@@ -100,4 +98,8 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    from trussfe.cli import environment_workers
+    from trussfe.threads import compute_threads
+
+    with compute_threads(workers=environment_workers(), blas=1):   # as the trussfe command
+        main()

@@ -26,10 +26,8 @@ import numpy as np  # noqa: E402
 from trussfe.rigid.motion import third_order_motion  # noqa: E402
 from trussfe.rigid.reproductions import double_octahedral_chain, double_octahedron  # noqa: E402
 from trussfe.rigid.simulate import simulate  # noqa: E402
-from trussfe.allocator import tune_allocator  # noqa: E402
 from trussfe.threads import worker_count  # noqa: E402
 
-tune_allocator()   # numpy temporaries reuse heap pages, as in the trussfe command
 
 
 def _best(fn, repeat):
@@ -102,4 +100,8 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    from trussfe.cli import environment_workers
+    from trussfe.threads import compute_threads
+
+    with compute_threads(workers=environment_workers(), blas=1):   # as the trussfe command
+        main()

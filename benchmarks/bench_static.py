@@ -41,9 +41,10 @@ from trussfe import read_model  # noqa: E402
 from trussfe.fem import discretise  # noqa: E402
 from trussfe.fem.static import solve_static  # noqa: E402
 from trussfe.models import double_octahedral_chain  # noqa: E402
-from trussfe.allocator import tune_allocator  # noqa: E402
+from trussfe.cli import environment_workers  # noqa: E402
+from trussfe.io.toml_text import compiled_parser  # noqa: E402
+from trussfe.threads import compute_threads  # noqa: E402
 
-tune_allocator()   # numpy temporaries reuse heap pages, as in the trussfe command
 
 
 def write_as_mesh_model(structure, folder: Path) -> Path:
@@ -146,7 +147,9 @@ def main() -> None:
         s = build()
         runs = []
         for _ in range(repeat):
-            with tempfile.TemporaryDirectory() as tmp:
+            # thread counts and TOML parser as the trussfe command sets them
+            with tempfile.TemporaryDirectory() as tmp, compiled_parser(), \
+                    compute_threads(workers=environment_workers(), blas=1):
                 runs.append(time_trussfe(s, Path(tmp)))
         r = min(runs, key=lambda x: x["total"])
         o = None

@@ -12,9 +12,7 @@ import argparse
 import time
 
 from trussfe.elastic.transient_studies import triangle_slew
-from trussfe.allocator import tune_allocator
 
-tune_allocator()   # numpy temporaries reuse heap pages, as in the trussfe command
 
 
 def run(cases) -> list[tuple]:
@@ -42,4 +40,8 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    from trussfe.cli import environment_workers
+    from trussfe.threads import compute_threads
+
+    with compute_threads(workers=environment_workers(), blas=1):   # as the trussfe command
+        main()

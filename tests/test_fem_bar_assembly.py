@@ -138,7 +138,7 @@ def test_duplicate_bars_are_summed():
 def test_free_submatrix_equals_scipy_indexing():
     """free_submatrix(K, free) is scipy's K[free][:, free] (independent implementation),
     including fixed DOFs at both ends and in the middle of the numbering."""
-    from trussfe.fem.solver import free_submatrix
+    from trussfe.linalg import free_submatrix
 
     fe = discretise(double_octahedral_chain(4))
     K = fe.stiffness()

@@ -134,7 +134,7 @@ def test_sparse_backends_agree_with_dense_in_3d(backend):
     one has two mechanisms (a joint on one bar moves on a sphere); removing every diagonal of
     the top layer leaves a sway mechanism field.  Each sparse backend (inertia of BᵀB − σ²I)
     gives the dense SVD's rank, and its mechanism basis satisfies B N ≈ 0."""
-    from trussfe.fem.linsolve import pardiso_available
+    from trussfe.linalg.pardiso import available as pardiso_available
     from trussfe.kinematics.compatibility import compatibility_matrix
     if backend == "pardiso" and not pardiso_available():
         pytest.skip("PARDISO not installed")

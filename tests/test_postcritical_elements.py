@@ -1,8 +1,7 @@
-"""Co-rotational elements, assembly and inertia (trussfe.nonlinear.elements / solvers).
+"""Co-rotational elements and assembly (trussfe.nonlinear.elements).
 
 Every tangent is checked against an independent computation: central finite differences of
-the internal forces, the closed-form Hermite geometric stiffness, the FE core's ``K + Kg``, and
-dense eigenvalues for the inertia count.
+the internal forces, the closed-form Hermite geometric stiffness, the FE core's ``K + Kg``.
 """
 import numpy as np
 import pytest
@@ -13,7 +12,6 @@ from trussfe.model.sections import Material, Section
 from trussfe.model.structure import build_structure
 from trussfe.nonlinear import NonlinearModel
 from trussfe.nonlinear.elements import beam2d_local, beam2d_matrices
-from trussfe.nonlinear.solvers import critical_mode, factorize
 
 SEC = Section(name="s", area=1e-4, Iy=2e-8, Iz=2e-8, J=4e-8, c=0.01)
 MAT = Material(name="m", E=2e11, G=8e10, density=7800.0, yield_strength=2.5e8)
@@ -118,23 +116,3 @@ def test_truss_tangent_equals_fe_core_stiffness_plus_geometric_stiffness():
     u = np.zeros(m.ndof)
     u[free] = sp.linalg.spsolve(m.reference_tangent()[free][:, free].tocsc(), m.load[free])
     assert_allclose(m.linear_axial_forces(u)[0], N, rtol=1e-9, atol=1e-9 * np.abs(N).max())
-
-
-@pytest.mark.parametrize("seed", [0, 1, 2])
-def test_inertia_from_pivots_equals_eigenvalue_count(seed):
-    """Sylvester: negative pivots of the symmetric LDLᵀ = negative eigenvalues (dense eigh)."""
-    rng = np.random.default_rng(seed)
-    A = rng.normal(size=(60, 60)) * (rng.random((60, 60)) < 0.1)
-    A = A + A.T + np.diag(rng.normal(size=60))
-    f = factorize(sp.csr_matrix(A))
-    assert f.negative == int(np.sum(np.linalg.eigvalsh(A) < 0))
-    b = rng.normal(size=60)
-    assert_allclose(A @ f.solve(b), b, atol=1e-8 * np.abs(b).max() * np.linalg.cond(A))
-
-
-def test_critical_mode_is_eigenvector_nearest_zero():
-    """critical_mode returns the eigenpair of smallest |λ| (dense reference)."""
-    A = np.diag([5.0, -0.01, 2.0, 0.3])
-    w, v = critical_mode(sp.csr_matrix(A))
-    assert w == pytest.approx(-0.01)
-    assert abs(v[1]) == pytest.approx(1.0)

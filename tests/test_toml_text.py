@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
-"""TOML parsing (trussfe.io.toml_text): the compiled parser for large documents changes
-nothing that tomllib decides."""
+"""TOML parsing (trussfe.io.toml_text): the compiled parser for large documents, used inside
+``compiled_parser()`` (the command line), changes nothing that tomllib decides."""
 from __future__ import annotations
 
 import math
@@ -23,26 +23,43 @@ def test_large_document_same_as_tomllib():
     pytest.importorskip("rtoml")
     text = _big_loads()
     assert len(text) >= toml_text.FAST_MIN_BYTES
+    with toml_text.compiled_parser():
+        assert toml_text.loads(text) == tomllib.loads(text)
+
+
+def test_library_default_is_tomllib(monkeypatch):
+    """Outside the command line's context the compiled parser is never asked (a stand-in
+    that would fail if it were)."""
+    import sys
+    import types
+
+    fake = types.ModuleType("rtoml")
+    fake.loads = lambda text: {"not": "tomllib"}
+    monkeypatch.setitem(sys.modules, "rtoml", fake)
+    text = _big_loads()
     assert toml_text.loads(text) == tomllib.loads(text)
+    with toml_text.compiled_parser():
+        assert toml_text.loads(text) == {"not": "tomllib"}
 
 
 def test_what_the_compiled_parser_refuses_tomllib_decides():
     """1e400 overflows in rtoml but is inf for tomllib: the answer is tomllib's."""
     text = _big_loads() + "[extra]\nbig = 1e400\n"
-    assert math.isinf(toml_text.loads(text)["extra"]["big"])
+    with toml_text.compiled_parser():
+        assert math.isinf(toml_text.loads(text)["extra"]["big"])
 
 
 def test_malformed_large_document_raises_tomllib_error():
     """A duplicate key in a large document: tomllib's error and message."""
     text = _big_loads() + '[loads]\n"0" = [1.0, 2.0, 3.0]\n'
-    with pytest.raises(tomllib.TOMLDecodeError) as ours:
+    with pytest.raises(tomllib.TOMLDecodeError) as ours, toml_text.compiled_parser():
         toml_text.loads(text)
     with pytest.raises(tomllib.TOMLDecodeError) as ref:
         tomllib.loads(text)
     assert str(ours.value) == str(ref.value)
 
 
-def test_large_model_file_reads_the_same(tmp_path, monkeypatch):
+def test_large_model_file_reads_the_same(tmp_path):
     """A 4,000-node line model with a load on every node: read through the
     compiled parser and through tomllib alone, the same loads and geometry."""
     pytest.importorskip("rtoml")
@@ -61,8 +78,8 @@ def test_large_model_file_reads_the_same(tmp_path, monkeypatch):
     path = tmp_path / "line.toml"
     path.write_text("\n".join(lines) + "\n")
     assert path.stat().st_size >= toml_text.FAST_MIN_BYTES
-    fast = read_model(path)
-    monkeypatch.setattr(toml_text, "FAST_MIN_BYTES", 1 << 62)
+    with toml_text.compiled_parser():
+        fast = read_model(path)
     slow = read_model(path)
     np.testing.assert_array_equal(fast.loads, slow.loads)
     np.testing.assert_array_equal(fast.coords, slow.coords)

@@ -11,7 +11,7 @@ import pytest
 
 from trussfe.errors import MechanismError
 from trussfe.fem import discretise
-from trussfe.fem.banded import band_layout_free
+from trussfe.linalg.banded import band_layout_free
 from trussfe.fem.solver import factorise_truss
 from trussfe.fem.static import solve_static
 from trussfe.fem.truss_band import internal_forces, is_plain_truss, truss_band_layout

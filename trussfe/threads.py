@@ -1,17 +1,36 @@
 # SPDX-License-Identifier: MIT
-"""Worker threads for independent blocks of array work.
+"""Worker threads for independent blocks of array work, and the one place thread counts are
+set.
 
 numpy releases the GIL inside its array loops and LAPACK calls, so blocks of time steps that
 do not depend on each other (the force stage of a long motion, the stacked inverses of the
 compatibility blocks) run in parallel in plain threads, with bit-identical results: every
-block is computed exactly as it would be alone.  ``TRUSSFE_THREADS`` sets the number of
-threads (1 turns this off); the default is the number of usable cores, at most 4.
+block is computed exactly as it would be alone.
+
+Thread counts are arguments, never set by library functions:
+
+* :func:`parallel_map` takes ``workers``; without it, the count given to the enclosing
+  :func:`compute_threads`, else the usable cores (at most :data:`MAX_THREADS`);
+* :func:`compute_threads` is the boundary: the command line wraps every command in it (its
+  ``TRUSSFE_THREADS`` sets the workers), and a program using trussfe as a library may do the
+  same.  It also limits BLAS to ``blas`` threads (one by default), once, in the calling thread
+  before any worker starts, and lifts the limit when the context ends — the BLAS libraries
+  keep one process-wide count, which OpenBLAS lets only the thread that set it restore, so
+  the limit cannot be applied inside functions that run in worker threads.  One BLAS thread
+  is what the solvers want: the band routines work on blocks of ~17 × 17, where BLAS threads
+  are 3–7x slower, the Lanczos vectors are level-1 BLAS, and trussfe's own workers take the
+  independent blocks.
 """
 from __future__ import annotations
 
+import contextvars
 import os
+from collections.abc import Iterator
 from concurrent.futures import ThreadPoolExecutor
+from contextlib import contextmanager
 from typing import Callable, Iterable, TypeVar
+
+from threadpoolctl import ThreadpoolController
 
 T = TypeVar("T")
 R = TypeVar("R")
@@ -19,21 +38,19 @@ R = TypeVar("R")
 #: Default upper limit on worker threads (the blocks are memory-bound beyond a few).
 MAX_THREADS = 4
 
+#: Worker count of the enclosing :func:`compute_threads` (None: the default).
+_WORKERS: contextvars.ContextVar[int | None] = contextvars.ContextVar("trussfe_workers",
+                                                                     default=None)
 
-def worker_count() -> int:
-    """Number of worker threads: ``TRUSSFE_THREADS`` if set, else the usable cores (≤ 4).
+
+def default_worker_count() -> int:
+    """The usable cores, at most :data:`MAX_THREADS`.
 
     Examples
     --------
-    >>> worker_count() >= 1
+    >>> 1 <= default_worker_count() <= MAX_THREADS
     True
     """
-    env = os.environ.get("TRUSSFE_THREADS", "").strip()
-    if env:
-        try:
-            return max(1, int(env))
-        except ValueError:
-            pass
     try:
         cores = len(os.sched_getaffinity(0))
     except AttributeError:                                    # not Linux
@@ -41,17 +58,73 @@ def worker_count() -> int:
     return max(1, min(MAX_THREADS, cores))
 
 
-def parallel_map(fn: Callable[[T], R], items: Iterable[T]) -> list[R]:
-    """``[fn(x) for x in items]`` on :func:`worker_count` threads, results in order.
+def worker_count(workers: int | None = None) -> int:
+    """Number of worker threads: ``workers`` if given, else the enclosing
+    :func:`compute_threads`'s, else :func:`default_worker_count`.
 
     Examples
     --------
-    >>> parallel_map(lambda x: x * x, range(5))
+    >>> worker_count(3)
+    3
+    >>> with compute_threads(workers=2, blas=None):
+    ...     worker_count()
+    2
+    """
+    if workers is None:
+        workers = _WORKERS.get()
+    return max(1, int(workers)) if workers is not None else default_worker_count()
+
+
+def parallel_map(fn: Callable[[T], R], items: Iterable[T],
+                 workers: int | None = None) -> list[R]:
+    """``[fn(x) for x in items]`` on :func:`worker_count` threads, results in order.
+
+    Each call runs in a copy of the caller's context, so a nested :func:`parallel_map` sees
+    the same worker count.
+
+    Examples
+    --------
+    >>> parallel_map(lambda x: x * x, range(5), workers=2)
     [0, 1, 4, 9, 16]
     """
     items = list(items)
-    n = min(worker_count(), len(items))
+    n = min(worker_count(workers), len(items))
     if n <= 1:
         return [fn(x) for x in items]
+    contexts = [contextvars.copy_context() for _ in items]   # one per call: not shared
     with ThreadPoolExecutor(max_workers=n) as pool:
-        return list(pool.map(fn, items))
+        return list(pool.map(lambda cx: cx[0].run(fn, cx[1]), zip(contexts, items)))
+
+
+@contextmanager
+def compute_threads(workers: int | None = None, blas: int | None = 1) -> Iterator[None]:
+    """Thread counts for the computations inside the context (see the module notes).
+
+    Parameters
+    ----------
+    workers : int, optional
+        Worker threads of :func:`parallel_map` (default: the usable cores, at most 4).
+    blas : int or None
+        Threads of the OpenBLAS (or BLIS) libraries of numpy and scipy; None leaves them
+        alone.  MKL, loaded for PARDISO, keeps its own threads: PARDISO's factorisation is
+        parallel at the level of the elimination tree, where threads pay.
+
+    Examples
+    --------
+    >>> from threadpoolctl import threadpool_info
+    >>> with compute_threads(blas=1):
+    ...     {p["num_threads"] for p in threadpool_info() if p["internal_api"] == "openblas"}
+    {1}
+    """
+    token = _WORKERS.set(workers)
+    try:
+        if blas is None:
+            yield
+        else:
+            # OpenBLAS and BLIS (what numpy and scipy ship with); MKL, which PARDISO loads,
+            # keeps its own threads for its parallel factorisation
+            libs = ThreadpoolController().select(internal_api=["openblas", "blis"])
+            with libs.limit(limits=int(blas)):
+                yield
+    finally:
+        _WORKERS.reset(token)

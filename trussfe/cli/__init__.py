@@ -23,9 +23,10 @@ from typing import Iterator
 import numpy as np
 
 from .. import __version__
-from ..allocator import tune_allocator
 from ..errors import TrussfeError, one_line
 from ..io.output import output_transaction
+from ..io.toml_text import compiled_parser
+from ..threads import compute_threads
 from .options import check_paths
 
 #: What a numerical overflow in a run usually means, appended to its message.
@@ -102,7 +103,6 @@ def main(argv: list[str] | None = None) -> int:
     cannot be carried out (one line on stderr), 3 an internal fault, 130 interrupted (Ctrl-C).
     """
     try:
-        tune_allocator()   # numpy temporaries reuse heap memory (see trussfe.allocator)
         parser = build_parser()
         args = parser.parse_args(argv)
     except SystemExit as stop:      # --help, --version, or a bad option (message printed)
@@ -133,7 +133,11 @@ def _run_command(args: argparse.Namespace) -> int:
     """Run the parsed command inside one output transaction; map failures to exit codes."""
     where = getattr(args, "model", None) or ""
     try:
-        with _numerics_checked() as caught, output_transaction() as tx:
+        # the one place thread counts are set (trussfe.threads): workers from the
+        # environment, one BLAS thread; large model files through the compiled TOML parser
+        # (trussfe.io.toml_text)
+        with _numerics_checked() as caught, output_transaction() as tx, \
+                compute_threads(workers=environment_workers(), blas=1), compiled_parser():
             status = int(args.func(args) or 0)
             sys.stdout.flush()          # a closed pipe is found here, before the commit
             with _interrupts_held():
@@ -172,6 +176,16 @@ def _run_command(args: argparse.Namespace) -> int:
         _error("", f"internal error ({type(exc).__name__}: {one_line(str(exc), 300)}); "
                    "rerun with TRUSSFE_DEBUG=1 for a traceback")
         return 3
+
+
+def environment_workers() -> int | None:
+    """``TRUSSFE_THREADS`` (a positive integer) or None (the default count); anything else
+    is ignored, as an unset variable."""
+    env = os.environ.get("TRUSSFE_THREADS", "").strip()
+    try:
+        return max(1, int(env)) if env else None
+    except ValueError:
+        return None
 
 
 def run() -> None:

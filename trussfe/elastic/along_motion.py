@@ -41,7 +41,8 @@ import numpy as np
 
 from ..errors import AnalysisError, InputError
 from ..fem.discretisation import FEModel, discretise
-from ..fem.solver import factorise
+from ..fem.solver import factorise, solve_free
+from ..linalg import SingularMatrixError
 from ..model.structure import Structure
 from ..rigid.forces import MemberBodies, member_bodies
 from ..rigid.kinematics import Kinematics
@@ -154,9 +155,11 @@ def _solve_block(structure: Structure, coords: np.ndarray, ml: MotionLoads,
     # against 1.4 s for 221 steps of the double octahedron, 1e5 DOFs)
     fac = factorise(K, fe.free, fe=fe, item=structure.source or structure.name,
                     backend=backend)
-    u = fac.solve(f)
-    if not np.all(np.isfinite(u)):
-        raise AnalysisError(structure.source or structure.name, "non-finite displacements")
+    try:
+        u = solve_free(fac, fe.free, f)
+    except SingularMatrixError:                # a non-finite solution
+        raise AnalysisError(structure.source or structure.name,
+                            "non-finite displacements") from None
     r = np.where(fe.fixed, K @ u - f, 0.0)
     disp = fe.node_values(u)[:, :dim].reshape(nt, n, dim)
     react = fe.node_values(r)[:, :dim].reshape(nt, n, dim)

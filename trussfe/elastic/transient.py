@@ -68,6 +68,7 @@ from ..budget import along_motion_bytes, require
 from ..errors import AnalysisError, InputError
 from ..fem.discretisation import BAR_MODELS, FEModel, discretise
 from ..fem.solver import factorise
+from ..linalg import factor
 from ..fem.static import section_forces as fe_section_forces
 from ..model.structure import Structure
 from ..rigid.forces import member_bodies
@@ -355,12 +356,13 @@ class _Sparse:
         self.M = block.sparse("M", free)
         self.C = [alpha * m + beta * k for k, m in zip(self.K, self.M)]
         n = 1 if frozen else len(self.K)
-        self._lu = [spla.splu((self.M[j] + GAMMA * dt * self.C[j]
-                               + BETA * dt * dt * self.K[j]).tocsc()) for j in range(n)]
+        # the Newmark matrix M + γΔt C + βΔt² K is symmetric positive definite
+        self._lu = [factor(self.M[j] + GAMMA * dt * self.C[j] + BETA * dt * dt * self.K[j],
+                           "spd") for j in range(n)]
         self.frozen = frozen
 
     def step(self, j, rhs):
-        return self._lu[0 if self.frozen else j].solve(rhs)
+        return self._lu[0 if self.frozen else j].solve(rhs, refine=False)
 
     def kmul(self, j, x):
         return self.K[j] @ x
@@ -373,7 +375,7 @@ class _Sparse:
         return np.array([xi @ (a @ yi) for a, xi, yi in zip(A, x, y)])
 
     def solve_K(self, F):
-        return np.stack([spla.spsolve(k, f) for k, f in zip(self.K, F)])
+        return np.stack([factor(k, "spd").solve(f, refine=False) for k, f in zip(self.K, F)])
 
 
 def transient_response(structure: Structure, motion: Motion, *, bar_model: str = "pinned-beam",

@@ -4,10 +4,10 @@
 >>> from trussfe.fem import discretise, solve_static  # the public entry points
 """
 from .discretisation import DEFAULT_FRAME_SUBDIVISIONS, FEModel, discretise, local_axes
-from .solver import Factorised, factorise, null_space
+from .solver import factorise, solve_free
 from .static import StaticResult, section_forces, solve_static, static_json
 from .stress import von_mises
 
-__all__ = ["DEFAULT_FRAME_SUBDIVISIONS", "FEModel", "discretise", "local_axes", "Factorised",
-           "factorise", "null_space", "StaticResult", "section_forces", "solve_static",
-           "static_json", "von_mises"]
+__all__ = ["DEFAULT_FRAME_SUBDIVISIONS", "FEModel", "discretise", "local_axes", "factorise",
+           "solve_free", "StaticResult", "section_forces", "solve_static", "static_json",
+           "von_mises"]

@@ -214,7 +214,7 @@ def solve_buckling(structure: Structure, count: int = 4, bar_model: str = "pinne
         theta, V = theta[order], V[:, order]
     else:
         fac = factorise(K, free, fe=fe, item=item)
-        op = spla.LinearOperator((n, n), matvec=fac.lu.solve, dtype=float)
+        op = spla.LinearOperator((n, n), matvec=fac.solve, dtype=float)
         theta, V = spla.eigsh(Kgff, k=count, M=Kff, Minv=op, which="LM")
     tiny = np.abs(theta) <= 1e-12 * np.abs(theta).max()
     if np.any(tiny) or theta.size < count:

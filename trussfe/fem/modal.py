@@ -5,9 +5,9 @@ The generalized eigenproblem on the free DOFs
 
 .. math:: K \\varphi = \\omega^2 M \\varphi, \\qquad \\varphi^T M \\varphi = 1
 
-is solved by shift-invert Lanczos (:mod:`trussfe.fem.lanczos`; ARPACK through
+is solved by shift-invert Lanczos (:mod:`trussfe.linalg.eigen`; ARPACK through
 ``scipy.sparse.linalg.eigsh`` when that does not converge without restarts) with the
-factorisation of ``K − σM`` from :mod:`trussfe.fem.linsolve`, or densely for small models.
+factorisation of ``K − σM`` from :func:`trussfe.linalg.factor`, or densely for small models.
 
 Mass
 ----
@@ -31,7 +31,7 @@ Mass
 Rigid-body and mechanism modes
 ------------------------------
 When the free stiffness is singular (an unsupported structure or a mechanism) its null space
-is computed first (:func:`trussfe.fem.solver.null_space`, scaled tolerance 1e-10); its
+is computed first (:func:`trussfe.linalg.stiffness_null_space`, scaled tolerance 1e-10); its
 dimension ``r`` is the number of zero-frequency modes.  They are reported as exactly 0 Hz with
 ``kind = "rigid"`` — never as tiny, meaningless frequencies — and the shift becomes
 ``σ = −10⁻⁶ λ_ref`` (``λ_ref`` the median of ``K_ii / M_ii``) so ``K − σM`` can be factorised.
@@ -50,11 +50,10 @@ import scipy.sparse.linalg as spla
 from ..errors import AnalysisError, InputError
 from ..model.structure import Structure
 from .discretisation import FEModel, discretise
+from .. import linalg
+from ..linalg import FreeBlock, free_submatrix, stiffness_null_space
+from ..linalg.eigen import shift_invert_lanczos
 from ..threads import parallel_map
-from .banded import band_layout_free, banded_factor
-from .lanczos import shift_invert_lanczos
-from .linsolve import SingularMatrixError, factorize
-from .solver import FreeBlock, free_submatrix, null_space
 
 log = logging.getLogger(__name__)
 
@@ -241,7 +240,7 @@ def generalized_eigen(Kff: sp.spmatrix, Mff: sp.spmatrix, count: int, sigma: flo
     count : int
     sigma : float
         Shift (≤ the lowest eigenvalue wanted).
-    factor : object with ``solve``, optional
+    factor : trussfe.linalg.Factor, optional
         A factorisation of ``K − σM`` to reuse.
 
     Returns
@@ -288,10 +287,13 @@ def generalized_eigen(Kff: sp.spmatrix, Mff: sp.spmatrix, count: int, sigma: flo
         lam = sigma + 1.0 / mu
     else:
         if factor is None:
-            A = shifted()
-            factor = banded_factor(A) or factorize(A, symmetric=True)
-        # The Lanczos iteration needs no refined solves: use the factor's plain solve.
-        solve = getattr(factor, "_solve", factor.solve)
+            factor = linalg.factor(shifted(), "spd")
+        fac = factor
+
+        def solve(b):
+            # the Lanczos iteration needs no refined solves: the factor's plain solve
+            return fac.solve(b, refine=False)
+
         found = shift_invert_lanczos(solve, Mff, count, sigma=sigma)
         if found is not None:
             lam, V = found
@@ -382,76 +384,122 @@ def solve_modes(structure: Structure, count: int = 6, mass: str = "consistent",
     count = int(count)
     if fe is None:
         fe = discretise(structure, bar_model=bar_model, subdivisions=subdivisions)
-    free = fe.free
-    n = free.size
+    n = fe.free.size
     if n == 0:
         raise AnalysisError(item, "every DOF is supported: there is nothing to vibrate")
     dense = n <= DENSE_MODAL_LIMIT or count >= n - 1
+    Kff, fac, Mff = _free_matrices(fe, mass, include_nodal_masses, dense)
+    _check_mass(Mff, count, fe, mass, item)
+    rigid, sigma, factor = _zero_frequency_modes(Kff, Mff, fac, item)
+    lam, V = generalized_eigen(Kff, Mff, count, sigma=sigma, factor=factor, item=item)
+    lam = _clean_eigenvalues(lam, min(rigid, count), Kff, Mff, item)
+    residuals = eigen_residuals(Kff, Mff, lam, V, min(rigid, count))
+    if check_resolution:
+        _check_resolution(residuals, lam, Kff, Mff, item)
+    shapes = np.zeros((fe.n_dof, count))
+    shapes[fe.free] = V
+    gamma, total = _participation(fe, Mff, V)
+    freq = np.sqrt(lam) / (2.0 * np.pi)
+    log.info("modes: %d of %d free DOFs, f1 = %.6g Hz", count, n, freq[0])
+    return ModalResult(fe=fe, mass_kind=mass, eigenvalues=lam, frequencies_hz=freq,
+                       shapes=shapes, rigid_modes=rigid, participation=gamma,
+                       effective_mass=gamma**2, total_mass=total, residuals=residuals)
 
-    def stiffness_and_band():
+
+def _free_matrices(fe: FEModel, mass: str, include_nodal_masses: bool, dense: bool):
+    """K_ff, its factor and M_ff, the first two made while M is assembled (two worker
+    threads, :mod:`trussfe.threads`).
+
+    The factor is None on the dense path and when a DOF has no stiffness (a mechanism: its
+    null space comes next, :func:`_zero_frequency_modes`).  A long, narrow structure gets the
+    banded factor of K_ff straight from K's free rows and columns, and K_ff stays an operator
+    (:class:`~trussfe.linalg.FreeBlock`) formed only if a later step needs it.
+    """
+    free = fe.free
+    n = free.size
+
+    def stiffness_and_factor():
         K = fe.stiffness(copy=False)                 # read only
-        if not dense:
-            # a long, narrow structure: the banded factor of K_ff straight from K's free rows
-            # and columns (K_ff itself is formed only if a later step needs it), made while M
-            # is assembled
-            layout = band_layout_free(K, free)
-            band = banded_factor(layout=layout) if layout is not None else None
-            if band is not None:
-                return FreeBlock(K, free), band
-        return (free_submatrix(K, free) if n < fe.n_dof else K.copy()), None
+        block = FreeBlock(K, free)
+        if dense or np.any(block.diagonal() <= 0):
+            return (free_submatrix(K, free) if n < fe.n_dof else K.copy()), None
+        fac = linalg.factor(block, "spd", singular="flag")
+        if fac.backend in ("banded", "banded-lu"):
+            return block, fac
+        return (block.tocsr() if n < fe.n_dof else K.copy()), fac
 
     def mass_ff():
         return free_submatrix(mass_matrix(fe, mass, include_nodal_masses=include_nodal_masses),
                               free)
 
-    # K_ff (and its factor) and M_ff are independent: two worker threads (trussfe.threads)
-    (Kff, band), Mff = parallel_map(lambda task: task(), [stiffness_and_band, mass_ff])
+    (Kff, fac), Mff = parallel_map(lambda task: task(), [stiffness_and_factor, mass_ff])
+    return Kff, fac, Mff
+
+
+def _check_mass(Mff, count: int, fe: FEModel, mass: str, item: str) -> None:
+    """Refuse a model without mass, or fewer mass-carrying DOFs than modes asked for."""
     n_mass = int(np.count_nonzero(Mff.diagonal() > 0))
     if n_mass == 0:
         raise AnalysisError(item, "the structure has no mass: give members a density or "
                             "nodes a [masses] entry")
     if count > n_mass:
         raise AnalysisError(item, f"asked for {count} modes but the model has only {n_mass} "
-                            f"free DOFs that carry mass ({n} free DOFs in all, {mass} mass, "
-                            f"{fe.bar_model} bar model); use --count {n_mass} or fewer")
-    # singular stiffness: count the zero-frequency modes first
-    rigid = 0
-    sigma = 0.0
-    factor = None
-    kd = Kff.diagonal()
-    if band is not None:                           # positive definite: no mechanism
-        factor = band
-    elif dense or np.any(kd <= 0):
-        rigid = null_space(Kff).shape[1]
-    else:
-        if factor is None:
-            try:
-                factor = factorize(Kff, symmetric=True)
-            except SingularMatrixError:
-                rigid = null_space(Kff).shape[1]
-    if rigid:
-        md = Mff.diagonal()
-        ok = (kd > 0) & (md > 0)
-        lam_ref = float(np.median(kd[ok] / md[ok])) if np.any(ok) else 1.0
-        sigma = -1e-6 * lam_ref
-        factor = None
-        log.warning("%s: %d zero-frequency (rigid-body or mechanism) mode%s", item, rigid,
-                    "s" if rigid != 1 else "")
-    lam, V = generalized_eigen(Kff, Mff, count, sigma=sigma, factor=factor, item=item)
-    nz = min(rigid, count)
+                            f"free DOFs that carry mass ({fe.free.size} free DOFs in all, "
+                            f"{mass} mass, {fe.bar_model} bar model); use --count {n_mass} "
+                            "or fewer")
+
+
+def _zero_frequency_modes(Kff, Mff, fac, item: str):
+    """Number of zero-frequency (rigid-body and mechanism) modes, the shift and the factor for
+    the eigen-solution.
+
+    A regular K_ff has none: shift 0 and its factor.  Otherwise the dimension ``r`` of the
+    null space of K_ff (:func:`trussfe.linalg.stiffness_null_space`) is the number of
+    zero-frequency modes, and the shift ``σ = −10⁻⁶ λ_ref`` (``λ_ref`` the median of
+    ``K_ii / M_ii``) makes ``K − σM`` factorisable (see the module notes).
+
+    Returns
+    -------
+    rigid : int
+    sigma : float
+    factor : Factor or None
+        The factor of K_ff to reuse (None: :func:`generalized_eigen` factorises ``K − σM``).
+    """
+    if fac is not None and not fac.is_singular:    # regular: no mechanism
+        return 0, 0.0, fac
+    rigid = stiffness_null_space(Kff).shape[1]
+    if not rigid:
+        return 0, 0.0, None
+    kd, md = Kff.diagonal(), Mff.diagonal()
+    ok = (kd > 0) & (md > 0)
+    lam_ref = float(np.median(kd[ok] / md[ok])) if np.any(ok) else 1.0
+    log.warning("%s: %d zero-frequency (rigid-body or mechanism) mode%s", item, rigid,
+                "s" if rigid != 1 else "")
+    return rigid, -1e-6 * lam_ref, None
+
+
+def _clean_eigenvalues(lam: np.ndarray, nz: int, Kff, Mff, item: str) -> np.ndarray:
+    """The ``nz`` zero-frequency modes exactly 0; a negative eigenvalue of the elastic modes
+    refused (K is positive semi-definite, so it is round-off: the lowest eigenvalues are below
+    what double precision resolves for this stiffness)."""
     lam[:nz] = 0.0
     lam = np.maximum(lam, 0.0) if nz else lam
     if np.any(lam < 0):
-        # K is positive semi-definite, so a negative eigenvalue is round-off: the lowest
-        # eigenvalues are below what double precision resolves for this stiffness.
-        kd_max = float(kd.max())
+        kd_max = float(Kff.diagonal().max())
         raise AnalysisError(item, f"the lowest eigenvalue came out negative (ω² = "
                             f"{lam.min():.3g} rad²/s², against a largest K_ii/M_ii of "
                             f"{kd_max / max(float(Mff.diagonal().max()), 1e-300):.3g}): the "
                             "stiffness is too ill-conditioned for double precision (an "
                             "extremely slender structure or a near-mechanism), so its lowest "
                             "frequencies cannot be resolved; shorten the model or add supports")
-    # eigen-residuals (rigid modes: 0) — see Notes
+    return lam
+
+
+def eigen_residuals(Kff, Mff, lam: np.ndarray, V: np.ndarray, nz: int = 0) -> np.ndarray:
+    """Relative eigen-residuals ``‖K φ − ω² M φ‖ / (ω² ‖M φ‖)`` of the modes (the first ``nz``,
+    zero-frequency modes: 0; a mode with ``ω² ‖M φ‖ = 0``: inf) — see :func:`solve_modes`,
+    Notes."""
+    count = lam.size
     MV = Mff @ V
     R = Kff @ V - MV * lam
     denom = lam * np.linalg.norm(MV, axis=0)
@@ -460,26 +508,31 @@ def solve_modes(structure: Structure, count: int = 6, mass: str = "consistent",
     residuals[el] = np.linalg.norm(R[:, el], axis=0) / np.where(denom[el] > 0, denom[el], np.inf)
     if el.any() and not np.all(denom[el] > 0):
         residuals[el & ~(denom > 0)] = np.inf
+    return residuals
+
+
+def _check_resolution(residuals: np.ndarray, lam: np.ndarray, Kff, Mff, item: str) -> None:
+    """Refuse modes whose eigen-residual exceeds :data:`RESOLVED_RESIDUAL`."""
     bad = residuals > RESOLVED_RESIDUAL
-    if check_resolution and np.any(bad):
-        kmax = float(np.max(kd / np.where(Mff.diagonal() > 0, Mff.diagonal(), np.inf)))
-        raise AnalysisError(item, f"{int(bad.sum())} of the {count} lowest modes cannot be "
-                            "resolved in double precision (eigen-residual up to "
-                            f"{residuals.max():.3g}; ω² = {lam[bad].min():.3g} rad²/s² is "
-                            f"{lam[bad].min() / kmax:.1e} of the largest K_ii/M_ii): the "
-                            "structure is too slender or too close to a mechanism for its "
-                            "lowest frequencies to be computed; shorten the model or add supports")
-    shapes = np.zeros((fe.n_dof, count))
-    shapes[free] = V
-    r = rigid_translations(fe)[free]                                # (n_free, dim)
+    if not np.any(bad):
+        return
+    md = Mff.diagonal()
+    kmax = float(np.max(Kff.diagonal() / np.where(md > 0, md, np.inf)))
+    raise AnalysisError(item, f"{int(bad.sum())} of the {lam.size} lowest modes cannot be "
+                        "resolved in double precision (eigen-residual up to "
+                        f"{residuals.max():.3g}; ω² = {lam[bad].min():.3g} rad²/s² is "
+                        f"{lam[bad].min() / kmax:.1e} of the largest K_ii/M_ii): the "
+                        "structure is too slender or too close to a mechanism for its "
+                        "lowest frequencies to be computed; shorten the model or add supports")
+
+
+def _participation(fe: FEModel, Mff, V: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Participation factors ``Γ = Vᵀ M r`` (mode, axis) of the mass-normalised modes and the
+    total mass ``rᵀ M r`` per axis, ``r`` the rigid translations of the free DOFs."""
+    r = rigid_translations(fe)[fe.free]                             # (n_free, dim)
     Mr = Mff @ r
-    gamma = V.T @ Mr                                                # (k, dim)
-    total = np.einsum("id,id->d", r, Mr)
-    freq = np.sqrt(lam) / (2.0 * np.pi)
-    log.info("modes: %d of %d free DOFs, f1 = %.6g Hz", count, n, freq[0])
-    return ModalResult(fe=fe, mass_kind=mass, eigenvalues=lam, frequencies_hz=freq,
-                       shapes=shapes, rigid_modes=rigid, participation=gamma,
-                       effective_mass=gamma**2, total_mass=total, residuals=residuals)
+    return V.T @ Mr, np.einsum("id,id->d", r, Mr)
+
 
 
 def modes_json(result: ModalResult, command: str = "modes") -> dict:

@@ -22,8 +22,9 @@ import numpy as np
 
 from ..errors import AnalysisError, InputError
 from ..model.structure import DOF_NAMES, Structure
+from ..linalg import SingularMatrixError
 from .discretisation import FEModel, discretise
-from .solver import factorise, factorise_truss
+from .solver import factorise, factorise_truss, raise_mechanism, solve_free
 from .truss_band import internal_forces
 from .stress import von_mises
 
@@ -73,7 +74,7 @@ class StaticResult:
     residual : float
         ‖K u − f‖ / ‖f‖ over the free DOFs.
     backend : str
-        Linear-solver backend that factorised K_ff (:mod:`trussfe.fem.linsolve`).
+        Linear-solver backend that factorised K_ff (:mod:`trussfe.linalg.factor`).
     timings : dict
         Wall-clock seconds of the steps: ``assemble`` (load vector and stiffness: the sparse
         K, or for a long truss the bars' blocks that go to band storage), ``factorise``,
@@ -158,7 +159,7 @@ def solve_static(structure: Structure, bar_model: str = "truss",
     fe : FEModel, optional
         A discretisation to reuse.
     backend : {"auto", "superlu", "pardiso"}
-        Linear-solver backend (:mod:`trussfe.fem.linsolve`).
+        Linear-solver backend (:mod:`trussfe.linalg.factor`).
 
     Returns
     -------
@@ -189,18 +190,25 @@ def solve_static(structure: Structure, bar_model: str = "truss",
     t0 = time.perf_counter()
     f = fe.load_vector(self_weight=self_weight, loads=loads)
     # a long truss of single bars: K_ff banded straight from the bars, K·u bar by bar
-    fac = factorise_truss(fe, backend)
-    if fac is not None:
+    truss = factorise_truss(fe, backend)
+    if truss is not None:
+        fac, seconds = truss
         K = None
         t2 = time.perf_counter()
-        t1 = t2 - fac.timings["factorise"]   # band fill and factorisation after the blocks
+        t1 = t2 - seconds["factorise"]       # band fill and factorisation after the blocks
     else:
         K = fe.stiffness(copy=False)         # read only here
         t1 = time.perf_counter()
         fac = factorise(K, fe.free, fe=fe, item=structure.source or structure.name,
                         backend=backend)
         t2 = time.perf_counter()
-    u = fac.solve(f)
+    try:
+        u = solve_free(fac, fe.free, f)
+    except SingularMatrixError:
+        # a non-finite solution from a factor that passed its pivot test: a mechanism hidden
+        # by round-off — say which
+        raise_mechanism(fe.stiffness(copy=False) if K is None else K, fe,
+                        structure.source or structure.name)
     r_all = (internal_forces(fe, u) if K is None else K @ u) - f
     t3 = time.perf_counter()
     nf = np.linalg.norm(f[fe.free])
@@ -210,11 +218,8 @@ def solve_static(structure: Structure, bar_model: str = "truss",
     if not (residual <= SOLVE_RESIDUAL_LIMIT):
         # the factorisation passed its pivot test but does not solve the system: a mechanism
         # hidden by round-off (or worse) — say which, never return such displacements
-        from .solver import _raise_mechanism, free_submatrix
-
         K = fe.stiffness(copy=False) if K is None else K
-        _raise_mechanism(free_submatrix(K, fe.free), fe.free, fe,
-                         structure.source or structure.name)
+        raise_mechanism(K, fe, structure.source or structure.name)
     if not np.all(np.isfinite(u)):
         raise AnalysisError(structure.source or structure.name,
                             "the linear solve produced non-finite displacements; the "
@@ -249,7 +254,7 @@ def solve_static(structure: Structure, bar_model: str = "truss",
         end_forces=ends, station_x=x, section_forces=F, von_mises_s1=s1, von_mises_s2=s2,
         max_von_mises=max_vm,
         element_axial_force=0.5 * (fel[:, 1, 0] - fel[:, 0, 0]), residual=residual,
-        backend=getattr(fac.lu, "backend", "none"))
+        backend=fac.backend)
     t4 = time.perf_counter()
     # wall-clock seconds: load vector and stiffness (sparse K, or the bars' blocks for the
     # band), factorisation (band fill included), solve with refinement and residual, recovery

@@ -18,9 +18,9 @@ from __future__ import annotations
 import numpy as np
 import scipy.sparse as sp
 
-from .banded import NATURAL_BANDWIDTH_OK, BandLayout, general_from_upper
+from ..linalg.banded import NATURAL_BANDWIDTH_OK, SummedBandLayout
+from ..linalg.sparse import FreeBlock
 from .discretisation import FEModel, node_diagonal_blocks, reference_bar
-from .solver import FreeBlock
 
 
 def is_plain_truss(fe: FEModel) -> bool:
@@ -84,50 +84,13 @@ class TrussStiffness(FreeBlock):
         return (B.multiply(B).T @ k)[self.free]
 
 
-class TrussBandLayout(BandLayout):
-    """A :class:`~trussfe.fem.banded.BandLayout` whose entries are the bars' node blocks in
-    the upper triangle (``row ≤ col``; −1 in ``row`` marks an entry on a fixed DOF, which is
-    left out).  A position may occur more than once (every bar at a node adds to its diagonal
-    block), so the band arrays are summed with ``bincount``; ``reversed`` says the band
-    numbering is ``n − 1 −`` the free-DOF numbering of ``row`` and ``col``."""
-
-    def __init__(self, perm, bandwidth, row, col, data, reversed_: bool):
-        super().__init__(perm, bandwidth, row, col, data)
-        self.reversed = reversed_
-
-    def _band_rc(self):
-        # (row, col) in the band numbering with row ≤ col; left-out entries at row −1
-        n = self.n
-        if not self.reversed:
-            return self.row, self.col
-        lo = np.where(self.row >= 0, n - 1 - self.col, -1).astype(self.row.dtype)
-        return lo, (n - 1 - self.row).astype(self.col.dtype)
-
-    def upper_band(self) -> np.ndarray:
-        bw, n = self.bandwidth, self.n
-        size = (bw + 1) * n
-        r, c = self._band_rc()
-        # Fortran position of (bw + i − j, j) is bw·(j + 1) + i; left-out entries go to a
-        # spare slot past the end (no compressed copies of the entry arrays)
-        idx = np.empty(r.size, dtype=np.int64)
-        np.multiply(c, bw, out=idx)
-        idx += bw
-        idx += r
-        idx[r < 0] = size
-        flat = np.bincount(idx, weights=self.data, minlength=size + 1)[:size]
-        return flat.reshape((bw + 1, n), order="F")
-
-    def general_band(self) -> np.ndarray:
-        return general_from_upper(self.upper_band())
-
-
-def truss_band_layout(fe: FEModel, max_bandwidth: int) -> TrussBandLayout | None:
+def truss_band_layout(fe: FEModel, max_bandwidth: int) -> SummedBandLayout | None:
     """The band layout of K_ff of a plain truss from its bars, or None when the DOF order is
-    not narrow (half-bandwidth above :data:`~trussfe.fem.banded.NATURAL_BANDWIDTH_OK` or
+    not narrow (half-bandwidth above :data:`~trussfe.linalg.banded.NATURAL_BANDWIDTH_OK` or
     ``max_bandwidth``: the general path then reorders the sparse K_ff).
 
     The ordering is the DOF numbering restricted to the free DOFs, reversed when that puts the
-    DOFs coupled to a support towards the end (as :func:`~trussfe.fem.banded.band_layout`).
+    DOFs coupled to a support towards the end (as :func:`~trussfe.linalg.banded.band_layout`).
     Entries: the upper half of every node's diagonal block (Σ of its bars' blocks) and one
     off-diagonal block per bar, each entry moved to the upper triangle (K is symmetric).
     """
@@ -176,8 +139,8 @@ def truss_band_layout(fe: FEModel, max_bandwidth: int) -> TrussBandLayout | None
     anchored = np.zeros(nfree, dtype=bool)
     anchored[col[~kept & nonzero & (col >= 0)]] = True
     reverse = bool(np.any(anchored)) and np.mean(np.flatnonzero(anchored)) < 0.5 * (nfree - 1)
-    # eliminate a cantilever from its free end (see trussfe.fem.banded.band_layout)
+    # eliminate a cantilever from its free end (see trussfe.linalg.banded.band_layout)
     perm = np.arange(nfree, dtype=np.int64)
     if reverse:
         perm = perm[::-1].copy()
-    return TrussBandLayout(perm, bw, row, col, data, reverse)
+    return SummedBandLayout(perm, bw, row, col, data, reverse)

@@ -19,6 +19,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from ..errors import AnalysisError
+from ..linalg import factor
 from .compatibility import compatibility_matrix
 
 
@@ -140,14 +141,8 @@ def solve_positions(
 def _newton_step(B: sp.csr_matrix, rhs: np.ndarray, nb: int, nf: int) -> np.ndarray | None:
     """Newton correction: solve B dx = rhs (square) or its least-squares / min-norm form."""
     if nb == nf:
-        try:
-            lu = spla.splu(B.tocsc())
-        except RuntimeError:
-            return None
-        diag = np.abs(lu.U.diagonal())
-        if diag.min() <= 1e-13 * max(diag.max(), 1.0):
-            return None
-        return lu.solve(rhs)
+        lu = factor(B, "general", singular="flag")
+        return None if lu.is_singular else lu.solve(rhs, refine=False)
     if nf <= 3000:
         dx, *_ = np.linalg.lstsq(B.toarray(), rhs, rcond=1e-12)
         return dx

@@ -33,6 +33,7 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from ..linalg import factor
 from .compatibility import compatibility_matrix
 
 log = logging.getLogger(__name__)
@@ -101,14 +102,8 @@ def _solve_dependent(J: sp.csr_matrix, rhs: np.ndarray) -> np.ndarray | None:
     """Solve ``J Δ = rhs``: sparse LU when square, least squares over all bars otherwise."""
     b, f = J.shape
     if b == f:
-        try:
-            lu = spla.splu(J.tocsc())
-        except RuntimeError:
-            return None
-        d = np.abs(lu.U.diagonal())
-        if d.min() <= 1e-12 * max(d.max(), 1.0):
-            return None
-        return lu.solve(rhs)
+        lu = factor(J, "general", singular="flag")
+        return None if lu.is_singular else lu.solve(rhs, refine=False)
     if f <= 3000:
         A = J.toarray()
         sol, *_ = np.linalg.lstsq(A, rhs, rcond=1e-10)

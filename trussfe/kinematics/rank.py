@@ -15,7 +15,8 @@ determinate when it has no mechanism and no rigid-body motion.
 Tolerance
 ---------
 B holds direction cosines, so its singular values are dimensionless and independent of the
-length unit; a singular value counts as zero when ``σ ≤ tolerance · σ_max``.  The default
+length unit; a singular value counts as zero when ``σ ≤ tolerance · σ_max``
+(:func:`trussfe.linalg.matrix_rank`, shared with the post-critical hand-over).  The default
 relative tolerance is ``max(b, f) · 1e3 · eps`` (about 2e-10 for a hundred bars) for the dense
 SVD.  Near a singular position the gap matters: the result carries the smallest singular value
 kept and the largest one dropped, so a reader can see how clear the decision was.  When the
@@ -26,9 +27,10 @@ noise (the Bricard octahedron is the standard trap).
 Large assemblies (more than ``dense_limit`` coordinates or bars) use a sparse
 path: the nullity of ``K = BᵀB`` is the number of its eigenvalues σ² below the tolerance, counted
 exactly by Sylvester's law of inertia from one symmetric sparse factorisation of
-``K − σ_tol² I`` (null vectors by inverse iteration with that factorisation): MKL PARDISO's
-symmetric-indefinite LDLᵀ with nested-dissection ordering when available (it returns the
-inertia; used only if no pivot was perturbed), else SuperLU with diagonal pivots.  The relative
+``K − σ_tol² I`` (:func:`trussfe.linalg.factor`, ``kind="symmetric"``; null vectors by inverse
+iteration with that factorisation): MKL PARDISO's symmetric-indefinite LDLᵀ with
+nested-dissection ordering for large systems when it is installed (it returns the inertia;
+used only if no pivot was perturbed), else SuperLU with diagonal pivots.  The relative
 tolerance is raised to at least 1e-6 (relative to the Gershgorin bound of σ_max) because σ² is
 resolved only to round-off of K; self-stress states are counted as ``b − ρ`` without a basis,
 and the decision margin is reported only when mechanisms are found.
@@ -40,16 +42,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import scipy.linalg as sla
-import scipy.sparse as sp
-import scipy.sparse.linalg as spla
 
 from ..errors import AnalysisError
+from ..linalg.rank import RankError, matrix_rank
 from .compatibility import compatibility_matrix
 
 log = logging.getLogger(__name__)
-
-#: Relative rank tolerance of the sparse path (σ resolved through σ² ~ round-off of BᵀB).
-SPARSE_MIN_TOLERANCE = 1e-6
 
 
 @dataclass
@@ -196,8 +194,9 @@ def rank_analysis(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarray
     dense_limit : int
         Above this many free coordinates the sparse path is used.
     sparse_backend : {"auto", "pardiso", "superlu"}
-        Symmetric factorisation of the sparse path (see the module notes); ``auto`` takes
-        PARDISO when it is installed and its inertia is reliable, SuperLU otherwise.
+        Symmetric factorisation of the sparse path (see the module notes); ``auto`` follows
+        the backend rule of :mod:`trussfe.linalg.factor`, and PARDISO's inertia is used only
+        when it is reliable (SuperLU's otherwise).
 
     Returns
     -------
@@ -230,12 +229,23 @@ def rank_analysis(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarray
     B = compatibility_matrix(x, conn, free)
     b, f = B.shape
     rigid = _free_rigid_modes(x, free)
-    if f <= dense_limit and b <= dense_limit:
-        return _dense_rank(B, rigid, free, tolerance)
     if sparse_backend not in ("auto", "pardiso", "superlu"):
         raise AnalysisError("rank analysis", f"unknown sparse backend '{sparse_backend}' "
                                              "(auto, pardiso or superlu)")
-    return _sparse_rank(B, rigid, free, tolerance, sparse_backend)
+    try:
+        r = matrix_rank(B, tolerance=tolerance, dense_limit=dense_limit,
+                        backend=sparse_backend)
+    except RankError as exc:
+        raise AnalysisError("rank analysis", str(exc)) from None
+    mech, rig = _split_rigid(r.null, rigid, 1e3 * r.tolerance)
+    sparse = r.left_null is None
+    return RankResult(rank=r.rank, n_coordinates=f, n_bars=b, mechanisms=mech.shape[1],
+                      rigid_body_motions=rig.shape[1], self_stress_states=b - r.rank,
+                      mechanism_basis=mech, rigid_body_basis=rig,
+                      self_stress_basis=None if sparse else _sign_fix(r.left_null),
+                      free=free, tolerance=r.tolerance, smallest_kept=r.smallest_kept,
+                      largest_dropped=r.largest_dropped,
+                      extra={"sparse_backend": r.backend} if sparse else {})
 
 
 def _split_rigid(null: np.ndarray, rigid: np.ndarray, atol: float) -> tuple[np.ndarray, np.ndarray]:
@@ -254,127 +264,12 @@ def _split_rigid(null: np.ndarray, rigid: np.ndarray, atol: float) -> tuple[np.n
     return u[:, :k], rig
 
 
-def _dense_rank(B, rigid, free, tolerance) -> RankResult:
-    b, f = B.shape
-    A = B.toarray()
-    if b == 0 or f == 0:
-        s = np.zeros(0)
-        u = np.eye(b)
-        vt = np.eye(f)
-    else:
-        u, s, vt = np.linalg.svd(A, full_matrices=True)
-    rtol = max(b, f) * 1e3 * np.finfo(float).eps if tolerance is None else float(tolerance)
-    smax = float(s.max()) if s.size else 0.0
-    tol = rtol * max(smax, 1e-300)
-    rank = int(np.sum(s > tol))
-    null = vt[rank:].T                                     # (f, f − ρ)
-    stress = u[:, rank:]                                   # (b, b − ρ)
-    mech, rig = _split_rigid(null, rigid, 1e3 * tol)
-    kept = float(s[rank - 1]) if rank > 0 else float("nan")
-    dropped = float(s[rank]) if rank < s.size else (0.0 if f > rank else float("nan"))
-    return RankResult(rank=rank, n_coordinates=f, n_bars=b, mechanisms=mech.shape[1],
-                      rigid_body_motions=rig.shape[1], self_stress_states=b - rank,
-                      mechanism_basis=mech, rigid_body_basis=rig,
-                      self_stress_basis=_sign_fix(stress), free=free, tolerance=tol,
-                      smallest_kept=kept, largest_dropped=dropped)
-
-
 def _sign_fix(v: np.ndarray) -> np.ndarray:
     """Make the largest entry of each column positive (deterministic output)."""
     if v.size == 0:
         return v
     idx = np.argmax(np.abs(v), axis=0)
     return v * np.sign(v[idx, np.arange(v.shape[1])])
-
-
-def _inertia_factorisation(shifted: sp.csc_matrix, backend: str):
-    """Number of negative eigenvalues of a symmetric sparse matrix and a solver with it.
-
-    Sylvester's law of inertia: a symmetric factorisation ``P A Pᵀ = L D Lᵀ`` has as many
-    negative entries (1 × 1 and 2 × 2 blocks) in D as A has negative eigenvalues.
-
-    ``"pardiso"``: MKL PARDISO, symmetric indefinite (Bunch–Kaufman pivoting, nested-dissection
-    ordering, both cores); it reports the inertia itself.  It is used only when no pivot had to
-    be perturbed (a perturbed pivot could change the inertia); otherwise, or when PARDISO is
-    not available, ``"superlu"``: SuperLU in symmetric mode with diagonal pivots only
-    (minimum-degree ordering of A + Aᵀ), the negative diagonal of U counted.  About three times
-    slower on 3-D frameworks, whose fill under minimum degree is large.
-
-    Returns
-    -------
-    negative : int
-    solve : callable
-        ``solve(V)`` for a block of right-hand sides.
-    backend : str
-        The backend used.
-    """
-    f = shifted.shape[0]
-    if backend in ("auto", "pardiso"):
-        from ..fem.linsolve import pardiso_available
-        if pardiso_available():
-            import pypardiso
-            A = sp.triu(shifted, format="csr")
-            A.sort_indices()
-            ps = pypardiso.PyPardisoSolver(mtype=-2)       # real symmetric indefinite
-            ps.set_iparm(13, 1)                            # weighted matching (fewer perturbed)
-            try:
-                ps.factorize(A)
-                pos, neg, perturbed = int(ps.iparm[21]), int(ps.iparm[22]), int(ps.iparm[13])
-            except Exception as exc:                       # noqa: BLE001 - fall back below
-                log.info("PARDISO factorisation failed (%s); using SuperLU", exc)
-                pos = neg = perturbed = -1
-            if perturbed == 0 and pos + neg == f:
-                return neg, (lambda V: ps.solve(A, np.asarray(V))), "pardiso"
-            log.info("PARDISO inertia not reliable (%d perturbed pivots); using SuperLU",
-                     perturbed)
-        elif backend == "pardiso":
-            raise AnalysisError("rank analysis", "the PARDISO backend is not available")
-    try:
-        lu = spla.splu(shifted, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
-                       options={"SymmetricMode": True})
-    except RuntimeError as exc:                         # an exactly singular pivot
-        raise AnalysisError("rank analysis", f"sparse factorisation failed ({exc}); "
-                                             "use the dense path (raise dense_limit)") from None
-    return int(np.sum(lu.U.diagonal() < 0)), lu.solve, "superlu"
-
-
-def _sparse_rank(B, rigid, free, tolerance, backend="auto") -> RankResult:
-    b, f = B.shape
-    rtol = max(SPARSE_MIN_TOLERANCE, 0.0 if tolerance is None else float(tolerance))
-    K = (B.T @ B).tocsc()
-    # λ_max(K) ≤ ‖K‖₁ (Gershgorin): a cheap, safe scale for the relative tolerance
-    smax2 = float(abs(K).sum(axis=0).max())
-    lam_tol = (rtol ** 2) * smax2
-    # Sylvester's law of inertia: the number of eigenvalues of K below λ_tol is the number of
-    # negative pivots of a symmetric (unpivoted) factorisation of K − λ_tol·I.
-    shifted = (K - lam_tol * sp.eye(f, format="csc")).tocsc()
-    nz, solve, used = _inertia_factorisation(shifted, backend)
-    if nz >= f - 1:
-        raise AnalysisError("rank analysis", "too many mechanisms for the sparse path; "
-                                             "use the dense path (raise dense_limit)")
-    vals = np.zeros(0)
-    vecs = np.zeros((f, 0))
-    if nz:
-        # block inverse iteration with the same factorisation, then Rayleigh–Ritz
-        rng = np.random.default_rng(0)
-        V = np.linalg.qr(rng.normal(size=(f, nz + 2)))[0]
-        for _ in range(6):
-            V = np.linalg.qr(solve(V))[0]
-        w, Z = np.linalg.eigh(V.T @ (K @ V))
-        vals, vecs = w, V @ Z
-    null = vecs[:, :nz]
-    rank = f - nz
-    tol = float(np.sqrt(lam_tol))
-    mech, rig = _split_rigid(null, rigid, 1e3 * tol)
-    kept = float(np.sqrt(max(vals[nz], 0.0))) if nz < vals.size else float("nan")
-    dropped = float(np.sqrt(max(vals[nz - 1], 0.0))) if nz > 0 else float("nan")
-    log.info("sparse rank analysis (%s): %d near-zero eigenvalues of BᵀB below %.3g", used, nz,
-             lam_tol)
-    return RankResult(rank=rank, n_coordinates=f, n_bars=b, mechanisms=mech.shape[1],
-                      rigid_body_motions=rig.shape[1], self_stress_states=b - rank,
-                      mechanism_basis=mech, rigid_body_basis=rig, self_stress_basis=None,
-                      free=free, tolerance=tol, smallest_kept=kept, largest_dropped=dropped,
-                      extra={"sparse_backend": used})
 
 
 def structure_rank(structure, **kwargs) -> RankResult:

@@ -28,9 +28,9 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.csgraph as csg
-import scipy.sparse.linalg as spla
 
 from ..errors import AnalysisError, InputError
+from ..linalg import factor
 
 
 def incidence_matrix(n_nodes: int, connectivity: np.ndarray) -> sp.csr_matrix:
@@ -121,7 +121,7 @@ def graph_topology(n_nodes: int, connectivity: np.ndarray, reference: int = 0) -
     Al = A[:, links].toarray().astype(float)
     C = np.zeros((links.size, s))
     if links.size:
-        X = spla.splu(At).solve(Al)                        # A_t⁻¹ A_l, (r, s − r)
+        X = factor(At, "general").solve(Al, refine=False)   # A_t⁻¹ A_l, (r, s − r)
         C[:, tree] = -X.T
         C[np.arange(links.size), links] = 1.0
     return GraphTopology(reference=reference, tree=tree, links=links, reduced_incidence=A,
@@ -391,8 +391,7 @@ def cycle_kinematics(eq: EquivalentAssembly, drive_edge: int, omega: float,
 def _tree_values(topo: GraphTopology, edge_rates: np.ndarray, n: int) -> np.ndarray:
     """Joint rates from edge rates along the tree: ``−A_tᵀ V = U̇_t``, root at rest."""
     At = topo.reduced_incidence[:, topo.tree].T.tocsc().astype(float)  # (r, r)
-    lu = spla.splu(At)
-    V = np.column_stack([lu.solve(-edge_rates[topo.tree, k]) for k in range(edge_rates.shape[1])])
+    V = factor(At, "general").solve(-edge_rates[topo.tree], refine=False)
     out = np.zeros((n, edge_rates.shape[1]))
     keep = np.flatnonzero(np.arange(n) != topo.reference)
     out[keep] = V

@@ -16,19 +16,18 @@ from __future__ import annotations
 
 import numpy as np
 import scipy.sparse as sp
-import scipy.sparse.linalg as spla
 
 from ..errors import AnalysisError
+from ..linalg import factor
 from .compatibility import compatibility_matrix
 
 
 def _solve(A: sp.csr_matrix, rhs: np.ndarray, item: str) -> np.ndarray:
     """Solve the square system by sparse LU or a consistent over-determined one by lstsq."""
     if A.shape[0] == A.shape[1]:
-        try:
-            return spla.splu(A.tocsc()).solve(rhs)
-        except RuntimeError:
-            pass
+        fac = factor(A, "general", singular="flag")
+        if not fac.is_singular:
+            return fac.solve(rhs, refine=False)
     sol, _, rank, _ = np.linalg.lstsq(A.toarray(), rhs, rcond=1e-10)
     if rank < A.shape[1]:
         raise AnalysisError(item, "the prescribed motion does not determine every joint "

@@ -149,6 +149,16 @@ class Structure:
         put(self, "_node_index", None)
         put(self, "_member_index", None)
 
+    def __getstate__(self) -> dict[str, Any]:
+        state = {f.name: getattr(self, f.name) for f in fields(self)}
+        state["extensions"] = dict(self.extensions)       # a mappingproxy does not pickle
+        return state
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        # unpickled arrays come back writable: freeze them again (pickle, copy.deepcopy)
+        self.__dict__.update(state)
+        self._freeze(None)
+
     # ------------------------------------------------------------------ sizes and lookups
     @property
     def n_nodes(self) -> int:
@@ -272,12 +282,20 @@ class Structure:
 
     def _derive(self, changes: dict[str, Any], properties: MemberProperties | None
                 ) -> "Structure":
-        names = {f.name for f in fields(self)}
-        unknown = sorted(set(changes) - names)
+        unknown = sorted(set(changes) - _FIELD_NAMES)
         if unknown:
             raise TypeError(f"Structure has no field {unknown[0]!r}")
         new = object.__new__(Structure)
         new.__dict__.update(self.__dict__)
+        if properties is not None and _NODE_DATA.issuperset(changes):
+            # node data only (a structure at each step of a motion): check what changed
+            shapes = {"coords": (self.n_nodes, self.dim), "masses": (self.n_nodes,),
+                      "loads": (self.n_nodes, self.ndof_node), "gravity": (self.dim,),
+                      "supports": (self.n_nodes, self.ndof_node)}
+            for key, value in changes.items():
+                object.__setattr__(new, key, _frozen_array(
+                    value, bool if key == "supports" else float, shapes[key], key))
+            return new
         for key, value in changes.items():
             object.__setattr__(new, key, value)
         new._freeze(properties)
@@ -482,6 +500,11 @@ def build_structure(
         releases=np.zeros((m, 2), dtype=bool), supports=sup, loads=ld, masses=ms, gravity=g,
         member_groups=np.zeros(m, dtype=np.int64),     # one section and material for all
     )
+
+
+_FIELD_NAMES = frozenset(f.name for f in fields(Structure))
+#: Fields whose change leaves every member datum and id as it is.
+_NODE_DATA = frozenset(("coords", "loads", "supports", "masses", "gravity"))
 
 
 def _frozen_ids(ids: Sequence[str]) -> Sequence[str]:

@@ -81,7 +81,8 @@ def result_document(result: PathResult) -> dict:
     for p in result.path:
         d = p.u[: s.n_nodes * s.dim].reshape(s.n_nodes, s.dim)
         path.append({"load_factor": float(p.load_factor), "stage": p.stage,
-                     "negative_eigenvalues": int(p.negative),
+                     "negative_eigenvalues": (None if p.negative is None
+                                             else int(p.negative)),
                      "displacements": {ids[i]: d[i].tolist() for i in range(s.n_nodes)},
                      "failed_members": [s.member_ids[i] for i in np.flatnonzero(~p.alive)]})
     events = []

@@ -14,10 +14,10 @@ from __future__ import annotations
 
 import numpy as np
 import scipy.linalg as sla
-import scipy.sparse as sp
-from scipy.sparse.linalg import eigsh, splu
+from scipy.sparse.linalg import eigsh
 
 from ..errors import AnalysisError
+from ..linalg import factor
 from .model import NonlinearModel
 
 
@@ -38,13 +38,12 @@ def linear_buckling(model: NonlinearModel, count: int = 1):
     """
     free = np.flatnonzero(model.free)
     K = model.reference_tangent()[free][:, free]
-    try:
-        lu = splu(sp.csc_matrix(K))
-        u0 = np.zeros(model.ndof)
-        u0[free] = lu.solve(model.load[free])
-    except RuntimeError:
+    lu = factor(K, "spd", singular="flag")
+    if lu.is_singular:
         raise AnalysisError(model.structure.source or model.structure.name,
-                            "the structure is a mechanism: no linear buckling analysis") from None
+                            "the structure is a mechanism: no linear buckling analysis")
+    u0 = np.zeros(model.ndof)
+    u0[free] = lu.solve(model.load[free])
     Nt, Nb = model.linear_axial_forces(u0)
     Kg = model.reference_tangent(Nt, Nb)[free][:, free] - K
     n = len(free)

@@ -20,20 +20,17 @@ import logging
 from dataclasses import dataclass, field
 
 import numpy as np
-import scipy.linalg as sla
-import scipy.sparse as sp
 
-from ..errors import AnalysisError
 from ..kinematics.compatibility import compatibility_matrix
+from ..linalg import RankError, matrix_rank
 
 log = logging.getLogger(__name__)
 
 #: Relative tolerance on singular values of B (scaled by the largest) for the rank.
 RANK_TOLERANCE = 1e-9
-#: Free coordinates up to which the rank comes from a dense SVD (exact); above, from pivots.
+#: Free coordinates up to which the rank comes from a dense SVD (exact); above, from the
+#: inertia of the shifted Gram matrix (:func:`trussfe.linalg.matrix_rank`).
 DENSE_RANK_LIMIT = 200
-#: Relative pivot size of ``BᵀB`` below which the sparse rank counts a pivot as zero.
-PIVOT_TOLERANCE = 1e-9
 
 
 def mechanism_count(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarray,
@@ -57,9 +54,9 @@ def mechanism_count(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
 
     Notes
     -----
-    Uses :func:`trussfe.kinematics.rank.rank_analysis` when it is installed (dense SVD up to
-    :data:`DENSE_RANK_LIMIT` free coordinates, inertia of the shifted Gram matrix above), and
-    otherwise its own dense SVD / pivot count.
+    The rank is that of :func:`trussfe.linalg.matrix_rank`: dense SVD up to
+    :data:`DENSE_RANK_LIMIT` free coordinates, the inertia of the shifted Gram matrix ``BᵀB``
+    above (the same routine as the rank analysis of :mod:`trussfe.kinematics.rank`).
 
     Examples
     --------
@@ -76,42 +73,19 @@ def mechanism_count(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
     nf = int(np.sum(free))
     if len(connectivity) == 0:
         return nf, 0
-    try:   # the shared rank analysis of the mechanism machinery, when installed
-        from ..kinematics.rank import rank_analysis
-        r = rank_analysis(coords, connectivity, free, tolerance=tolerance,
-                          dense_limit=DENSE_RANK_LIMIT)
-        return int(r.mechanisms + r.rigid_body_motions), int(r.rank)
-    except (ImportError, AnalysisError):
-        pass
-    B = compatibility_matrix(coords, connectivity, free)
-    if nf <= DENSE_RANK_LIMIT:
-        sv = sla.svdvals(B.toarray())
-        rank = int(np.sum(sv > tolerance * sv.max())) if sv.size else 0
-    else:
-        rank = _sparse_rank(B, tolerance)
+    B = compatibility_matrix(np.asarray(coords, dtype=float),
+                             np.asarray(connectivity, dtype=np.int64).reshape(-1, 2),
+                             np.asarray(free, dtype=bool))
+    try:
+        rank = matrix_rank(B, tolerance=tolerance, dense_limit=DENSE_RANK_LIMIT).rank
+    except RankError:        # nearly every direction free: the sparse path cannot tell
+        rank = matrix_rank(B, tolerance=tolerance, dense_limit=max(B.shape)).rank
     return nf - rank, rank
 
 
-def _sparse_rank(B, tolerance: float) -> int:
-    """Rank of a large sparse B from the LDLᵀ pivots of the Gram matrix ``BᵀB``.
-
-    Used above :data:`DENSE_RANK_LIMIT` free coordinates, where a dense SVD is too slow.  A
-    mechanism makes a pivot vanish to round-off.  ``BᵀB`` is shifted by ``1e-12`` of its
-    largest diagonal entry (so that SuperLU does not stop at an exact zero pivot) and pivots
-    below :data:`PIVOT_TOLERANCE` of the largest count as zero — singular values of B below
-    about 3e-5 of the largest (BᵀB squares them).  This is coarser than the SVD's 1e-9 and is
-    checked against it in the tests.
-    """
-    from scipy.sparse.linalg import splu
-    G = (B.T @ B).tocsc()
-    nf = G.shape[0]
-    # a tiny shift keeps SuperLU from stopping at an exactly zero pivot
-    shift = 1e-12 * abs(G.diagonal()).max()
-    # COLAMD: minimum degree on BᵀB + shift fills in badly here (measured 4.2M vs 0.65M)
-    lu = splu((G + shift * sp.eye(nf, format="csc")).tocsc(), permc_spec="COLAMD",
-              diag_pivot_thresh=0.0, options=dict(SymmetricMode=True))
-    d = np.abs(lu.U.diagonal())
-    return int(np.sum(d > PIVOT_TOLERANCE * d.max()))
+def _null_space(B: np.ndarray) -> np.ndarray:
+    """Orthonormal basis of the mechanism space (null space of B) at :data:`RANK_TOLERANCE`."""
+    return matrix_rank(B, tolerance=RANK_TOLERANCE, dense_limit=max(B.shape)).null
 
 
 @dataclass
@@ -243,7 +217,7 @@ def equilibrium_form(coords: np.ndarray, connectivity: np.ndarray, free: np.ndar
         if pn <= 1e-3 * fn:
             # stationary: a minimum, or an unstable form (compressed bars) to leave along the
             # mechanism direction of most negative curvature (branching on the eigenvector)
-            ns = sla.null_space(B, rcond=RANK_TOLERANCE)
+            ns = _null_space(B)
             if ns.shape[1] == 0:
                 break
             w, v = np.linalg.eigh(ns.T @ _geometric_stiffness(x, conn, t, free) @ ns)
@@ -296,7 +270,7 @@ def equilibrium_form(coords: np.ndarray, connectivity: np.ndarray, free: np.ndar
     out.potential.append(-float(fvec.ravel() @ (x - x0).ravel()))
     out.converged = out.residual <= max(tolerance, 1e-8)
     # second-order check on the mechanism space (null space of B)
-    ns = sla.null_space(B, rcond=RANK_TOLERANCE)
+    ns = _null_space(B)
     if ns.shape[1] == 0:
         out.stable = True
     else:

@@ -12,7 +12,7 @@ One function, :func:`follow_path`, follows the equilibrium path ``f_int(u) = λ 
 
 Along the path it
 
-* counts the negative pivots of the tangent (:func:`~trussfe.nonlinear.solvers.factorize`);
+* counts the negative pivots of the tangent (:func:`trussfe.linalg.factor`, its inertia);
   a change brackets a critical point, located by bisection of the step and classified by its
   eigenvector φ: a **limit point** when ``φᵀf ≠ 0``, a **bifurcation** when ``φᵀf = 0``
   (optionally the path branches along φ);
@@ -31,10 +31,11 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import InputError, MechanismError
+from ..linalg import SingularMatrixError, factor
+from ..linalg.eigen import nearest_zero_mode
 from ..model.postcritical import CONTROLS
 from .mechanism import MechanismMotion, equilibrium_form, mechanism_count
 from .model import NonlinearModel
-from .solvers import SingularTangent, critical_mode, factorize
 
 log = logging.getLogger(__name__)
 
@@ -60,8 +61,9 @@ class PathPoint:
     forces : ndarray, shape (member,)
         Member axial forces, N.
     alive : ndarray of bool, shape (member,)
-    negative : int
-        Negative eigenvalues of the tangent (−1 if unknown).
+    negative : int or None
+        Negative eigenvalues of the tangent; None where unknown (a singular tangent, a
+        factorisation that does not reveal the inertia, the mechanism stage).
     stage : str
         ``"equilibrium"`` or ``"mechanism"`` (rigid-bar motion after the hand-over).
     """
@@ -70,7 +72,7 @@ class PathPoint:
     u: np.ndarray
     forces: np.ndarray
     alive: np.ndarray
-    negative: int = -1
+    negative: int | None = None
     stage: str = "equilibrium"
 
 
@@ -157,8 +159,8 @@ class _Stepper:
         mode = mode or self.control
         f = self.f
         try:
-            ut = fac0.solve(f)
-        except SingularTangent:
+            ut = fac0.solve(f, refine=False)
+        except SingularMatrixError:
             return None
         if mode == "load":
             dlam = ds
@@ -191,7 +193,7 @@ class _Stepper:
         modified = len(uf0) > self.full_newton_size
         fac, dt_fac, rprev, fresh = fac0, ut, np.inf, None
         if fac_iter is not None and modified:
-            fac, dt_fac = fac_iter, fac_iter.solve(f)
+            fac, dt_fac = fac_iter, fac_iter.solve(f, refine=False)
         uf = self.add(uf0, du)
         for it in range(1, (self.max_iter if refactor_ratio <= 0.5 else 2 * self.max_iter) + 1):
             lam = lam0 + dlam
@@ -209,13 +211,13 @@ class _Stepper:
                 if not modified or rn > refactor_ratio * rprev:
                     if K is None:
                         K = self.eval(uf)[2]
-                    fac = factorize(K)
+                    fac = factor(K, "symmetric")
                     fresh = fac
-                    dt_fac = fac.solve(f)
+                    dt_fac = fac.solve(f, refine=False)
                 rprev = rn
-                dr = -fac.solve(R)
+                dr = -fac.solve(R, refine=False)
                 dt = dt_fac
-            except SingularTangent:
+            except SingularMatrixError:
                 return None
             if mode == "load":
                 dl = 0.0
@@ -352,14 +354,14 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
     lam = 0.0
     res, fint, K = st.eval(uf)
     try:
-        fac = factorize(K)
-    except SingularTangent:
+        fac = factor(K, "symmetric")
+    except SingularMatrixError:
         nm, _ = mechanism_count(s.coords, s.connectivity, _mech_free(m))
         raise MechanismError(s.source or s.name, f"the unloaded structure is a mechanism "
                              f"({nm} independent mechanism(s)); a post-critical analysis "
                              "needs a stiff start — see 'trussfe mechanism'",
                              mechanisms=nm) from None
-    ut = fac.solve(f)
+    ut = fac.solve(f, refine=False)
     if control == "displacement":
         if abs(ut[st.c]) <= 1e-12 * np.abs(ut).max():
             raise InputError("monitor", "the reference load does not move the monitored "
@@ -381,7 +383,7 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                                   m.alive.copy(), neg, stage))
         return len(out.path) - 1
 
-    record(uf, lam, res, fac.negative)
+    record(uf, lam, res, fac.inertia)
     ds = float(step)
     size = float(np.ptp(m.X, axis=0).max())
     ds_max = abs(ds) if control == "load" else 32.0 * abs(ds)
@@ -391,7 +393,7 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
         ds_max = float(max_step)
     du_prev = None
     branch_dir = None
-    neg = fac.negative
+    neg = fac.inertia
     k = 0
     while k < steps:
         if max_load_factor is not None and lam >= max_load_factor * (1 - 1e-12):
@@ -432,11 +434,12 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
         # ---- accept the step; the factor of the last Newton iteration (one tiny correction
         # away from the converged state) serves the next predictor and the inertia count
         try:
-            fac1 = fac_new if fac_new is not None else factorize(st.eval(uf1)[2])
-            neg1 = fac1.negative
-        except SingularTangent:
-            fac1, neg1 = None, -1
-        if control == "load" and fac1 is not None and neg1 > neg and not hit.any():
+            fac1 = fac_new if fac_new is not None else factor(st.eval(uf1)[2], "symmetric")
+            neg1 = fac1.inertia
+        except SingularMatrixError:
+            fac1, neg1 = None, None
+        known = neg is not None and neg1 is not None     # both inertias counted
+        if control == "load" and known and neg1 > neg and not hit.any():
             # load control cannot pass a critical point: a limit point ends the path; on a
             # bifurcation the (now unstable) fundamental path is followed
             kind, detail, _ = _classify(st, uf1, neg, neg1)
@@ -448,13 +451,13 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                 out.termination = _cannot_continue(control, lam1, neg1)
                 out.events.append(Event("end", lam1, detail=out.termination))
                 break
-        if (locate_critical and fac1 is not None and neg1 != neg and not hit.any()
+        if (locate_critical and known and neg1 != neg and not hit.any()
                 and mode != "branch" and control != "load"):
             crit = _critical_point(st, m, out, uf, lam, fac, dss, branch_dir, du_prev, mode,
                                    neg, neg1, record, branch)
         else:
             crit = None
-            if fac1 is not None and neg1 != neg and hit.any() and control != "load":
+            if known and neg1 != neg and hit.any() and control != "load":
                 # a failure event changed the inertia: the critical point is the event state
                 kind, detail, _ = _classify(st, uf1, neg, neg1)
                 out.events.append(Event(kind, lam1, point=len(out.path),
@@ -467,9 +470,9 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
             du_prev = None
             uf, lam, res = u2, lam2, res2
             try:
-                fac1 = factorize(st.eval(uf)[2])
-                neg1 = fac1.negative
-            except SingularTangent:
+                fac1 = factor(st.eval(uf)[2], "symmetric")
+                neg1 = fac1.inertia
+            except SingularMatrixError:
                 # (a multiple critical point) the factor from before serves the predictor
                 fac1 = fac
             branch_dir = phi if phi @ st.f >= 0 else -phi
@@ -490,7 +493,7 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                 out.termination = reason
                 break
             uf, res, fac1 = uf_new, res_new, fac_new
-            neg1 = fac1.negative
+            neg1 = fac1.inertia
         if fac1 is None:
             out.termination = _cannot_continue(control, lam, neg)
             out.events.append(Event("end", lam, detail=out.termination))
@@ -509,9 +512,9 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
     return out
 
 
-def _cannot_continue(control: str, lam: float, neg: int) -> str:
+def _cannot_continue(control: str, lam: float, neg: int | None) -> str:
     why = "Newton iterations did not converge even with a step cut 4096 times"
-    if control == "load" and neg != 0:
+    if control == "load" and neg:           # a count of negative eigenvalues, not unknown
         why = ("no equilibrium at a larger load factor: the tangent stiffness has "
                f"{neg} negative eigenvalue(s) (a limit point or unstable branch); use "
                "--control arc-length")
@@ -596,11 +599,11 @@ def _critical_point(st, m, out, uf, lam, fac, dss, direction, du_prev, mode, neg
         if new is None:
             break
         try:
-            fmid = new[4] if new[4] is not None else factorize(st.eval(new[0])[2])
-        except SingularTangent:
+            fmid = new[4] if new[4] is not None else factor(st.eval(new[0])[2], "symmetric")
+        except SingularMatrixError:
             state_hi = new
             break
-        if fmid.negative == neg0:
+        if fmid.inertia == neg0:
             lo = mid
         else:
             hi, state_hi = mid, new
@@ -622,7 +625,7 @@ def _critical_point(st, m, out, uf, lam, fac, dss, direction, du_prev, mode, neg
 
 def _classify(st, uf, neg0, neg1):
     """Limit point (the critical mode does work on the load) or bifurcation (it does not)."""
-    w, phi = critical_mode(st.eval(uf)[2])
+    w, phi = nearest_zero_mode(st.eval(uf)[2])
     ratio = abs(phi @ st.f) / (np.linalg.norm(st.f) * np.linalg.norm(phi))
     kind = "limit_point" if ratio > _BIFURCATION_RATIO else "bifurcation"
     return kind, (f"negative eigenvalues {neg0} -> {neg1}; |phi.f|/(|phi||f|) = "
@@ -695,14 +698,14 @@ def _reequilibrate(st, m, out, uf, lam, handover, record):
         mg = m.margins(res)
         over = mg >= (-1e-6 if interrupted else 1e-9)
         if not over.any():
-            fac = factorize(st.eval(uf)[2])
-            record(uf, lam, res, fac.negative)
+            fac = factor(st.eval(uf)[2], "symmetric")
+            record(uf, lam, res, fac.inertia)
             return uf, res, fac, ""
         # cascade: the most overloaded member fails now, at the same load factor
         c, e = np.unravel_index(np.argmax(np.where(over, mg, -np.inf)), mg.shape)
         hit = np.zeros_like(over)
         hit[c, e] = True
-        point = record(uf, lam, res, -1)
+        point = record(uf, lam, res, None)
         _apply_failures(st, m, out, hit, mg, res, lam, point)
         out.events[-1].detail += " (redistribution at the same load factor)"
     return None, None, None, "too many cascading failures"
@@ -746,9 +749,9 @@ def _release(st, uf0, lam, event_tolerance=1e-6, min_increment=1.0 / 4096):
                 return u, r
             try:
                 if not modified or held["fac"] is None or rn > 0.5 * rprev:
-                    held["fac"] = factorize(K if K is not None else st.eval(u)[2])
-                u = st.add(u, -held["fac"].solve(R))
-            except SingularTangent:
+                    held["fac"] = factor(K if K is not None else st.eval(u)[2], "symmetric")
+                u = st.add(u, -held["fac"].solve(R, refine=False))
+            except SingularMatrixError:
                 return None
             rprev = rn
             if not np.all(np.isfinite(u)):
@@ -803,6 +806,6 @@ def _handover(st, m, out, x, conn, lam):
         forces = np.zeros(s.n_members)
         if mot.tensions is not None and xp is mot.positions[-1]:
             forces[forces_alive] = mot.tensions
-        out.path.append(PathPoint(lam, u, forces, forces_alive.copy(), -1, "mechanism"))
+        out.path.append(PathPoint(lam, u, forces, forces_alive.copy(), None, "mechanism"))
     out.events.append(Event("equilibrium_form" if mot.converged else "end", lam, None,
                             len(out.path) - 1, detail=mot.reason))

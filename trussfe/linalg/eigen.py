@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: MIT
-"""Shift-invert Lanczos for the generalized symmetric eigenproblem ``K φ = λ M φ``.
+"""Eigen-solvers: shift-invert Lanczos for ``K φ = λ M φ`` and the eigenpair of a symmetric
+matrix nearest zero.
 
 A plain Lanczos iteration with full reorthogonalisation in the ``M`` inner product on the
 operator ``(K − σM)⁻¹ M`` (Ericsson & Ruhe's spectral transformation): the operator is
@@ -24,6 +25,7 @@ from typing import Callable
 import numpy as np
 import scipy.linalg as sla
 import scipy.sparse as sp
+import scipy.sparse.linalg as spla
 
 log = logging.getLogger(__name__)
 
@@ -204,3 +206,28 @@ def _missed_copy(solve, M, V: np.ndarray, mu_min: float, seed: int) -> bool:
         np.multiply(w, 1.0 / b, out=Q[:, j + 1])
         np.multiply(Mw, 1.0 / b, out=MQ[:, j + 1])
     return False
+
+
+#: Order up to which :func:`nearest_zero_mode` solves densely.
+DENSE_EIGEN_LIMIT = 600
+
+
+def nearest_zero_mode(K: sp.spmatrix) -> tuple[float, np.ndarray]:
+    """Eigenvalue of a symmetric ``K`` nearest zero and its unit eigenvector.
+
+    Dense for orders up to :data:`DENSE_EIGEN_LIMIT`, shift-invert Lanczos (``eigsh``,
+    σ = 0) otherwise.
+
+    Examples
+    --------
+    >>> w, v = nearest_zero_mode(sp.csr_matrix(np.diag([3.0, -0.5, 2.0])))
+    >>> w, np.abs(v).tolist()
+    (-0.5, [0.0, 1.0, 0.0])
+    """
+    n = K.shape[0]
+    if n <= DENSE_EIGEN_LIMIT:
+        w, v = sla.eigh(K.toarray())
+        i = int(np.argmin(np.abs(w)))
+        return float(w[i]), v[:, i]
+    w, v = spla.eigsh(sp.csc_matrix(K), k=1, sigma=0.0, which="LM")
+    return float(w[0]), v[:, 0] / np.linalg.norm(v[:, 0])

@@ -25,38 +25,14 @@ import numpy as np
 import scipy.linalg as sla
 import scipy.sparse as sp
 from scipy.sparse.csgraph import reverse_cuthill_mckee
-from threadpoolctl import ThreadpoolController
 
+from .sparse import free_submatrix
+from .tolerance import SINGULAR_PIVOT
 
-#: Largest half-bandwidth (after reordering) for which :func:`banded_factor` factorises.
-BANDED_MAX_BANDWIDTH = 400
 
 #: Half-bandwidth up to which the given DOF ordering is kept without trying reverse
 #: Cuthill–McKee (whose cost would then exceed any gain).
 NATURAL_BANDWIDTH_OK = 32
-
-#: Smallest accepted ratio of the smallest to the largest pivot of :class:`BandedLU`.  The
-#: ratio is ~5e-14 for a 10,000-bay chain and ~3e-13 for 100,000 bays (measured); SuperLU's
-#: threshold, 1e-11 (:data:`trussfe.fem.linsolve.SINGULAR_PIVOT`), would refuse both.
-BANDED_LU_PIVOT = 1e-15
-
-#: Smallest accepted ratio of the smallest to the largest diagonal entry of the Cholesky
-#: factor (pivot ratio 1e-16: numerically singular).
-CHOLESKY_PIVOT = 1e-8
-
-_CONTROLLER: ThreadpoolController | None = None
-
-
-def one_blas_thread():
-    """Context: BLAS on one thread.  The band routines work on tiny blocks, where BLAS threads
-    only add overhead (3–7x slower).  The controller is made once — building one scans the
-    loaded libraries, ~3 ms, which a Lanczos iteration would pay at every solve.  The limit
-    must be lifted by the thread that set it (OpenBLAS ignores a restore from another
-    thread), so contexts are not to overlap across threads."""
-    global _CONTROLLER
-    if _CONTROLLER is None:
-        _CONTROLLER = ThreadpoolController()
-    return _CONTROLLER.limit(limits=1, user_api="blas")
 
 
 @dataclass
@@ -130,7 +106,7 @@ def _finish(n: int, row: np.ndarray, col: np.ndarray, data: np.ndarray, max_band
         bw_rcm = int(np.max(r2 - c2)) if row.size else 0
         if bw_rcm < bw:
             perm, bw, row, col = rcm, bw_rcm, r2, c2
-    if bw > max_bandwidth:
+    if max_bandwidth is not None and bw > max_bandwidth:
         return None
     if perm is None:
         perm = np.arange(n, dtype=np.int64)
@@ -149,7 +125,7 @@ def _finish(n: int, row: np.ndarray, col: np.ndarray, data: np.ndarray, max_band
     return BandLayout(perm, bw, row, col, data)
 
 
-def band_layout(A: sp.spmatrix, max_bandwidth: int = BANDED_MAX_BANDWIDTH,
+def band_layout(A: sp.spmatrix, max_bandwidth: int | None = None,
                 anchored: np.ndarray | None = None) -> BandLayout | None:
     """Ordering and entries of a symmetric sparse matrix for band storage.
 
@@ -162,7 +138,7 @@ def band_layout(A: sp.spmatrix, max_bandwidth: int = BANDED_MAX_BANDWIDTH,
     Returns
     -------
     BandLayout or None
-        None when the half-bandwidth exceeds ``max_bandwidth``.
+        None when the half-bandwidth exceeds ``max_bandwidth`` (None: no limit).
     """
     A = sp.csr_matrix(A)
     if not A.has_canonical_format:
@@ -175,7 +151,7 @@ def band_layout(A: sp.spmatrix, max_bandwidth: int = BANDED_MAX_BANDWIDTH,
 
 
 def band_layout_free(K: sp.csr_matrix, free: np.ndarray,
-                     max_bandwidth: int = BANDED_MAX_BANDWIDTH) -> BandLayout | None:
+                     max_bandwidth: int | None = None) -> BandLayout | None:
     """:func:`band_layout` of ``K[free][:, free]`` with ``anchored`` = the free rows coupled
     to a fixed DOF, in one pass over the entries of ``K`` (the submatrix is not formed).
 
@@ -204,10 +180,48 @@ def band_layout_free(K: sp.csr_matrix, free: np.ndarray,
     row, col, data = row[keep], col[keep], K.data[keep]
 
     def matrix():
-        from .solver import free_submatrix
         return free_submatrix(K, free)
 
     return _finish(n, row, col, data, max_bandwidth, anchored, matrix=matrix)
+
+
+class SummedBandLayout(BandLayout):
+    """A :class:`BandLayout` given by element blocks in the upper triangle (``row ≤ col``; −1
+    in ``row`` marks an entry on a removed (supported) row, which is left out).  A position may
+    occur more than once (every element at a node adds to its diagonal block), so the band
+    arrays are summed with ``bincount``; ``reversed`` says the band numbering is ``n − 1 −``
+    the numbering of ``row`` and ``col`` (see :func:`band_layout` on the direction).  The
+    assembly of a truss straight into it is :func:`trussfe.fem.truss_band.truss_band_layout`.
+    """
+
+    def __init__(self, perm, bandwidth, row, col, data, reversed_: bool):
+        super().__init__(perm, bandwidth, row, col, data)
+        self.reversed = reversed_
+
+    def _band_rc(self):
+        # (row, col) in the band numbering with row ≤ col; left-out entries at row −1
+        n = self.n
+        if not self.reversed:
+            return self.row, self.col
+        lo = np.where(self.row >= 0, n - 1 - self.col, -1).astype(self.row.dtype)
+        return lo, (n - 1 - self.row).astype(self.col.dtype)
+
+    def upper_band(self) -> np.ndarray:
+        bw, n = self.bandwidth, self.n
+        size = (bw + 1) * n
+        r, c = self._band_rc()
+        # Fortran position of (bw + i − j, j) is bw·(j + 1) + i; left-out entries go to a
+        # spare slot past the end (no compressed copies of the entry arrays)
+        idx = np.empty(r.size, dtype=np.int64)
+        np.multiply(c, bw, out=idx)
+        idx += bw
+        idx += r
+        idx[r < 0] = size
+        flat = np.bincount(idx, weights=self.data, minlength=size + 1)[:size]
+        return flat.reshape((bw + 1, n), order="F")
+
+    def general_band(self) -> np.ndarray:
+        return general_from_upper(self.upper_band())
 
 
 def general_from_upper(ab: np.ndarray) -> np.ndarray:
@@ -271,7 +285,7 @@ class BandedCholesky:
         self.bandwidth = bandwidth
 
     @classmethod
-    def build(cls, A: sp.spmatrix | None = None, max_bandwidth: int = BANDED_MAX_BANDWIDTH,
+    def build(cls, A: sp.spmatrix | None = None, max_bandwidth: int | None = None,
               layout: BandLayout | None = None, upper: np.ndarray | None = None
               ) -> "BandedCholesky | None":
         """Factorise ``A`` (or the matrix of ``layout``), or return None (bandwidth above
@@ -281,20 +295,21 @@ class BandedCholesky:
         if layout is None:
             return None
         ab = layout.upper_band() if upper is None else upper
-        with one_blas_thread():
-            c, info = sla.lapack.dpbtrf(ab, lower=0, overwrite_ab=int(upper is None))
+        c, info = sla.lapack.dpbtrf(ab, lower=0, overwrite_ab=int(upper is None))
         if info != 0:                          # a non-positive pivot: not positive definite
             return None
         d = np.abs(c[layout.bandwidth])
-        if d.size and d.min() <= CHOLESKY_PIVOT * d.max():
+        # the LDLᵀ pivots are the squares of the Cholesky diagonal
+        ratio = float((d.min() / d.max()) ** 2) if d.size else 1.0
+        if ratio <= SINGULAR_PIVOT:
             return None
-        return cls(c, layout.perm, layout.bandwidth)
+        out = cls(c, layout.perm, layout.bandwidth)
+        out.pivot_ratio = ratio
+        return out
 
     def solve(self, b: np.ndarray) -> np.ndarray:
         """Solve A x = b (b of shape (n,) or (n, k))."""
-        with one_blas_thread():
-            x, info = sla.lapack.dpbtrs(self.factor, np.asarray(b, dtype=float)[self.perm],
-                                        lower=0)
+        x, info = sla.lapack.dpbtrs(self.factor, np.asarray(b, dtype=float)[self.perm], lower=0)
         return x[self.inverse]
 
 
@@ -306,8 +321,9 @@ class BandedLU:
     that round-off has made non-positive: beyond ~20,000 double-octahedral bays the stiffness
     of a chain's tip, ~L⁻⁴ relative to a bay's, is below the rounding of the entries, so the
     stored matrix is indefinite in its softest direction.  Accepted when the pivot ratio
-    exceeds :data:`BANDED_LU_PIVOT`; an exact mechanism leaves pivots at round-off level
-    (≲ 1e-16) and is refused.
+    exceeds :data:`~trussfe.linalg.tolerance.SINGULAR_PIVOT` (the ratio is ~5e-14 for a 10,000-bay
+    chain and ~3e-13 for 100,000 bays, measured); an exact mechanism leaves pivots at round-off
+    level (≲ 1e-16) and is refused.
 
     Examples
     --------
@@ -326,7 +342,7 @@ class BandedLU:
         self.inverse[perm] = np.arange(perm.size)
 
     @classmethod
-    def build(cls, A: sp.spmatrix | None = None, max_bandwidth: int = BANDED_MAX_BANDWIDTH,
+    def build(cls, A: sp.spmatrix | None = None, max_bandwidth: int | None = None,
               layout: BandLayout | None = None, upper: np.ndarray | None = None
               ) -> "BandedLU | None":
         """Factorise ``A`` (or the matrix of ``layout``) or return None (bandwidth too large,
@@ -337,25 +353,28 @@ class BandedLU:
             return None
         bw = layout.bandwidth
         gb = layout.general_band() if upper is None else general_from_upper(upper)
-        with one_blas_thread():
-            lub, piv, info = sla.lapack.dgbtrf(gb, bw, bw, overwrite_ab=1)
+        lub, piv, info = sla.lapack.dgbtrf(gb, bw, bw, overwrite_ab=1)
         if info != 0:                                      # an exactly zero pivot
             return None
         d = np.abs(lub[2 * bw])
-        if not np.all(np.isfinite(d)) or (d.size and d.min() <= BANDED_LU_PIVOT * d.max()):
+        if not np.all(np.isfinite(d)):
             return None
-        return cls(lub, piv, layout.perm, bw)
+        ratio = float(d.min() / d.max()) if d.size else 1.0
+        if ratio <= SINGULAR_PIVOT:
+            return None
+        out = cls(lub, piv, layout.perm, bw)
+        out.pivot_ratio = ratio
+        return out
 
     def solve(self, b: np.ndarray) -> np.ndarray:
         """Solve A x = b (b of shape (n,) or (n, k))."""
         bw = self.bandwidth
-        with one_blas_thread():
-            x, info = sla.lapack.dgbtrs(self.lub, bw, bw, np.asarray(b, dtype=float)[self.perm],
-                                        self.piv)
+        x, info = sla.lapack.dgbtrs(self.lub, bw, bw, np.asarray(b, dtype=float)[self.perm],
+                                    self.piv)
         return x[self.inverse]
 
 
-def banded_factor(A: sp.spmatrix | None = None, max_bandwidth: int = BANDED_MAX_BANDWIDTH,
+def banded_factor(A: sp.spmatrix | None = None, max_bandwidth: int | None = None,
                   anchored: np.ndarray | None = None, layout: BandLayout | None = None):
     """:class:`BandedCholesky` of ``A``, else :class:`BandedLU`, else None.
 
