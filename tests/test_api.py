@@ -336,6 +336,9 @@ def test_import_trussfe_gives_every_analysis():
                  "actuators", "elastic", "transient", "mechanism", "trace", "postcritical",
                  "validate"):
         assert name in trussfe.__all__ and callable(getattr(trussfe, name))
+    for name in ("elastic", "validate"):          # callable packages show the signature
+        assert inspect.signature(getattr(trussfe, name)) == \
+            inspect.signature(getattr(api, name))
     import trussfe.elastic.transient as tr        # the subpackages stay importable
     import trussfe.validate.engine as en
     assert callable(tr.transient_response) and callable(en.run_case)

@@ -17,7 +17,8 @@ from trussfe.cli import main
 from trussfe.errors import InputError, TrussfeError
 from trussfe.io.model_file import parse_model
 from trussfe.io.toml_text import loads
-from trussfe.rigid.motion import Motion, motion_from_spec
+from trussfe.rigid.motion import Motion
+from trussfe.rigid.motion_file import motion_from_spec
 
 STRUCTURE = parse_model(loads(hc.ACT), source="act.toml")
 

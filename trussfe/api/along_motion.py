@@ -47,12 +47,14 @@ def elastic(model: ModelLike, *, motion=None, steps: int | None = None,
         (step, member), ``section_forces`` (step, member, station, 6), …
     """
     from ..elastic.along_motion import simulate_elastic
+    from ..mechanics.conventions import Conventions
 
     choice("--scheme", scheme, SCHEMES)
     structure = as_structure(model)
     mot = load_motion_for(structure, motion, steps)
-    sim, resp, cmp = simulate_elastic(structure, mot, scheme=scheme, n_sections=sections,
-                                      subdivisions=subdivisions)
+    sim, resp, cmp = simulate_elastic(structure, mot, n_sections=sections,
+                                      subdivisions=subdivisions,
+                                      conventions=Conventions.from_scheme(scheme))
     return ElasticResult(structure, resp, rigid=sim, comparison=cmp)
 
 

@@ -57,15 +57,16 @@ def static(model: ModelLike, *, bar_model: str = "truss", subdivisions: int | No
                                                 subdivisions=subdivisions, backend=solver))
 
 
-def modes(model: ModelLike, *, count: int = 6, mass: str = "consistent",
+def modes(model: ModelLike, *, count: int | None = None, mass: str = "consistent",
           bar_model: str = "truss", subdivisions: int | None = None) -> ModesResult:
     """Natural frequencies and mass-normalised mode shapes (``trussfe modes``).
 
     Parameters
     ----------
     model : Structure, path or dict
-    count : int
-        Number of modes.
+    count : int, optional
+        Number of modes (default 6, or every mode of a model with fewer free DOFs that carry
+        mass).
     mass : {"consistent", "lumped"}
         Member mass matrix.
     bar_model : {"truss", "pinned-beam"}

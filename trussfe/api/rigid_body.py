@@ -14,7 +14,9 @@ from .model import ModelLike, as_structure, resolve_beside
 from .options import choice, positive_int
 from .results import Result
 
-#: Kinematics schemes: exact, or Lacy's backward differences.
+#: Kinematics schemes: exact (:data:`~trussfe.mechanics.conventions.PHYSICAL`), or Lacy's
+#: Appendix A (:data:`~trussfe.mechanics.conventions.THESIS`: backward differences and
+#: whole-length section inertia).
 SCHEMES = ("exact", "thesis")
 
 
@@ -23,7 +25,8 @@ def load_motion_for(structure: Structure, motion, steps: int | None, *,
     """The :class:`~trussfe.rigid.motion.Motion` of a ``motion`` option: a motion object as
     is, a file path (TOML ``[motion]`` or CSV; a relative path not found from the working
     directory is taken beside the model file), or ``None`` (the model at rest)."""
-    from ..rigid.motion import Motion, load_motion
+    from ..rigid.motion import Motion
+    from ..rigid.motion_file import load_motion
 
     positive_int("--steps", steps)
     if motion is None:
@@ -42,13 +45,14 @@ def load_motion_for(structure: Structure, motion, steps: int | None, *,
 
 
 def _simulate(model: ModelLike, motion, steps, scheme: str, sections: int, progress: bool):
+    from ..mechanics.conventions import Conventions
     from ..rigid.simulate import simulate as run
 
     choice("--scheme", scheme, SCHEMES)
     structure = as_structure(model)
     mot = load_motion_for(structure, motion, steps)
-    return structure, run(structure, mot, scheme=scheme, n_sections=sections,
-                          progress=progress)
+    return structure, run(structure, mot, conventions=Conventions.from_scheme(scheme),
+                          n_sections=sections, progress=progress)
 
 
 def simulate(model: ModelLike, *, motion=None, steps: int | None = None,
@@ -101,10 +105,20 @@ def actuators(model: ModelLike, *, motion=None, steps: int | None = None) -> Act
     -------
     ActuatorsResult
         ``force``, ``motor_torque``, ``motor_voltage`` (step, actuator), ``history(name)``.
+
+    Raises
+    ------
+    InputError
+        The model has no ``[actuators]`` table.
     """
     from ..rigid import actuator as _actuator  # noqa: F401  (registers [actuators])
 
-    structure, res = _simulate(model, motion, steps, "exact", 7, False)
+    structure = as_structure(model)
+    if not _actuator.actuators_of(structure):
+        raise InputError(structure.source or structure.name or "model",
+                         "the model has no [actuators] table: give the leadscrew and motor "
+                         "data of the actuators to analyse (see docs/actuators.md)")
+    structure, res = _simulate(structure, motion, steps, "exact", 7, False)
     return ActuatorsResult(structure, res)
 
 

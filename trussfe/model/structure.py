@@ -60,7 +60,10 @@ class Structure:
     is_beam : ndarray of bool, shape (m,)
         True for ``type = "beam"`` (rigid joints), False for pin-jointed bars.
     releases : ndarray of bool, shape (m, 2)
-        Moment releases of a beam at its start and end.
+        Bending-moment releases of a beam at its start and end.
+    torsion_releases : ndarray of bool, shape (m, 2)
+        Explicit torsion releases of a 3-D beam at its start and end (what a release frees:
+        :mod:`trussfe.mechanics.releases`).
     orientation : ndarray, shape (m, 3)
         For 3-D beams, a vector in the local x–y plane (``nan`` row: default orientation).
     supports : ndarray of bool, shape (n, ndof)
@@ -106,6 +109,7 @@ class Structure:
     masses: np.ndarray
     gravity: np.ndarray
     orientation: np.ndarray | None = None
+    torsion_releases: np.ndarray | None = None
     extensions: Mapping[str, Any] = field(default_factory=dict)
     source: str = ""
     member_groups: InitVar[np.ndarray | None] = None
@@ -137,6 +141,9 @@ class Structure:
                                                 "connectivity"))
         put(self, "is_beam", _frozen_array(self.is_beam, bool, (m,), "is_beam"))
         put(self, "releases", _frozen_array(self.releases, bool, (m, 2), "releases"))
+        tors = np.zeros((m, 2), dtype=bool) if self.torsion_releases is None \
+            else self.torsion_releases
+        put(self, "torsion_releases", _frozen_array(tors, bool, (m, 2), "torsion_releases"))
         orient = np.full((m, 3), np.nan) if self.orientation is None else self.orientation
         put(self, "orientation", _frozen_array(orient, float, (m, 3), "orientation"))
         put(self, "supports", _frozen_array(self.supports, bool, (n, ndof), "supports"))
@@ -340,8 +347,8 @@ class Structure:
         return self.variant(
             materials=self._per_member(self.materials, materials, "materials"))
 
-    def with_member_data(self, *, is_beam=None, releases=None, orientation=None
-                         ) -> "Structure":
+    def with_member_data(self, *, is_beam=None, releases=None, orientation=None,
+                         torsion_releases=None) -> "Structure":
         """The structure with other member types, moment releases or beam orientations.
 
         Each argument is either a whole array (shapes (m,), (m, 2), (m, 3)) or a mapping
@@ -350,7 +357,8 @@ class Structure:
         """
         changes = {}
         for key, value in (("is_beam", is_beam), ("releases", releases),
-                           ("orientation", orientation)):
+                           ("orientation", orientation),
+                           ("torsion_releases", torsion_releases)):
             if value is None:
                 continue
             if isinstance(value, Mapping):
@@ -399,6 +407,7 @@ imperfection=None, branch=None, max_displacement=None)}
             sections=tuple(self.sections[i] for i in idx),
             materials=tuple(self.materials[i] for i in idx),
             is_beam=self.is_beam[idx], releases=self.releases[idx],
+            torsion_releases=self.torsion_releases[idx],
             orientation=self.orientation[idx],
             extensions=subset_extensions(self.extensions, idx)), props)
 
