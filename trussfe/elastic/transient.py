@@ -65,7 +65,8 @@ import scipy.linalg as sla
 import scipy.sparse.linalg as spla
 
 from ..errors import AnalysisError, InputError
-from ..fem.discretisation import BAR_MODELS, FEModel, discretise
+from ..fem.discretisation import FEModel, discretise
+from ..model.bar_models import BAR_MODELS
 from ..fem.solver import factorise
 from ..linalg import factor
 from ..fem.static import section_forces as fe_section_forces

@@ -54,17 +54,12 @@ from skfem import Basis, ElementLineHermite, ElementLineP1, MeshLine1, asm
 
 from ..errors import InputError
 from ..mechanics.releases import JOINT, OWN, end_rotations
+from ..model.bar_models import BAR_MODELS, DEFAULT_FRAME_SUBDIVISIONS
 from ..model.structure import Structure
 from . import forms
 
 log = logging.getLogger(__name__)
 
-#: Default number of sub-elements of a frame member (beams and pinned-beam bars).  Four cubic
-#: elements give the midspan moment of a uniformly loaded pinned member exactly at the nodes
-#: and deflections to round-off; truss bars are never subdivided.
-DEFAULT_FRAME_SUBDIVISIONS = 4
-
-BAR_MODELS = ("truss", "pinned-beam")
 
 #: Quadrature order: exact for the Hermite consistent mass (degree 6).
 _INTORDER = 6

@@ -43,7 +43,7 @@ import logging
 import numpy as np
 
 from ..errors import InputError
-from ..model.postcritical import BAR_MODELS
+from ..model.bar_models import BAR_MODELS, DEFAULT_POSTCRITICAL_SUBDIVISIONS
 from ..model.structure import Structure
 from ..mechanics.releases import HELD, JOINT, OWN, end_rotations
 from .beam3d import (beam3d_matrices, compose, expm_so3, reference_frames,
@@ -64,7 +64,8 @@ class NonlinearModel:
     bar_model : {"truss", "pinned-beam"}
         How pin-jointed bars are modelled.
     subdivisions : int
-        Beam elements per beam (or pinned-beam) member.
+        Beam elements per beam (or pinned-beam) member (default
+        :data:`~trussfe.model.bar_models.DEFAULT_POSTCRITICAL_SUBDIVISIONS`).
     laws : FailureLaws, optional
         Failure laws per member (only bar members modelled as truss elements use them).
 
@@ -88,7 +89,7 @@ class NonlinearModel:
     """
 
     def __init__(self, structure: Structure, bar_model: str = "truss",
-                 subdivisions: int = 8, laws: FailureLaws | None = None):
+                 subdivisions: int = DEFAULT_POSTCRITICAL_SUBDIVISIONS, laws: FailureLaws | None = None):
         if bar_model not in BAR_MODELS:
             raise InputError("--bar-model", f"unknown bar model {bar_model!r}; valid: "
                                             f"{', '.join(BAR_MODELS)}")
