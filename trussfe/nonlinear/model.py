@@ -45,7 +45,8 @@ import numpy as np
 from ..errors import InputError
 from ..model.bar_models import BAR_MODELS, DEFAULT_POSTCRITICAL_SUBDIVISIONS
 from ..model.structure import Structure
-from ..mechanics.releases import HELD, JOINT, OWN, end_rotations
+from ..mechanics.dof_numbering import member_end_rotations, number_dofs
+from ..mechanics.releases import HELD, JOINT, OWN
 from .beam3d import (beam3d_matrices, compose, expm_so3, reference_frames,
                      tangent_operator, tangent_operator_derivative)
 from .elements import (beam2d_local, beam2d_matrices, truss_kinematics,
@@ -141,9 +142,16 @@ class NonlinearModel:
         """Points and rotation slots: ``k`` beam elements per beam member, the points inside
         members after the joints, and the rotation slot of every beam element end.
 
-        Slots are numbered joints first (joints with a rotation, :mod:`~trussfe.mechanics.
-        releases`), then the member ends that own a rotation (all start ends, then all end
-        ends), then the points inside members.
+        The joints' translations (DOFs ``dim·node + axis``) and their rotation slots (joints
+        with rotations, in node order) are numbered as the linear discretisation numbers them
+        (:func:`~trussfe.mechanics.dof_numbering.number_dofs`).  The rest differs in order and
+        in kind: every point's translations come before all rotations (points inside members
+        follow the joints, translations in global axes), and a rotation slot holds the whole
+        rotation of a member end or inner point (3 DOFs in 3-D, the components that are the
+        joint's or held are fixed DOFs), where the linear model numbers only the owned
+        components (member axes) — a co-rotational slot stores a finite rotation, which cannot
+        be split into independent components.  Slots: joints first, then the member ends that
+        own a rotation (all start ends, then all end ends), then the points inside members.
         """
         s = self.structure
         dim, n = s.dim, s.n_nodes
@@ -151,18 +159,15 @@ class NonlinearModel:
         b_mem = np.flatnonzero(beam_members)
         nb = b_mem.size
         self._b_mem, self._k = b_mem, k
-        # what each end rotation is: the meaning shared with the linear discretisation
-        released = np.where(s.is_beam[:, None], s.releases, True) & beam_members[:, None]
+        # what each end rotation is, and which joints carry rotations numbered in which
+        # order: the linear discretisation's definitions (mechanics.dof_numbering)
         axis = s.member_vectors() / s.lengths()[:, None]
-        er = end_rotations(dim, conn, axis, beam_members, s.is_beam & (dim == 3), released,
-                           s.torsion_releases & s.is_beam[:, None], s.supports[:, dim:])
+        er = member_end_rotations(s, self.bar_model, axis)
         self.end_rotations = er
         rigid_end = er.shared & beam_members[:, None]
         self.rigid_end = rigid_end
-        joint_has_rot = er.joint_rotation
-        joint_slot = np.full(n, -1)
-        joint_slot[joint_has_rot] = np.arange(joint_has_rot.sum())
-        nslot = int(joint_has_rot.sum())
+        joint_slot = number_dofs(s, self.bar_model, k, er).joint_rotation_rank()
+        nslot = int(er.joint_rotation.sum())
         # points inside each beam member: (nb, k-1)
         inner_pts = n + np.arange(nb * (k - 1)).reshape(nb, k - 1)
         t = (np.arange(1, k) / k)[None, :, None]
