@@ -4,7 +4,7 @@
 At every time step of a maneuver the finite-element model (:mod:`trussfe.fem`, pinned-beam
 bar model: every bar a subdivided Hermite beam with both end moments released) is assembled
 in the current configuration — the rigid-body positions ``kin.coords[step]`` — and loaded with
-gravity and the d'Alembert loads of the motion (:mod:`trussfe.elastic.loads`).  Its linear
+gravity and the d'Alembert loads of the motion (:mod:`trussfe.response.loads`).  Its linear
 static solution gives displacements, reactions and member section forces.
 
 **All steps in one solve.**  The steps are independent, so a block of steps is discretised

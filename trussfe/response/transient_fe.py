@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 """Finite-element matrices and driving loads of a truss at many instants of a motion at once.
 
-The elastic model of :mod:`trussfe.elastic.transient` needs, at every time step ``n``, the
+The elastic model of :mod:`trussfe.response.transient` needs, at every time step ``n``, the
 stiffness ``K_n`` and mass ``M_n`` of the structure in its current (rigid-motion) geometry and
 the driving load ``f_n = f_g − M_n a_r,n`` (gravity and d'Alembert inertia of the prescribed
 motion).  Assembling one model per step would cost one scikit-fem assembly per step, so a
