@@ -59,7 +59,7 @@ def postcritical(model: ModelLike, *, control: str | None = None, steps: int | N
         (point, member), ``events``, ``termination``.
     """
     from ..nonlinear.analysis import run_postcritical
-    from ..nonlinear.model import BAR_MODELS
+    from ..model.bar_models import BAR_MODELS
     from ..nonlinear.path import CONTROLS
 
     if control is not None:

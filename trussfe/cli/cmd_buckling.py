@@ -12,7 +12,7 @@ import numpy as np
 
 from .. import api
 from ..fem.buckling import BucklingResult
-from ..fem.discretisation import BAR_MODELS
+from ..model.bar_models import BAR_MODELS
 from ..io.output import write_json
 from ._modeshapes import write_modes_vtk
 from . import options as opt

@@ -8,7 +8,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from ..fem.discretisation import BAR_MODELS
+from ..model.bar_models import BAR_MODELS
 from .. import api
 from ..fem.modal import DEFAULT_MODE_COUNT, MASS_KINDS, ModalResult
 from ..io.output import write_json

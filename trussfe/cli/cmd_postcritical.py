@@ -17,7 +17,7 @@ import numpy as np
 from .. import api
 from ..io.output import write_json
 from ..nonlinear.analysis import unmodelled_buckling
-from ..nonlinear.model import BAR_MODELS
+from ..model.bar_models import BAR_MODELS, DEFAULT_POSTCRITICAL_SUBDIVISIONS
 from ..nonlinear.path import CONTROLS, PathResult
 from ..nonlinear.plot import write_plot
 from . import options as opt
@@ -45,7 +45,8 @@ def register(subparsers) -> None:
     p.add_argument("--bar-model", choices=BAR_MODELS, default=None,
                    help="bars as co-rotational truss elements or as pinned beams")
     p.add_argument("--subdivisions", type=opt.positive_int, default=None, metavar="K",
-                   help="beam elements per beam member (default 8)")
+                   help="beam elements per beam member (default "
+                        f"{DEFAULT_POSTCRITICAL_SUBDIVISIONS})")
     p.add_argument("--imperfection", type=opt.nonneg_real, default=None, metavar="A",
                    help="amplitude (m) of the first buckling mode added to the geometry")
     p.add_argument("--branch", action="store_true", default=None,

@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import api
-from ..fem.discretisation import BAR_MODELS
+from ..model.bar_models import BAR_MODELS
 from ..fem.static import StaticResult
 from ..io.output import write_json
 from ..io.vtk import write_vtu as _write_vtu

@@ -55,18 +55,14 @@ from ..budget import require
 from ..errors import InputError
 from ..mechanics.geometry import local_axes, member_vectors, unit_vectors
 from ..mechanics.mass import mass_per_length, twist_inertia_per_length
-from ..mechanics.releases import JOINT, OWN, end_rotations
+from ..mechanics.dof_numbering import frame_members, member_end_rotations, number_dofs
+from ..mechanics.releases import JOINT, OWN
+from ..model.bar_models import BAR_MODELS, DEFAULT_FRAME_SUBDIVISIONS
 from ..model.structure import Structure
 from . import forms
 
 log = logging.getLogger(__name__)
 
-#: Default number of sub-elements of a frame member (beams and pinned-beam bars).  Four cubic
-#: elements give the midspan moment of a uniformly loaded pinned member exactly at the nodes
-#: and deflections to round-off; truss bars are never subdivided.
-DEFAULT_FRAME_SUBDIVISIONS = 4
-
-BAR_MODELS = ("truss", "pinned-beam")
 
 #: Quadrature order: exact for the Hermite consistent mass (degree 6).
 _INTORDER = 6
@@ -349,13 +345,13 @@ class FEModel:
         nrot = 1 if dim == 2 else 3
         self.ndim = dim
         self.nrot = nrot
-        n, m = s.n_nodes, s.n_members
+        m = s.n_members
         conn = s.connectivity
         # one pass over the member vectors for the lengths and the unit vectors (local_axes'
         # first row, by the same arithmetic)
         self._axis, L = unit_vectors(member_vectors(s.coords, conn))
         self._rotation = None
-        is_frame = s.is_beam.copy() if self.bar_model == "truss" else np.ones(m, dtype=bool)
+        is_frame = frame_members(s, self.bar_model)
         if np.any(is_frame) or np.any(np.isfinite(s.orientation)):
             self.rotation                      # frame axes needed now; bad orientations fail here
         self.is_frame = is_frame
@@ -365,12 +361,12 @@ class FEModel:
         # torsion exists in beams only (pinned-beam bars: θ = 0 along the member)
         self.twist_member = s.is_beam & (dim == 3)
         # what each end rotation is (joint's, the end's own, or held): one definition
-        er = end_rotations(dim, conn, self._axis, is_frame, self.twist_member, released,
-                           s.torsion_releases & s.is_beam[:, None], s.supports[:, dim:])
+        er = member_end_rotations(s, self.bar_model, self._axis)
         self.end_rotations = er
         self._check_properties(is_frame)
 
-        ksub = np.where(is_frame, self.subdivisions, 1).astype(np.int64)
+        numbering = number_dofs(s, self.bar_model, self.subdivisions, er)
+        ksub = numbering.member_subdivisions
         self.member_subdivisions = ksub
         offs = np.zeros(m + 1, dtype=np.int64)
         np.cumsum(ksub, out=offs[1:])
@@ -383,37 +379,15 @@ class FEModel:
         self.element_x = np.stack([j * h, (j + 1) * h], axis=1)
         self.element_length = h
 
-        # ---- global DOF numbering
-        node_dofs = -np.ones((n, dim + nrot), dtype=np.int64)
-        node_dofs[:, :dim] = np.arange(n * dim).reshape(n, dim)
-        has_rot = er.joint_rotation
-        nxt = n * dim
-        nr = int(has_rot.sum())
-        node_dofs[has_rot, dim:] = nxt + np.arange(nr * nrot).reshape(nr, nrot)
-        nxt += nr * nrot
-        self.has_rotation = has_rot
-        # interior points of frame members: member, index 1..k-1, DOFs in member axes
-        npts_m = ksub - 1
-        pt_off = np.zeros(m + 1, dtype=np.int64)
-        np.cumsum(npts_m, out=pt_off[1:])
-        pt_member = np.repeat(np.arange(m), npts_m)
-        mask = np.ones((pt_member.size, dim + nrot), dtype=bool)
-        if dim == 3:
-            mask[:, dim] = self.twist_member[pt_member]
-        interior_dofs = -np.ones(mask.shape, dtype=np.int64)
-        interior_dofs[mask] = nxt + np.arange(int(mask.sum()))
-        nxt += int(mask.sum())
-        # private rotations of member ends (member axes; 2-D θz, 3-D twist, θy, θz) where
-        # the end's rotation is its own (mechanics.releases)
-        own = er.state == OWN
-        private = -np.ones(er.state.shape, dtype=np.int64)
-        private[own] = nxt + np.arange(int(own.sum()))
-        nxt += int(own.sum())
-        self.n_dof = int(nxt)
+        # ---- global DOF numbering (mechanics.dof_numbering)
+        node_dofs = numbering.node_dofs
+        self.has_rotation = numbering.has_rotation
+        pt_off = numbering.interior_offset
+        self.n_dof = numbering.n_dof
         self.node_dofs = node_dofs
-        self.interior_dofs = interior_dofs
-        self.interior_member = pt_member
-        self.private_dofs = private
+        self.interior_dofs = numbering.interior_dofs
+        self.interior_member = numbering.interior_member
+        self.private_dofs = numbering.private_dofs
 
         # ---- supports
         fixed = np.zeros(self.n_dof, dtype=bool)

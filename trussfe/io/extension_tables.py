@@ -18,7 +18,8 @@ from ..errors import InputError
 from ..model.active import ActiveMember
 from ..model.actuators import ACME_THREAD_ANGLE, Actuator
 from ..model.failure import BUCKLING, YIELD, FailureLaws, build_failure_laws
-from ..model.postcritical import BAR_MODELS, CONTROLS, SETTING_TYPES, PostcriticalSettings
+from ..model.bar_models import BAR_MODELS
+from ..model.postcritical import CONTROLS, SETTING_TYPES, PostcriticalSettings
 from ..model.structure import Structure
 
 _ACTIVE_KEYS = ("base_mass", "base_length", "base_cg", "base_inertia", "tube_length",

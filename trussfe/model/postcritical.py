@@ -11,7 +11,7 @@
     max_load_factor = 5.0
     monitor = "3:y"               # node:axis of the displacement plotted and controlled
     bar_model = "truss"           # "truss" | "pinned-beam"
-    subdivisions = 8
+    subdivisions = 8              # default: bar_models.DEFAULT_POSTCRITICAL_SUBDIVISIONS
     imperfection = 0.001          # m, amplitude of the first linear buckling mode
     branch = false                # follow the secondary branch at a bifurcation
     max_displacement = 0.5        # m, stop when the monitored displacement exceeds it
@@ -26,8 +26,6 @@ from typing import Any
 
 #: Path-following controls.
 CONTROLS = ("load", "displacement", "arc-length")
-#: How the post-critical analysis models a pin-jointed bar.
-BAR_MODELS = ("truss", "pinned-beam")
 
 
 @dataclass(frozen=True)

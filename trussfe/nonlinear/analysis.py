@@ -29,6 +29,7 @@ from ..errors import AnalysisError
 from ..io.extension_tables import AXES, parse_monitor
 from ..io.model_file import read_model
 from ..mechanics.euler import member_euler_loads
+from ..model.bar_models import DEFAULT_POSTCRITICAL_SUBDIVISIONS
 from ..model.structure import Structure
 from .buckling import apply_imperfection, linear_buckling
 from .failure import FailureLaws
@@ -58,7 +59,8 @@ def run_postcritical(structure: Structure, **options) -> PathResult:
         log.info("%s: gravity acts as a constant dead load; [loads] is scaled by the load "
                  "factor", structure.source or structure.name)
     model = NonlinearModel(structure, bar_model=opts.pop("bar_model", "truss"),
-                           subdivisions=opts.pop("subdivisions", 8), laws=laws)
+                           subdivisions=opts.pop("subdivisions",
+                                                  DEFAULT_POSTCRITICAL_SUBDIVISIONS), laws=laws)
     imperfection = opts.pop("imperfection", 0.0)
     if imperfection:
         _, modes = linear_buckling(model, count=1)

@@ -8,7 +8,14 @@ The linear buckling problem about the linear static state under the reference lo
 uses the tangent of the co-rotational elements at the reference geometry: ``K`` with zero
 forces and ``Kg(N0)`` the change made by the linear axial forces ``N0``.  Its first load factor
 is the one at which the nonlinear path of a perfect structure meets its first bifurcation
-(up to the pre-buckling shortening), and is compared with the FE core's eigen result.
+(up to the pre-buckling shortening).
+
+It is the FE core's eigenproblem (:func:`trussfe.fem.buckling.solve_buckling`, ``K + λ K_g``
+about the linear static state): the co-rotational tangent at the reference geometry is
+``K + K_g(N)`` element by element, and the load factors agree to round-off
+(tests/test_buckling_models_agree.py, tests/test_releases.py).  It is solved here on the
+co-rotational model's own DOFs because its modes become the imperfect reference geometry of
+that model (:func:`apply_imperfection`), including the points inside members.
 """
 from __future__ import annotations
 

@@ -44,9 +44,10 @@ import numpy as np
 
 from ..errors import InputError
 from ..mechanics.geometry import member_lengths, member_vectors
-from ..model.postcritical import BAR_MODELS
+from ..model.bar_models import BAR_MODELS, DEFAULT_POSTCRITICAL_SUBDIVISIONS
 from ..model.structure import Structure
-from ..mechanics.releases import HELD, JOINT, OWN, end_rotations
+from ..mechanics.dof_numbering import member_end_rotations, number_dofs
+from ..mechanics.releases import HELD, JOINT, OWN
 from .beam3d import (beam3d_matrices, compose, expm_so3, reference_frames,
                      tangent_operator, tangent_operator_derivative)
 from .elements import (beam2d_local, beam2d_matrices, truss_kinematics,
@@ -65,7 +66,8 @@ class NonlinearModel:
     bar_model : {"truss", "pinned-beam"}
         How pin-jointed bars are modelled.
     subdivisions : int
-        Beam elements per beam (or pinned-beam) member.
+        Beam elements per beam (or pinned-beam) member (default
+        :data:`~trussfe.model.bar_models.DEFAULT_POSTCRITICAL_SUBDIVISIONS`).
     laws : FailureLaws, optional
         Failure laws per member (only bar members modelled as truss elements use them).
 
@@ -89,7 +91,8 @@ class NonlinearModel:
     """
 
     def __init__(self, structure: Structure, bar_model: str = "truss",
-                 subdivisions: int = 8, laws: FailureLaws | None = None):
+                 subdivisions: int = DEFAULT_POSTCRITICAL_SUBDIVISIONS,
+                 laws: FailureLaws | None = None):
         if bar_model not in BAR_MODELS:
             raise InputError("--bar-model", f"unknown bar model {bar_model!r}; valid: "
                                             f"{', '.join(BAR_MODELS)}")
@@ -97,14 +100,28 @@ class NonlinearModel:
             raise InputError("subdivisions", f"must be at least 1, got {subdivisions}")
         s = structure
         self.structure = s
-        self.dim = dim = s.dim
+        self.dim = s.dim
         self.bar_model = bar_model
-        n, m = s.n_nodes, s.n_members
-        conn = s.connectivity
+        self.rdof = 1 if s.dim == 2 else 3                 # DOFs per rotation slot
         beam_members = s.is_beam | (bar_model == "pinned-beam")
-        rdof = 1 if dim == 2 else 3                 # DOFs per rotation slot
-        self.rdof = rdof
-        laws = laws if laws is not None else FailureLaws.none(m)
+        self._set_laws(beam_members, laws)
+        self._truss_elements(beam_members)
+        self._number_points_and_slots(beam_members, int(subdivisions))
+        self._beam_properties()
+        held = self._element_dofs()
+        self._supports(held)
+        self._loads()
+        self.dead = self._dead_load()
+        self.alive = np.ones(s.n_members, dtype=bool)
+        self.plastic = np.zeros(len(self.t_member))
+        #: (cause, truss element): events already reported (each is reported once)
+        self.silenced = np.zeros((3, len(self.t_member)), dtype=bool)
+
+    # ------------------------------------------------------------------ construction
+    def _set_laws(self, beam_members: np.ndarray, laws: FailureLaws | None) -> None:
+        """The members' failure laws; a buckling law only on bars modelled as truss elements."""
+        s = self.structure
+        laws = laws if laws is not None else FailureLaws.none(s.n_members)
         bad = np.flatnonzero(beam_members & (laws.buckling > 0))
         if bad.size:
             raise InputError(f"failure.members.{s.member_ids[int(bad[0])]}",
@@ -112,30 +129,46 @@ class NonlinearModel:
                              "beam (or pinned-beam) member buckles through its own bending "
                              "stiffness — remove the buckling law or use --bar-model truss")
         self.laws = laws
-        k = int(subdivisions)
 
-        # ---- truss elements: one per bar member
+    def _truss_elements(self, beam_members: np.ndarray) -> None:
+        """One co-rotational truss element per bar member (``t_*`` attributes)."""
+        s = self.structure
         t_mem = np.flatnonzero(~beam_members)
         self.t_member = t_mem
-        self.t_conn = conn[t_mem]
-        self.t_laws = laws.subset(t_mem)
+        self.t_conn = s.connectivity[t_mem]
+        self.t_laws = self.laws.subset(t_mem)
         self.t_EA = (s.E * s.area)[t_mem]
 
-        # ---- beam elements: k per beam member, points inside, rotation slots
+    def _number_points_and_slots(self, beam_members: np.ndarray, k: int) -> None:
+        """Points and rotation slots: ``k`` beam elements per beam member, the points inside
+        members after the joints, and the rotation slot of every beam element end.
+
+        The joints' translations (DOFs ``dim·node + axis``) and their rotation slots (joints
+        with rotations, in node order) are numbered as the linear discretisation numbers them
+        (:func:`~trussfe.mechanics.dof_numbering.number_dofs`).  The rest differs in order and
+        in kind: every point's translations come before all rotations (points inside members
+        follow the joints, translations in global axes), and a rotation slot holds the whole
+        rotation of a member end or inner point (3 DOFs in 3-D, the components that are the
+        joint's or held are fixed DOFs), where the linear model numbers only the owned
+        components (member axes) — a co-rotational slot stores a finite rotation, which cannot
+        be split into independent components.  Slots: joints first, then the member ends that
+        own a rotation (all start ends, then all end ends), then the points inside members.
+        """
+        s = self.structure
+        dim, n = s.dim, s.n_nodes
+        conn = s.connectivity
         b_mem = np.flatnonzero(beam_members)
         nb = b_mem.size
-        # what each end rotation is: the meaning shared with the linear discretisation
-        released = np.where(s.is_beam[:, None], s.releases, True) & beam_members[:, None]
+        self._b_mem, self._k = b_mem, k
+        # what each end rotation is, and which joints carry rotations numbered in which
+        # order: the linear discretisation's definitions (mechanics.dof_numbering)
         axis = s.member_vectors() / s.lengths()[:, None]
-        er = end_rotations(dim, conn, axis, beam_members, s.is_beam & (dim == 3), released,
-                           s.torsion_releases & s.is_beam[:, None], s.supports[:, dim:])
+        er = member_end_rotations(s, self.bar_model, axis)
         self.end_rotations = er
         rigid_end = er.shared & beam_members[:, None]
         self.rigid_end = rigid_end
-        joint_has_rot = er.joint_rotation
-        joint_slot = np.full(n, -1)
-        joint_slot[joint_has_rot] = np.arange(joint_has_rot.sum())
-        nslot = int(joint_has_rot.sum())
+        joint_slot = number_dofs(s, self.bar_model, k, er).joint_rotation_rank()
+        nslot = int(er.joint_rotation.sum())
         # points inside each beam member: (nb, k-1)
         inner_pts = n + np.arange(nb * (k - 1)).reshape(nb, k - 1)
         t = (np.arange(1, k) / k)[None, :, None]
@@ -153,13 +186,24 @@ class NonlinearModel:
             nslot += nown
         slots[:, 1:k] = nslot + np.arange(nb * (k - 1)).reshape(nb, k - 1)
         nslot += nb * (k - 1)
+        self._slots = slots
         self.b_member = np.repeat(b_mem, k)
         self.b_conn = np.stack([chain[:, :-1].ravel(), chain[:, 1:].ravel()], axis=1)
         self.b_slot = np.stack([slots[:, :-1].ravel(), slots[:, 1:].ravel()], axis=1)
+        self.X = np.vstack([s.coords, X_inner]) if nb else s.coords.copy()
+        self.n_points = self.X.shape[0]
+        self.n_rot = nslot
+        self.ndof = self.n_points * dim + nslot * self.rdof
+        self.joint_slot = joint_slot
+
+    def _beam_properties(self) -> None:
+        """Stiffness properties of the beam elements (``b_EA``, ``b_EI``, …), checked."""
+        s = self.structure
+        nb = self._b_mem.size
         self.b_EA = (s.E * s.area)[self.b_member]
-        Ib = s.Iz[self.b_member] if dim == 2 else s.Iy[self.b_member]
+        Ib = s.Iz[self.b_member] if self.dim == 2 else s.Iy[self.b_member]
         props = [("second moment of area (Iy)", Ib)]
-        if dim == 3:
+        if self.dim == 3:
             props += [("second moment of area (Iz)", s.Iz[self.b_member]),
                       ("torsion constant (J)", s.J[self.b_member]),
                       ("shear modulus (G)", s.G[self.b_member])]
@@ -170,16 +214,29 @@ class NonlinearModel:
                                  f"the member is modelled as a beam but its {what} is "
                                  "missing or not positive")
         self.b_EI = s.E[self.b_member] * Ib
-        if dim == 3:
+        if self.dim == 3:
             self.b_EIz = (s.E * s.Iz)[self.b_member]
             self.b_GJ = (s.G * s.J)[self.b_member]
             self.b_orientation = s.orientation[self.b_member]
 
-        self.X = np.vstack([s.coords, X_inner]) if nb else s.coords.copy()
-        self.n_points = self.X.shape[0]
-        self.n_rot = nslot
-        self.ndof = self.n_points * dim + nslot * rdof
-        self.joint_slot = joint_slot
+    def _element_dofs(self) -> np.ndarray:
+        """Global DOFs of every element (``t_dofs``, ``b_dofs``) and, in 3-D, how each slot is
+        parametrised (``slot_basis``, ``slot_additive``, ``slot_parent``) from the member ends'
+        releases.
+
+        Returns
+        -------
+        ndarray of int
+            3-D: the held rotation DOFs of member ends (components that are the joint's or
+            held, :mod:`~trussfe.mechanics.releases`); empty otherwise.
+        """
+        s = self.structure
+        dim, k = self.dim, self._k
+        b_mem, slots = self._b_mem, self._slots
+        nb = b_mem.size
+        nslot = self.n_rot
+        conn = s.connectivity
+        er, rigid_end, joint_slot = self.end_rotations, self.rigid_end, self.joint_slot
         tdofs = lambda pts: (pts[:, :, None] * dim + np.arange(dim)).reshape(len(pts), 2 * dim)
         self.t_dofs = tdofs(self.t_conn)
         rot0 = self.n_points * dim
@@ -240,8 +297,14 @@ class NonlinearModel:
             self.b_dofs = bd
         else:
             self.b_dofs = np.zeros((0, 6 if dim == 2 else 18), dtype=np.int64)
+        return held
 
-        # ---- supports, loads
+    def _supports(self, held: np.ndarray) -> None:
+        """Free DOFs (``free``): supports, held rotation components, joints no member
+        touches (fixed unless loaded, which is an error)."""
+        s = self.structure
+        dim, n = self.dim, s.n_nodes
+        er, joint_slot = self.end_rotations, self.joint_slot
         free = np.ones(self.ndof, dtype=bool)
         free[: n * dim] = ~s.supports[:, :dim].ravel()
         if dim == 2:
@@ -249,7 +312,7 @@ class NonlinearModel:
             free[self.n_points * dim + joint_slot[rz]] = False
         # joints that no member touches carry nothing: fixed, unless loaded
         touched = np.zeros(n, dtype=bool)
-        touched[conn.ravel()] = True
+        touched[s.connectivity.ravel()] = True
         loose = np.flatnonzero(~touched)
         if loose.size:
             if np.any(s.loads[loose, :dim] != 0):
@@ -265,6 +328,13 @@ class NonlinearModel:
             jn, comp = np.nonzero(rs)
             free[self.n_points * dim + 3 * joint_slot[jn] + comp] = False
             free[held] = False
+
+    def _loads(self) -> None:
+        """Reference load pattern ``load`` (``[loads]``): forces on the joints' translations,
+        moments on their rotation slots."""
+        s = self.structure
+        dim, n = self.dim, s.n_nodes
+        joint_has_rot, joint_slot = self.end_rotations.joint_rotation, self.joint_slot
         f = np.zeros(self.ndof)
         f[: n * dim] = s.loads[:, :dim].ravel()
         moments = s.loads[:, dim:]
@@ -284,11 +354,6 @@ class NonlinearModel:
             has = np.flatnonzero(moments[:, 0] != 0)
             f[self.n_points * dim + joint_slot[has]] = moments[has, 0]
         self.load = f
-        self.dead = self._dead_load()
-        self.alive = np.ones(m, dtype=bool)
-        self.plastic = np.zeros(len(t_mem))
-        #: (cause, truss element): events already reported (each is reported once)
-        self.silenced = np.zeros((3, len(t_mem)), dtype=bool)
 
     # ------------------------------------------------------------------ helpers
     def _dead_load(self) -> np.ndarray:

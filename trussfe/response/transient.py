@@ -66,7 +66,8 @@ import scipy.sparse.linalg as spla
 
 from ..budget import along_motion_bytes, require
 from ..errors import AnalysisError, InputError
-from ..fem.discretisation import BAR_MODELS, FEModel, discretise
+from ..fem.discretisation import FEModel, discretise
+from ..model.bar_models import BAR_MODELS
 from ..fem.solver import factorise
 from ..linalg import factor
 from ..fem.static import section_forces as fe_section_forces
