@@ -20,10 +20,10 @@ for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
 import numpy as np  # noqa: E402
 
 from trussfe.rigid.actuator import actuator_histories  # noqa: E402
-from trussfe.rigid.actuator_reproductions import slew1_structure  # noqa: E402
+from trussfe.studies.lacy_actuators import slew1_structure  # noqa: E402
 from trussfe.rigid.chain import chain_kinematics  # noqa: E402
 from trussfe.rigid.motion import third_order_response  # noqa: E402
-from trussfe.rigid.reproductions import EQUILIBRIUM_LENGTH, double_octahedron  # noqa: E402
+from trussfe.studies.lacy_rigid import EQUILIBRIUM_LENGTH, double_octahedron  # noqa: E402
 from trussfe.rigid.slew import rotation_motion  # noqa: E402
 
 

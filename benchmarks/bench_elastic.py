@@ -12,8 +12,8 @@ import time
 import numpy as np
 
 from trussfe.elastic.along_motion import compare_with_rigid, elastic_along_motion
-from trussfe.elastic.reproductions import slew2_motion
-from trussfe.rigid.actuator_reproductions import slew1_motion, slew1_structure
+from trussfe.studies.lacy_elastic import slew2_motion
+from trussfe.studies.lacy_actuators import slew1_motion, slew1_structure
 from trussfe.rigid.simulate import simulate
 
 
@@ -37,7 +37,7 @@ def main() -> None:
         for n in (55, 220, 880):
             m = make(n)
             t0 = time.perf_counter()
-            sim = simulate(s, m, full_length_inertia=False, actuators=False)
+            sim = simulate(s, m, actuators=False)
             t_rigid = time.perf_counter() - t0
             t0 = time.perf_counter()
             resp = elastic_along_motion(s, sim.kinematics, bodies=sim.bodies,

@@ -34,57 +34,15 @@ from trussfe.threads import compute_threads  # noqa: E402
 from trussfe.fem import discretise  # noqa: E402
 from trussfe.fem.modal import RESOLVED_RESIDUAL, mass_matrix, solve_modes  # noqa: E402
 from trussfe.linalg import free_submatrix  # noqa: E402
-from trussfe.model.sections import Material, Section  # noqa: E402
 from trussfe.model.structure import Structure  # noqa: E402
-
-ALUMINIUM = Material("aluminium", E=71.0e9, G=26.2e9, density=2711.5)
-TUBE = Section.tube("tube", 0.01905, 0.016)
+from trussfe.models import double_octahedral_chain  # noqa: E402
 
 
-def octahedral_chain(bays: int, side: float = 1.2192, longeron: float = 0.889,
-                     active: float = 1.1684) -> Structure:
-    """A chain of double-octahedral bays at the symmetric position (Lacy ch. 4–5 geometry).
-
-    Base triangle of side ``side``; each midplane node lies over the outer side of a base
-    edge, joined to its two ends by longerons of length ``longeron``; the midplane triangle
-    has side ``active``; the top plane mirrors the base in the midplane and is the next
-    bay's base.  Each bay adds 6 nodes and 18 members (statically determinate): 18 DOFs.
-    The base nodes are pinned.
-    """
-    R = side / np.sqrt(3.0)
-    rm = active / np.sqrt(3.0)
-    ang_b = np.deg2rad(90.0 + 120.0 * np.arange(3))
-    ang_m = ang_b + np.deg2rad(60.0)
-    pb = R * np.c_[np.cos(ang_b), np.sin(ang_b)]                 # (3, 2)
-    pm = rm * np.c_[np.cos(ang_m), np.sin(ang_m)]
-    h = np.sqrt(longeron**2 - np.sum((pm[0] - pb[0]) ** 2))
-    nl = 2 * bays + 1                                            # node layers
-    layer = np.arange(nl)
-    xy = np.where((layer % 2 == 0)[:, None, None], pb[None], pm[None])   # (layer, 3, 2)
-    z = np.broadcast_to((layer * h)[:, None, None], (nl, 3, 1))
-    coords = np.concatenate([xy, z], axis=2).reshape(-1, 3)
-    nid = lambda L, i: 3 * L + (i % 3)  # noqa: E731
-    b = np.arange(bays)
-    conn = []
-    for i in range(3):
-        lo, mid, hi = 2 * b, 2 * b + 1, 2 * b + 2
-        conn.append(np.c_[nid(mid, i), nid(mid, i + 1)])         # midplane (active) triangle
-        conn.append(np.c_[nid(hi, i), nid(hi, i + 1)])           # top triangle
-        # mid node i lies over base edge (i, i+1)
-        conn.append(np.c_[nid(lo, i), nid(mid, i)])
-        conn.append(np.c_[nid(lo, i + 1), nid(mid, i)])
-        conn.append(np.c_[nid(mid, i), nid(hi, i)])
-        conn.append(np.c_[nid(mid, i), nid(hi, i + 1)])
-    conn = np.vstack(conn)
-    n, m = coords.shape[0], conn.shape[0]
-    sup = np.zeros((n, 6), dtype=bool)
-    sup[:3, :3] = True
-    return Structure(
-        name=f"double-octahedral chain, {bays} bays", dim=3,
-        node_ids=[str(k) for k in range(n)], coords=coords,
-        member_ids=[str(k) for k in range(m)], connectivity=conn, sections=[TUBE] * m,
-        materials=[ALUMINIUM] * m, is_beam=np.zeros(m, bool), releases=np.zeros((m, 2), bool),
-        supports=sup, loads=np.zeros((n, 6)), masses=np.zeros(n), gravity=np.zeros(3))
+def octahedral_chain(bays: int) -> Structure:
+    """A chain of double-octahedral bays at the symmetric position (Lacy ch. 4–6), unloaded:
+    the catalogue's :func:`trussfe.models.double_octahedral_chain`.  Each bay adds 6 nodes and
+    18 members (statically determinate): 18 DOFs.  The base nodes are pinned."""
+    return double_octahedral_chain(bays, tip_load=0.0)
 
 
 def space_grid(n: int) -> Structure:

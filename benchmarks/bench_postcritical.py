@@ -22,7 +22,7 @@ import numpy as np
 from trussfe._resources import mesh_path
 from trussfe.io.model_file import read_model
 from trussfe.nonlinear import NonlinearModel, follow_path
-from trussfe.nonlinear.reproductions import double_layer_grid
+from trussfe.studies.postcritical import double_layer_grid
 from trussfe.linalg import factor
 
 

@@ -3,7 +3,7 @@
 
 Targets: the double-octahedral slew with 10,000 time steps (kinematics, nodal forces,
 section forces, stresses, buckling, actuator force and, when available, motor histories)
-in < 1 s; a 100-bay chain (1,803 members) over 1,000 steps in < 10 s.  For comparison, the
+in < 1 s; a 100-bay chain (1,800 members) over 1,000 steps in < 10 s.  For comparison, the
 time of a plain per-step dense solve of a 117 × 117 system (the size of Lacy's double-
 octahedron system, eq. 4.20 / Table 4.1), in a Python loop over the steps.
 
@@ -24,7 +24,7 @@ for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
 import numpy as np  # noqa: E402
 
 from trussfe.rigid.motion import third_order_motion  # noqa: E402
-from trussfe.rigid.reproductions import double_octahedral_chain, double_octahedron  # noqa: E402
+from trussfe.studies.lacy_rigid import double_octahedral_chain, double_octahedron  # noqa: E402
 from trussfe.rigid.simulate import simulate  # noqa: E402
 from trussfe.threads import worker_count  # noqa: E402
 
@@ -46,9 +46,9 @@ def _best(fn, repeat):
 
 def dense_117_per_step(structure, result, nt_total: int) -> float:
     """Seconds for a per-step dense solve of Lacy's 117 × 117 system (assembled by
-    :func:`trussfe.rigid.lacy.newton_euler_system`, solved step by step in a Python loop),
+    :func:`trussfe.studies.lacy_newton_euler.newton_euler_system`, solved step by step in a Python loop),
     measured on up to 2,000 steps and scaled to ``nt_total``."""
-    from trussfe.rigid.lacy import newton_euler_system
+    from trussfe.studies.lacy_newton_euler import newton_euler_system
     A, b, _ = newton_euler_system(structure, result.kinematics)
     k = min(A.shape[0], 2000)
     t0 = time.perf_counter()

@@ -11,7 +11,7 @@ from __future__ import annotations
 import argparse
 import time
 
-from trussfe.elastic.transient_studies import triangle_slew
+from trussfe.studies.transient_slews import triangle_slew
 
 
 

@@ -18,36 +18,14 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from trussfe.fem import discretise  # noqa: E402
-from trussfe.model.sections import Material, Section  # noqa: E402
 from trussfe.model.structure import Structure  # noqa: E402
-
-ALUMINIUM = Material("aluminium", E=71.0e9, G=26.2e9, density=2711.5)
-TUBE = Section.tube("tube", 0.01905, 0.62 * 0.0254)
-# Appendix D equilibrium bay: base triangle, midplane triangle, member "Connect" order
-BASE = np.array([[-0.6096, -0.3519], [0.6096, -0.3519], [0.0, 0.7039]])
-MID = np.array([[-0.5842, 0.3373], [0.5842, 0.3373], [0.0, -0.6746]])
-CONNECT = np.array([(2, 6), (1, 6), (1, 4), (3, 4), (3, 5), (2, 5), (4, 5), (5, 6), (4, 6),
-                    (6, 9), (6, 7), (4, 7), (4, 8), (5, 8), (5, 9), (7, 9), (8, 7), (8, 9)]) - 1
+from trussfe.models import TABLE_LOAD, double_octahedral_chain  # noqa: E402
 
 
 def chain(n: int) -> Structure:
-    """n stacked double-octahedral bays, base fixed, 44.498 N on the top nodes."""
-    h = 0.5609
-    xy = np.vstack([MID if j % 2 else BASE for j in range(2 * n + 1)])
-    coords = np.column_stack([xy, np.repeat(np.arange(2 * n + 1) * h, 3)])
-    local = np.array([0, 1, 2, 3, 4, 5, 6, 8, 7])     # Appendix D node → offset in 3 layers
-    conn = (6 * np.arange(n)[:, None, None] + local[CONNECT][None]).reshape(-1, 2)
-    nn, m = len(coords), len(conn)
-    sup = np.zeros((nn, 6), bool)
-    sup[:3, :3] = True
-    loads = np.zeros((nn, 6))
-    loads[-3:, 2] = 44.498
-    return Structure(name=f"chain {n}", dim=3, node_ids=[str(i) for i in range(nn)],
-                     coords=coords, member_ids=[str(i) for i in range(m)], connectivity=conn,
-                     sections=[TUBE] * m, materials=[ALUMINIUM] * m,
-                     is_beam=np.zeros(m, bool), releases=np.zeros((m, 2), bool),
-                     supports=sup, loads=loads, masses=np.zeros(nn),
-                     gravity=np.array([0.0, 0.0, -9.81]))
+    """n stacked double-octahedral bays (the catalogue chain), base fixed, 44.498 N on the top
+    nodes, gravity."""
+    return double_octahedral_chain(n, tip_load=TABLE_LOAD, gravity=[0.0, 0.0, -9.81])
 
 
 def _time(fn):

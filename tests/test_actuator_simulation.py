@@ -9,7 +9,7 @@ from numpy.testing import assert_allclose
 import trussfe.rigid.actuator  # noqa: F401  (registers [actuators])
 from trussfe.errors import InputError
 from trussfe.io.model_file import read_model
-from trussfe.rigid.actuator_reproductions import (base_simulation_gains, holding_voltage, slew1,
+from trussfe.studies.lacy_actuators import (base_simulation_gains, holding_voltage, slew1,
                                                   slew1_motion)
 from trussfe.rigid.motion_csv import read_motion_csv
 
@@ -159,7 +159,7 @@ def test_base_simulation_motor():
     """Lacy section 3.7 / fig. 3.8: the torque nearly vanishes about 0.5 s, where the actuator
     force changes sign (ours 0.60 s and 0.61 s; the figure is read to ±0.15 s), and ends near
     the torque that holds the final static load (1 %: the motion has almost settled)."""
-    from trussfe.rigid.actuator_reproductions import base_simulation_motor
+    from trussfe.studies.lacy_actuators import base_simulation_motor
     d = base_simulation_motor()
     assert_allclose(d["gearhead_gain"], 0.9618, rtol=5e-5)
     assert abs(d["min_torque_time"] - 0.5) <= 0.15
@@ -174,7 +174,7 @@ def test_actuator_force_of_the_3_5_10_second_maneuvers():
     member accelerates outward, tension while it decelerates).  Analytic scaling: at the same
     50 homologous samples the positions are identical, velocities scale as 1/T and
     accelerations as 1/T², so the motion-induced force scales exactly as 1/T² (rtol 1e-9)."""
-    from trussfe.rigid.actuator_reproductions import actuator_force_variants
+    from trussfe.studies.lacy_actuators import actuator_force_variants
     v = actuator_force_variants()
     d3 = v[3.0]["dynamic"]
     for T in (5.0, 10.0):

@@ -8,7 +8,7 @@ from numpy.testing import assert_allclose
 
 from trussfe.errors import AnalysisError, InputError
 from trussfe.kinematics import solve_positions
-from trussfe.rigid.reproductions import EQUILIBRIUM_LENGTH, double_octahedron, triangular_truss
+from trussfe.studies.lacy_rigid import EQUILIBRIUM_LENGTH, double_octahedron, triangular_truss
 from trussfe.rigid.motion import third_order_response
 from trussfe.rigid.slew import plane_normal, rotation_matrix, rotation_motion
 
@@ -116,7 +116,7 @@ def test_shipped_rotation_motion_file():
 
     import trussfe.rigid.actuator  # noqa: F401
     from trussfe.io.model_file import read_model
-    from trussfe.rigid.motion import load_motion
+    from trussfe.rigid.motion_file import load_motion
     meshes = Path(__file__).resolve().parents[1] / "meshes"
     s = read_model(meshes / "double_octahedron_actuators.toml")
     m = load_motion(meshes / "double_octahedron_slew1_rotation.toml", s)

@@ -266,8 +266,9 @@ def test_bad_option_values_raise_input_errors():
         trussfe.postcritical(MESHES / "postcritical_von_mises.toml", step=-1.0)
 
 
-def test_validation_case_with_an_unknown_option_is_an_error(tmp_path):
-    """A case's misspelt option is reported (with a suggestion), not dropped."""
+def test_validation_case_with_an_unknown_option_is_an_error(tmp_path, capsys):
+    """A case's misspelt option is a malformed case (with a suggestion, exit status 2), not
+    dropped; the engine refuses it too if a case is built in Python."""
     from trussfe.validate import load_case, run_case
     case = tmp_path / "c.toml"
     case.write_text(f'[case]\nid = "c"\nanalysis = "modes"\n'
@@ -275,9 +276,18 @@ def test_validation_case_with_an_unknown_option_is_an_error(tmp_path):
                     'options = { mas = "lumped" }\n'
                     '[[quantities]]\nname = "f"\npath = "frequencies_hz[0]"\n'
                     'reference = 1.0\nsource = "none"\nrtol = 1.0\n')
-    r = run_case(load_case(case))
-    assert r.status == "error"
-    assert r.error == "case.options: 'modes' has no option 'mas'; did you mean 'mass'?"
+    message = "case.options: 'modes' has no option 'mas'; did you mean 'mass'?"
+    with pytest.raises(InputError) as err:
+        load_case(case)
+    assert str(err.value) == f"{case}: {message}"
+    assert main(["validate", "--cases", str(tmp_path), "--out", str(tmp_path / "r"),
+                 "--no-progress"]) == 2
+    assert capsys.readouterr().err == f"trussfe: error: {case}: {message}\n"
+    case.write_text(case.read_text().replace("mas =", "mass ="))
+    parsed = load_case(case)
+    parsed.options = {"mas": "lumped"}
+    r = run_case(parsed)
+    assert r.status == "error" and r.error == message
 
 
 #: Command-line options that only choose outputs (no API counterpart).
@@ -325,6 +335,9 @@ def test_import_trussfe_gives_every_analysis():
                  "actuators", "elastic", "transient", "mechanism", "trace", "postcritical",
                  "validate"):
         assert name in trussfe.__all__ and callable(getattr(trussfe, name))
+    for name in ("elastic", "validate"):          # callable packages show the signature
+        assert inspect.signature(getattr(trussfe, name)) == \
+            inspect.signature(getattr(api, name))
     import trussfe.elastic.transient as tr        # the subpackages stay importable
     import trussfe.validate.engine as en
     assert callable(tr.transient_response) and callable(en.run_case)

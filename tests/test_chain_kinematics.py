@@ -10,7 +10,7 @@ from trussfe.kinematics import compatibility_matrix, solve_positions
 from trussfe.rigid.chain import (bay_kinematics, chain_kinematics, rigid_rates, stack_bays,
                                  thesis_angular_acceleration, triangle_frame)
 from trussfe.rigid.motion import third_order_response
-from trussfe.rigid.reproductions import EQUILIBRIUM_LENGTH, double_octahedron
+from trussfe.studies.lacy_rigid import EQUILIBRIUM_LENGTH, double_octahedron
 
 NB = 3
 

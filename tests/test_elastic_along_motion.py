@@ -6,10 +6,10 @@ import numpy as np
 import pytest
 
 from trussfe.elastic.along_motion import compare_with_rigid, simulate_elastic
-from trussfe.elastic.reproductions import base_simulation, slew
+from trussfe.studies.lacy_elastic import base_simulation, slew
 from trussfe.errors import AnalysisError, InputError, MechanismError, TrussfeError
 from trussfe.rigid.motion import third_order_motion
-from trussfe.rigid.reproductions import L2, L3MIN, double_octahedron, triangular_truss
+from trussfe.studies.lacy_rigid import L2, L3MIN, double_octahedron, triangular_truss
 
 #: The required agreement; the agreement found is ~1e-11 (round-off of the solves).
 RTOL = 1e-6

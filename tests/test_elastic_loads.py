@@ -12,9 +12,9 @@ from trussfe.model.sections import Material, Section
 from trussfe.model.structure import build_structure
 from trussfe.rigid.forces import member_bodies, nodal_forces
 from trussfe.rigid.kinematics import Kinematics
-from trussfe.rigid.reproductions import triangular_truss
+from trussfe.studies.lacy_rigid import triangular_truss
 from trussfe.rigid.motion import third_order_motion
-from trussfe.rigid.reproductions import L2, L3MIN
+from trussfe.studies.lacy_rigid import L2, L3MIN
 from trussfe.rigid.sections import section_forces
 from trussfe.rigid.simulate import simulate
 
@@ -90,7 +90,7 @@ def test_resultants_equal_rigid_member_equations():
     rigid model (Lacy eq. 4.20), along the Base Simulation: same mass model.  1e-12."""
     s = triangular_truss()
     m = third_order_motion(s, [L3MIN + L2], [L3MIN + 1.2 + L2], 3.0, 20)
-    sim = simulate(s, m, full_length_inertia=False, actuators=False)
+    sim = simulate(s, m, actuators=False)
     kin = sim.kinematics
     ml = motion_loads(s, kin, sim.bodies)
     Lm = kin.length[..., None]
@@ -106,7 +106,7 @@ def test_resultants_equal_rigid_member_equations():
 def test_consistent_loads_match_skfem_self_weight():
     """The hand-integrated consistent loads equal scikit-fem's assembled self-weight vector
     (trussfe.fem.forms.distributed_load) on a 3-D structure at rest: 1e-12."""
-    from trussfe.rigid.reproductions import double_octahedron
+    from trussfe.studies.lacy_rigid import double_octahedron
     from trussfe.rigid.kinematics import compute_kinematics
     from trussfe.rigid.motion import rest_motion
     s = double_octahedron(gravity=9.81)
@@ -128,7 +128,7 @@ def test_section_forces_do_not_depend_on_subdivisions(k):
     per member gives the rigid model's section forces (Base Simulation, 10 steps), 1e-9."""
     s = triangular_truss()
     m = third_order_motion(s, [L3MIN + L2], [L3MIN + 1.2 + L2], 3.0, 10)
-    sim = simulate(s, m, full_length_inertia=False, actuators=False)
+    sim = simulate(s, m, actuators=False)
     r = elastic_along_motion(s, sim.kinematics, subdivisions=k,
                              positions=sim.sections.position)
     scale = np.abs(sim.sections.tension).max()

@@ -14,7 +14,7 @@ from trussfe.kinematics.rank import rank_analysis
 from trussfe.linalg import matrix_rank, stiffness_null_space
 from trussfe.linalg.pardiso import available as pardiso_available
 from trussfe.nonlinear.mechanism import mechanism_count
-from trussfe.nonlinear.reproductions import double_layer_grid
+from trussfe.studies.postcritical import double_layer_grid
 
 
 def test_sparse_rank_equals_dense_svd_rank():

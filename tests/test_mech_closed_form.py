@@ -3,8 +3,8 @@ velocities, accelerations), from the compatibility matrix and from the cycle equ
 import numpy as np
 import pytest
 
-from trussfe.kinematics.reproductions import (fourbar_closed_form, fourbar_position,
-                                              fourbar_rates, slider_crank_closed_form)
+from trussfe.studies.vlase import (fourbar_closed_form, fourbar_position,
+                                  fourbar_rates, slider_crank_closed_form)
 
 
 def test_fourbar_rates_closed_form_vs_finite_difference():

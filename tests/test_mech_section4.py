@@ -6,7 +6,7 @@ Reference numbers are the paper's printed values (matrices to 6 digits, iterates
 import numpy as np
 import pytest
 
-from trussfe.kinematics.reproductions import hortobagyi_section4
+from trussfe.studies.hortobagyi import hortobagyi_section4
 
 
 @pytest.fixture(scope="module")

@@ -7,7 +7,7 @@ from trussfe.errors import AnalysisError
 from trussfe.kinematics import trace_mechanism
 from trussfe.kinematics.compatibility import compatibility_matrix
 from trussfe.kinematics.mechanism import compatibility_error
-from trussfe.kinematics.reproductions import hortobagyi_section6, section6_unfolding_traces
+from trussfe.studies.hortobagyi import hortobagyi_section6, section6_unfolding_traces
 from trussfe.kinematics.unfolding import (project_to_cone, second_order_prediction,
                                           tangent_cone)
 from trussfe.models.mechanisms import section6_foldable
@@ -114,7 +114,7 @@ def test_direction_count_sweep_never_gives_two():
     have 0 or 8 real unfolding directions (a flat four-bar with two branches carrying two
     dyads that open both ways or not at all), never the 2 the text's "two shapes and their
     symmetric pairs" needs.  Small deterministic sample of the documented sweep."""
-    from trussfe.kinematics.reproductions import section6_direction_counts
+    from trussfe.studies.hortobagyi import section6_direction_counts
     hist = section6_direction_counts(samples=4, seed=0)
     assert sum(hist.values()) >= 12
     assert set(hist) <= {0, 8} and 8 in hist

@@ -7,7 +7,7 @@ from numpy.testing import assert_allclose
 from trussfe.errors import InputError
 from trussfe.rigid.motion import third_order_response
 from trussfe.rigid.motion_csv import read_motion_csv
-from trussfe.rigid.reproductions import triangular_truss
+from trussfe.studies.lacy_rigid import triangular_truss
 
 
 @pytest.fixture(scope="module")

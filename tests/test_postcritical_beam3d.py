@@ -215,7 +215,7 @@ def test_cantilever_rolls_into_a_circle_under_end_moment():
 # ------------------------------------------------------------------------ Euler column
 @pytest.fixture(scope="module")
 def column3d():
-    from trussfe.nonlinear import reproductions as R
+    from trussfe.studies import postcritical as R
     return R.euler_column_3d()
 
 
@@ -237,7 +237,7 @@ def test_3d_euler_column_imperfect_path_matches_the_plane_column(column3d):
     δ = 0.2 L and 0.3 L, like the plane column; and the same path as the 2-D co-rotational
     beam (an independent, plane element: trussfe.nonlinear.elements.beam2d_matrices) to 2e-4
     — the difference being the guide links and the path points' interpolation."""
-    from trussfe.nonlinear import reproductions as R
+    from trussfe.studies import postcritical as R
     plane = R.euler_column()
     for k, e0_over_d in ((2, 5e-3), (3, 3.4e-3)):
         key = f"imperfect_load_ratio_at_{k}"

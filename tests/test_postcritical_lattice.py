@@ -7,7 +7,7 @@ import scipy.linalg as sla
 from trussfe.kinematics.compatibility import compatibility_matrix
 from trussfe.nonlinear import NonlinearModel, follow_path
 from trussfe.nonlinear.mechanism import mechanism_count
-from trussfe.nonlinear.reproductions import double_layer_grid
+from trussfe.studies.postcritical import double_layer_grid
 
 
 def test_grid_member_count():

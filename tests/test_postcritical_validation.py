@@ -1,10 +1,10 @@
 """Validation of the post-critical analysis against closed-form and independent solutions
-(trussfe.nonlinear.reproductions; the same numbers appear in ``trussfe validate``)."""
+(trussfe.studies.postcritical; the same numbers appear in ``trussfe validate``)."""
 import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from trussfe.nonlinear import reproductions as R
+from trussfe.studies import postcritical as R
 
 
 @pytest.fixture(scope="module")
@@ -162,4 +162,6 @@ c = [0.0, -100000.0]
     assert small.sum() >= 5
     slope = np.polyfit(d[small], d[small] / lam[small], 1)[0]
     assert_allclose(1.0 / slope, lam_cr, rtol=1e-2)
-    assert lam.max() < lam_cr                       # an imperfect elastic frame stays below
+    # an imperfect elastic frame stays below λ_cr at moderate sway (δ < h/40); at large sway
+    # its stable post-buckling path rises above it (here from δ ≈ 0.3 m)
+    assert lam[d < 0.1].max() < lam_cr

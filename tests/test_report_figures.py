@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from trussfe.fem.modal import solve_modes
-from trussfe.fem.reproductions import double_octahedron
+from trussfe.studies.modal_buckling import double_octahedron
 from trussfe.report_figures import plot_backend, render_modes, render_shape
 
 plt = pytest.importorskip("matplotlib.pyplot")

@@ -8,7 +8,7 @@ from numpy.testing import assert_allclose
 from trussfe.rigid.kinematics import _Pattern
 from trussfe.rigid.linalg import CompatSolver, SingularStep, block_triangular_form, cross, norm
 from trussfe.rigid.motion import third_order_motion
-from trussfe.rigid.reproductions import double_octahedral_chain, double_octahedron
+from trussfe.studies.lacy_rigid import double_octahedral_chain, double_octahedron
 from trussfe.rigid.simulate import simulate
 
 

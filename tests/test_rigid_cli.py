@@ -10,8 +10,9 @@ from trussfe._resources import mesh_path
 from trussfe.cli import main
 from trussfe.errors import AnalysisError, InputError
 from trussfe.io.model_file import read_model
-from trussfe.rigid.motion import Motion, load_motion
-from trussfe.rigid.reproductions import triangular_truss
+from trussfe.rigid.motion import Motion
+from trussfe.rigid.motion_file import load_motion
+from trussfe.studies.lacy_rigid import triangular_truss
 from trussfe.rigid.simulate import simulate
 from trussfe import api
 
@@ -148,7 +149,7 @@ def test_cli_bad_input_one_line_exit_2(tmp_path, capsys):
 def test_statically_indeterminate_truss_needs_fe():
     """A third bar from O1 to B over-constrains B: rigid-body forces are not determined."""
     from trussfe import build_structure
-    from trussfe.rigid.reproductions import ALUMINIUM, TUBE
+    from trussfe.studies.lacy_rigid import ALUMINIUM, TUBE
     s = build_structure([[0, 0], [2, 0], [1, 1], [1, 0]], [[0, 2], [1, 2], [3, 2]],
                         section=TUBE, material=ALUMINIUM, supports={0: "xy", 1: "xy", 3: "xy"})
     with pytest.raises(AnalysisError, match="statically indeterminate.*finite-element"):
@@ -220,7 +221,7 @@ def test_batched_positions_dense_and_sparse_agree(monkeypatch):
     solver paths: positions to 1e-11 m, forces to 1e-10 relative."""
     import trussfe.rigid.linalg as la
     from trussfe.rigid.motion import third_order_motion
-    from trussfe.rigid.reproductions import double_octahedron
+    from trussfe.studies.lacy_rigid import double_octahedron
     s = double_octahedron((1.2289, 1.1079, 1.1079), gravity=-9.81, top_load=46.0)
     m = third_order_motion(s, [1.2289, 1.1079, 1.1079], [1.1079, 1.2289, 1.2289], 2.0, 500)
     a = simulate(s, m)

@@ -7,7 +7,7 @@ import pytest
 from numpy.testing import assert_allclose
 
 from trussfe.fem.static import solve_static
-from trussfe.rigid.reproductions import double_octahedron, triangular_truss
+from trussfe.studies.lacy_rigid import double_octahedron, triangular_truss
 from trussfe.rigid.sections import section_forces
 from trussfe.rigid.simulate import simulate
 

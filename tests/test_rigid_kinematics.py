@@ -5,7 +5,7 @@ from numpy.testing import assert_allclose
 
 from trussfe.rigid.kinematics import compute_kinematics
 from trussfe.rigid.motion import third_order_motion, third_order_response
-from trussfe.rigid.reproductions import double_octahedron, triangular_truss
+from trussfe.studies.lacy_rigid import double_octahedron, triangular_truss
 
 
 def test_third_order_response_analytic_properties():

@@ -3,9 +3,10 @@
 import numpy as np
 from numpy.testing import assert_allclose
 
-from trussfe.rigid.lacy import lacy_triangle
+from trussfe.mechanics.conventions import THESIS
+from trussfe.studies.lacy_newton_euler import lacy_triangle
 from trussfe.rigid.motion import third_order_motion
-from trussfe.rigid.reproductions import L2, L3MIN, triangular_truss
+from trussfe.studies.lacy_rigid import L2, L3MIN, triangular_truss
 from trussfe.rigid.simulate import simulate
 
 
@@ -14,7 +15,7 @@ def test_general_model_equals_lacy_eq_2_13():
     the cantilever force agree to round-off (rtol 1e-9 of the largest force)."""
     s = triangular_truss(mass=10.0)
     m = third_order_motion(s, [L3MIN + L2], [L3MIN + 1.2 + L2], 3.0, 50)
-    r = simulate(s, m, scheme="thesis", full_length_inertia=True)
+    r = simulate(s, m, conventions=THESIS)
     x = m.length[:, 0] - L3MIN - L2
     lit = lacy_triangle(x, m.velocity[:, 0], m.acceleration[:, 0], 0.06, 10.0).forces
     fx1, fx2, fx3, fy1, fy2, fy3, rx1, rx2, ry1, ry2, m1 = lit.T
@@ -40,8 +41,8 @@ def test_reduced_model_equals_unreduced_117_system():
     """Double octahedron along a slew under gravity and top loads: the 117 × 117 unreduced
     Newton–Euler system (Lacy eq. 4.20 layout) and the reduced sparse model give the same
     end forces and reactions (rtol 1e-9 of the largest force)."""
-    from trussfe.rigid.lacy import newton_euler_system
-    from trussfe.rigid.reproductions import double_octahedron
+    from trussfe.studies.lacy_newton_euler import newton_euler_system
+    from trussfe.studies.lacy_rigid import double_octahedron
     s = double_octahedron((1.2289, 1.1079, 1.1079), gravity=-9.81, top_load=46.0)
     m = third_order_motion(s, [1.2289, 1.1079, 1.1079], [1.1079, 1.2289, 1.2289], 2.0, 40)
     r = simulate(s, m)

@@ -6,7 +6,7 @@ from numpy.testing import assert_allclose
 
 from trussfe.kinematics import equilibrium_matrix
 from trussfe.rigid.motion import third_order_motion
-from trussfe.rigid.reproductions import double_octahedron, double_octahedron_static
+from trussfe.studies.lacy_rigid import double_octahedron, double_octahedron_static
 from trussfe.rigid.simulate import simulate
 
 # (N1 reaction x, y, z; M6 axial; M19 axial; M6 von Mises; M19 von Mises), Lacy Tables 5.2–5.4
@@ -81,7 +81,7 @@ def test_chain_model_file_and_momentum_balance():
     from trussfe._resources import mesh_path
     from trussfe.io.model_file import read_model
     from trussfe.rigid.forces import element_accelerations
-    from trussfe.rigid.motion import load_motion
+    from trussfe.rigid.motion_file import load_motion
     s = read_model(mesh_path("chain3_motion_active.toml"))
     assert s.n_members == 18 * 3 + 3
     m = load_motion(mesh_path("chain3_motion_slew.toml"), s, steps=100)

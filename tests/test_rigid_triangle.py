@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from trussfe.rigid.reproductions import base_simulation, static_reactions, triangular_truss
+from trussfe.studies.lacy_rigid import base_simulation, static_reactions, triangular_truss
 from trussfe.rigid.simulate import simulate
 
 

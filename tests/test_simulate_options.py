@@ -12,7 +12,7 @@ import trussfe.rigid.actuator  # noqa: F401  (registers [actuators])
 from trussfe.cli import main
 from trussfe.errors import InputError
 from trussfe.io.model_file import read_model
-from trussfe.rigid.motion import load_motion
+from trussfe.rigid.motion_file import load_motion
 from trussfe import api
 
 

@@ -11,7 +11,7 @@ from trussfe import threads
 from trussfe.cli import environment_workers
 from trussfe.rigid import linalg
 from trussfe.rigid.motion import third_order_motion
-from trussfe.rigid.reproductions import double_octahedral_chain
+from trussfe.studies.lacy_rigid import double_octahedral_chain
 from trussfe.rigid.simulate import simulate
 
 

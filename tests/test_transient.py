@@ -16,7 +16,7 @@ from numpy.testing import assert_allclose
 from trussfe.elastic import transient as tr
 from trussfe.elastic.transient import motion_on_grid, rayleigh, transient_response
 from trussfe.elastic.transient_fe import assemble_block, massless_active, rigid_field
-from trussfe.elastic.transient_studies import (
+from trussfe.studies.transient_slews import (
     cycloidal_motion,
     sdof_bar,
     sdof_check,
@@ -28,7 +28,7 @@ from trussfe.fem.discretisation import discretise
 from trussfe.fem.modal import mass_matrix
 from trussfe.rigid.forces import member_bodies
 from trussfe.rigid.motion import Motion, third_order_motion
-from trussfe.rigid.reproductions import L2, L3MIN, triangular_truss
+from trussfe.studies.lacy_rigid import L2, L3MIN, triangular_truss
 from trussfe.rigid.simulate import simulate
 
 
@@ -332,7 +332,7 @@ def test_double_octahedron_quasi_static_equals_rigid_body():
     """3-D (both bending planes, sparse path): the quasi-static FE axial forces and midpoint
     moments of the slewing double-octahedral bay equal the rigid-body ones (Lacy eqs. 4.20,
     section forces), and the frozen energy identity holds."""
-    from trussfe.elastic.transient_studies import double_octahedron_slew
+    from trussfe.studies.transient_slews import double_octahedron_slew
 
     r = double_octahedron_slew(0.5, 0.025)
     assert r.fe.free.size > tr.DENSE_LIMIT                 # exercises the sparse path

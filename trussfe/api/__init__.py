@@ -12,21 +12,48 @@ command line and the validation suite call these functions.  docs/python.md is t
 """
 from __future__ import annotations
 
-from .along_motion import elastic, transient
-from .kinematic import mechanism, trace
-from .linear import buckling, modes, static
-from .nonlinear_path import postcritical
+import inspect
+from types import MappingProxyType
+
+from .along_motion import ElasticResult, TransientResult, elastic, transient
+from .kinematic import MechanismResult, TraceResult, mechanism, trace
+from .linear import BucklingResult, ModesResult, StaticResult, buckling, modes, static
 from .model import ModelLike, as_structure, model_from_dict, read_model
+from .nonlinear_path import PostcriticalResult, postcritical
 from .results import Result
+from .rigid_body import ActuatorsResult, SimulateResult, actuators, simulate
 from .validation import ValidationResult, validate
-from .rigid_body import actuators, simulate
 
 #: The analyses that take a model, by command name (the validation suite's ``analysis``).
-ANALYSES = {"static": static, "modes": modes, "buckling": buckling, "simulate": simulate,
-            "actuators": actuators, "elastic": elastic, "transient": transient,
-            "mechanism": mechanism, "trace": trace, "postcritical": postcritical}
+ANALYSES = MappingProxyType({
+    "static": static, "modes": modes, "buckling": buckling, "simulate": simulate,
+    "actuators": actuators, "elastic": elastic, "transient": transient,
+    "mechanism": mechanism, "trace": trace, "postcritical": postcritical})
 
-__all__ = ["ANALYSES", "ModelLike", "Result", "actuators", "as_structure", "buckling",
-           "model_from_dict", "modes", "read_model", "simulate", "static",
-           "elastic", "transient", "mechanism", "trace",
-           "postcritical", "ValidationResult", "validate"]
+
+
+def option_names(analysis: str) -> tuple[str, ...]:
+    """The keyword options of one of :data:`ANALYSES`, in signature order."""
+    return tuple(p.name for p in inspect.signature(ANALYSES[analysis]).parameters.values()
+                 if p.kind is inspect.Parameter.KEYWORD_ONLY)
+
+
+def check_options(analysis: str, options) -> None:
+    """Raise :class:`~trussfe.errors.InputError` (item ``case.options``) for an option that
+    ``analysis`` does not take, suggesting the closest one."""
+    from ..errors import InputError
+    from ..io.model_file import _suggest
+
+    known = option_names(analysis)
+    for key in options:
+        if key not in known:
+            raise InputError("case.options", f"'{analysis}' has no option '{key}'"
+                                             f"{_suggest(key, known)}")
+
+
+__all__ = ["ANALYSES", "ActuatorsResult", "BucklingResult", "ElasticResult",
+           "MechanismResult", "ModelLike", "ModesResult", "PostcriticalResult", "Result",
+           "SimulateResult", "StaticResult", "TraceResult", "TransientResult",
+           "ValidationResult", "actuators", "as_structure", "buckling", "check_options", "elastic",
+           "mechanism", "model_from_dict", "modes", "option_names", "postcritical", "read_model", "simulate",
+           "static", "trace", "transient", "validate"]

@@ -4,12 +4,14 @@
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 
 from ..errors import InputError
 from .model import ModelLike, as_structure
-from .results import MechanismResult, TraceResult
+from .results import Result
 
 
 def mechanism(model: ModelLike, *, tolerance: float | None = None) -> MechanismResult:
@@ -80,3 +82,148 @@ def trace(model: ModelLike, *, drive: str | Sequence[str], step: float | Sequenc
                         branch=branch, tolerance=tolerance, newton=not frozen)
     return TraceResult(structure, r, options={"drive": drives, "step": steps_,
                                               "steps": steps, "branch": branch})
+
+
+def _free_to_nodes(free: np.ndarray, columns: np.ndarray) -> np.ndarray:
+    """Columns over the free coordinates, shape (f, k), as node vectors (k, node, dim)."""
+    n, dim = free.shape
+    out = np.zeros((columns.shape[1], n * dim))
+    out[:, np.flatnonzero(free.ravel())] = columns.T
+    return out.reshape(-1, n, dim)
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class MechanismResult(Result):
+    """Rank analysis of the bar assembly (:func:`trussfe.mechanism`); ``solution`` is a
+    :class:`trussfe.kinematics.rank.RankResult`.  Beams are analysed as pin-jointed bars."""
+
+    command: ClassVar[str] = "mechanism"
+
+    @property
+    def rank(self) -> int:
+        """ρ(B), the rank of the compatibility matrix."""
+        return int(self.solution.rank)
+
+    @property
+    def mechanisms(self) -> int:
+        """Number of internal infinitesimal mechanisms."""
+        return int(self.solution.mechanisms)
+
+    @property
+    def rigid_body_motions(self) -> int:
+        """Rigid-body motions the supports leave free."""
+        return int(self.solution.rigid_body_motions)
+
+    @property
+    def self_stress_states(self) -> int:
+        """Number of independent states of self-stress."""
+        return int(self.solution.self_stress_states)
+
+    @property
+    def mechanism_shapes(self) -> np.ndarray:
+        """Orthonormal mechanism shapes, shape (mechanism, node, dim)."""
+        return _free_to_nodes(self.solution.free, self.solution.mechanism_basis)
+
+    @property
+    def rigid_body_shapes(self) -> np.ndarray:
+        """Rigid-body motions left free, shape (motion, node, dim)."""
+        return _free_to_nodes(self.solution.free, self.solution.rigid_body_basis)
+
+    @property
+    def self_stress(self) -> np.ndarray | None:
+        """Bar tensions of each state of self-stress, shape (state, member), unit norm
+        (``None`` when the sparse rank path did not form them)."""
+        b = self.solution.self_stress_basis
+        return None if b is None else b.T
+
+    def _document(self) -> dict:
+        s = self.structure
+        r = self.solution
+
+        def shapes(vectors: np.ndarray) -> list:
+            out = []
+            for d in vectors:
+                moving = np.flatnonzero(np.linalg.norm(d, axis=1) > 1e-12)
+                out.append({s.node_ids[i]: d[i].tolist() for i in moving})
+            return out
+
+        doc = {
+            "units": "SI", "command": "mechanism", "model": s.name,
+            "rank": r.rank, "mechanisms": r.mechanisms,
+            "rigid_body_motions": r.rigid_body_motions,
+            "self_stress_states": r.self_stress_states,
+            "coordinates": r.n_coordinates, "bars": r.n_bars,
+            "infinitesimal_motions": r.infinitesimal_motions,
+            "statically_determinate": r.statically_determinate,
+            "kinematically_determinate": r.kinematically_determinate,
+            "classification": r.classification,
+            "tolerance": r.tolerance,
+            "smallest_kept_singular_value": r.smallest_kept,
+            "largest_dropped_singular_value": r.largest_dropped,
+            "mechanism_modes": shapes(self.mechanism_shapes),
+            "rigid_body_modes": shapes(self.rigid_body_shapes),
+        }
+        if r.self_stress_basis is not None:
+            doc["self_stress_modes"] = [
+                {s.member_ids[i]: float(v) for i, v in enumerate(r.self_stress_basis[:, k])
+                 if abs(v) > 1e-12} for k in range(r.self_stress_states)]
+        if any(s.is_beam):
+            doc["note"] = "beams are analysed as pin-jointed bars"
+        return doc
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class TraceResult(Result):
+    """A traced finite-mechanism motion (:func:`trussfe.trace`); ``solution`` is a
+    :class:`trussfe.kinematics.trace.TraceResult`.  ``options`` holds the drive, step,
+    steps and branch of the JSON document."""
+
+    command: ClassVar[str] = "trace"
+    options: dict | None = None
+
+    @property
+    def parameter(self) -> np.ndarray:
+        """Path parameter of every state, shape (state,), m."""
+        return self.solution.parameter
+
+    @property
+    def position(self) -> np.ndarray:
+        """Joint positions of every state, shape (state, node, dim), m."""
+        return self.solution.coords
+
+    @property
+    def displacement(self) -> np.ndarray:
+        """Motion from the start state, shape (state, node, dim), m."""
+        return self.solution.coords - self.solution.coords[:1]
+
+    @property
+    def rank(self) -> np.ndarray:
+        """ρ(B) of every state, shape (state,)."""
+        return self.solution.rank
+
+    @property
+    def residual(self) -> np.ndarray:
+        """Largest bar-length misfit of every state, shape (state,), m."""
+        return self.solution.residual
+
+    @property
+    def events(self) -> list:
+        """Bifurcation and limit points: ``{"step": k, "kind": ...}``."""
+        return self.solution.events
+
+    def _document(self) -> dict:
+        s = self.structure
+        r = self.solution
+        path = []
+        for k in range(r.coords.shape[0]):
+            entry = {"parameter": float(r.parameter[k]),
+                     "positions": {nid: r.coords[k, i].tolist()
+                                   for i, nid in enumerate(s.node_ids)},
+                     "rank": int(r.rank[k]), "residual": float(r.residual[k])}
+            if k > 0:
+                entry["iterations"] = int(r.iterations[k - 1])
+            path.append(entry)
+        o = self.options or {}
+        return {"units": "SI", "command": "trace", "model": s.name, "drive": o.get("drive"),
+                "step": o.get("step"), "steps": o.get("steps"), "branch": o.get("branch"),
+                "path": path, "events": r.events}

@@ -2,13 +2,18 @@
 """Linear finite-element analyses: :func:`static`, :func:`modes`, :func:`buckling`."""
 from __future__ import annotations
 
+from dataclasses import dataclass
+from typing import ClassVar
+
+import numpy as np
+
 from ..fem.buckling import solve_buckling
 from ..linalg.pardiso import available as pardiso_available
 from ..fem.modal import solve_modes
 from ..fem.static import solve_static
 from .model import ModelLike, as_structure
 from .options import choice, positive_int
-from .results import BucklingResult, ModesResult, StaticResult
+from .results import Result
 
 #: Sparse linear solvers of :func:`static`.
 SOLVERS = ("auto", "superlu", "pardiso")
@@ -52,15 +57,16 @@ def static(model: ModelLike, *, bar_model: str = "truss", subdivisions: int | No
                                                 subdivisions=subdivisions, backend=solver))
 
 
-def modes(model: ModelLike, *, count: int = 6, mass: str = "consistent",
+def modes(model: ModelLike, *, count: int | None = None, mass: str = "consistent",
           bar_model: str = "truss", subdivisions: int | None = None) -> ModesResult:
     """Natural frequencies and mass-normalised mode shapes (``trussfe modes``).
 
     Parameters
     ----------
     model : Structure, path or dict
-    count : int
-        Number of modes.
+    count : int, optional
+        Number of modes (default 6, or every mode of a model with fewer free DOFs that carry
+        mass).
     mass : {"consistent", "lumped"}
         Member mass matrix.
     bar_model : {"truss", "pinned-beam"}
@@ -102,3 +108,167 @@ def buckling(model: ModelLike, *, count: int = 4, bar_model: str = "pinned-beam"
     return BucklingResult(structure, solve_buckling(structure, count=count,
                                                     bar_model=bar_model,
                                                     subdivisions=subdivisions))
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class StaticResult(Result):
+    """Linear static analysis (:func:`trussfe.static`); ``solution`` is a
+    :class:`trussfe.fem.static.StaticResult`.  Global equilibrium holds: the reactions balance
+    the applied loads and gravity."""
+
+    command: ClassVar[str] = "static"
+
+    @property
+    def displacement(self) -> np.ndarray:
+        """Node translations, shape (node, dim), m."""
+        return self.solution.displacements[:, :self.dim]
+
+    @property
+    def rotation(self) -> np.ndarray:
+        """Node rotations, shape (node, 1) in 2-D or (node, 3) in 3-D, rad (zero at nodes
+        without rotational freedom)."""
+        return self.solution.displacements[:, self.dim:]
+
+    @property
+    def reaction(self) -> np.ndarray:
+        """Support reaction forces, shape (node, dim), N (zero where not supported)."""
+        return self.solution.reactions[:, :self.dim]
+
+    @property
+    def reaction_moment(self) -> np.ndarray:
+        """Support reaction moments, shape (node, 1 or 3), N·m."""
+        return self.solution.reactions[:, self.dim:]
+
+    @property
+    def axial_force(self) -> np.ndarray:
+        """Member axial force, shape (member,), N (tension positive)."""
+        return self.solution.axial_force
+
+    @property
+    def axial_stress(self) -> np.ndarray:
+        """Axial stress N/A, shape (member,), Pa."""
+        return self.solution.axial_stress
+
+    @property
+    def strain(self) -> np.ndarray:
+        """Axial strain N/(EA), shape (member,)."""
+        return self.solution.strain
+
+    @property
+    def max_von_mises(self) -> np.ndarray:
+        """Largest von Mises stress along each member, shape (member,), Pa."""
+        return self.solution.max_von_mises
+
+    @property
+    def end_forces(self) -> np.ndarray:
+        """Section forces at the member ends, shape (member, 2, 6): start and end;
+        N, Vy, Vz, T, My, Mz in member axes."""
+        return self.solution.end_forces
+
+    @property
+    def section_forces(self) -> np.ndarray:
+        """Section forces at the stations, shape (member, station, 6)."""
+        return self.solution.section_forces
+
+    @property
+    def station_x(self) -> np.ndarray:
+        """Station positions along each member, shape (member, station), m."""
+        return self.solution.station_x
+
+    @property
+    def residual(self) -> float:
+        """Relative residual of the linear solve."""
+        return float(self.solution.residual)
+
+    def _document(self) -> dict:
+        from ..fem.static import static_json
+        return static_json(self.solution)
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class ModesResult(Result):
+    """Modal analysis (:func:`trussfe.modes`); ``solution`` is a
+    :class:`trussfe.fem.modal.ModalResult`."""
+
+    command: ClassVar[str] = "modes"
+
+    @property
+    def frequencies_hz(self) -> np.ndarray:
+        """Natural frequencies, shape (mode,), Hz, ascending."""
+        return self.solution.frequencies_hz
+
+    @property
+    def shapes(self) -> np.ndarray:
+        """Mass-normalised mode shapes at the nodes, shape (mode, node, dim), m·kg^-½."""
+        return self.solution.node_shapes()[:, :, :self.dim]
+
+    @property
+    def participation(self) -> np.ndarray:
+        """Participation factors, shape (mode, dim)."""
+        return self.solution.participation
+
+    @property
+    def effective_mass(self) -> np.ndarray:
+        """Effective modal masses, shape (mode, dim), kg."""
+        return self.solution.effective_mass
+
+    @property
+    def total_mass(self) -> np.ndarray:
+        """Total mass per axis, shape (dim,), kg."""
+        return self.solution.total_mass
+
+    @property
+    def kinds(self) -> tuple[str, ...]:
+        """``"rigid"`` (zero frequency) or ``"elastic"`` per mode."""
+        return tuple(self.solution.kinds)
+
+    @property
+    def rigid_modes(self) -> int:
+        """Number of zero-frequency (rigid-body or mechanism) modes."""
+        return int(self.solution.rigid_modes)
+
+    def _document(self) -> dict:
+        from ..fem.modal import modes_json
+        return modes_json(self.solution)
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class BucklingResult(Result):
+    """Linear buckling analysis (:func:`trussfe.buckling`); ``solution`` is a
+    :class:`trussfe.fem.buckling.BucklingResult`."""
+
+    command: ClassVar[str] = "buckling"
+
+    @property
+    def load_factors(self) -> np.ndarray:
+        """Load factors, shape (mode,), ascending by magnitude (negative = reversed loads)."""
+        return self.solution.load_factors
+
+    @property
+    def critical_load_factor(self) -> float:
+        """Smallest positive load factor (``nan`` if none among the modes computed)."""
+        return float(self.solution.critical_load_factor)
+
+    @property
+    def shapes(self) -> np.ndarray:
+        """Buckling mode shapes at the nodes, shape (mode, node, dim), largest translation 1."""
+        return self.solution.node_shapes()[:, :, :self.dim]
+
+    @property
+    def axial_force(self) -> np.ndarray:
+        """Static member axial force under the reference loads, shape (member,), N."""
+        return self.solution.static.axial_force
+
+    @property
+    def euler_load(self) -> np.ndarray:
+        """Member Euler load (Lacy eq. 2.26, C = 1), shape (member,), N."""
+        return self.solution.euler_load
+
+    @property
+    def buckling_utilisation(self) -> np.ndarray:
+        """Compression over Euler load, shape (member,)."""
+        return self.solution.utilisation
+
+    def _document(self) -> dict:
+        from ..fem.buckling import buckling_json
+        return buckling_json(self.solution)

@@ -15,7 +15,7 @@ from typing import Any, Union
 
 import numpy as np
 
-from ..errors import InputError, TrussfeError
+from ..errors import InputError
 from ..io.model_file import parse_model, read_model
 from ..model.structure import Structure
 
@@ -123,5 +123,4 @@ def resolve_beside(path: str | os.PathLike, structure: Structure) -> Path:
     return p
 
 
-__all__ = ["ModelLike", "as_structure", "model_from_dict", "read_model", "resolve_beside",
-           "TrussfeError"]
+__all__ = ["ModelLike", "as_structure", "model_from_dict", "read_model", "resolve_beside"]

@@ -3,11 +3,15 @@
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
+from typing import ClassVar
+
+import numpy as np
 
 from ..errors import InputError
 from .model import ModelLike, as_structure
 from .options import choice, positive_int
-from .results import PostcriticalResult
+from .results import Result
 
 
 def postcritical(model: ModelLike, *, control: str | None = None, steps: int | None = None,
@@ -76,3 +80,66 @@ def postcritical(model: ModelLike, *, control: str | None = None, steps: int | N
         max_displacement=max_displacement, monitor=monitor, bar_model=bar_model,
         subdivisions=subdivisions, imperfection=imperfection, branch=branch,
         max_step=max_step))
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class PostcriticalResult(Result):
+    """Geometrically nonlinear path with member failure (:func:`trussfe.postcritical`);
+    ``solution`` is a :class:`trussfe.nonlinear.path.PathResult` (its ``path`` points and
+    ``events``)."""
+
+    command: ClassVar[str] = "postcritical"
+
+    @property
+    def load_factors(self) -> np.ndarray:
+        """Load factor λ of every path point, shape (point,)."""
+        return self.solution.load_factors
+
+    @property
+    def displacement(self) -> np.ndarray:
+        """Node translations of every path point, shape (point, node, dim), m."""
+        s = self.structure
+        n = s.n_nodes * s.dim
+        return np.array([p.u[:n] for p in self.solution.path]).reshape(-1, s.n_nodes, s.dim)
+
+    @property
+    def axial_force(self) -> np.ndarray:
+        """Member axial force of every path point, shape (point, member), N."""
+        return np.array([p.forces for p in self.solution.path])
+
+    @property
+    def alive(self) -> np.ndarray:
+        """False for a member removed by its failure law, shape (point, member)."""
+        return np.array([p.alive for p in self.solution.path])
+
+    @property
+    def stage(self) -> tuple[str, ...]:
+        """``"equilibrium"`` or ``"mechanism"`` (rigid-bar motion after the hand-over) per
+        point."""
+        return tuple(p.stage for p in self.solution.path)
+
+    @property
+    def monitor(self) -> tuple[str, str]:
+        """The monitored displacement: (node id, axis)."""
+        node, axis = divmod(self.solution.monitor, self.dim)
+        return self.structure.node_ids[node], "xyz"[axis]
+
+    @property
+    def monitored_displacement(self) -> np.ndarray:
+        """The monitored displacement of every path point, shape (point,), m."""
+        return self.solution.displacement()
+
+    @property
+    def events(self) -> list:
+        """Limit and bifurcation points, member buckling, yield, fracture, mechanism
+        (:class:`trussfe.nonlinear.path.Event`)."""
+        return self.solution.events
+
+    @property
+    def termination(self) -> str:
+        """Why the path ended."""
+        return self.solution.termination
+
+    def _document(self) -> dict:
+        from ..nonlinear.analysis import result_document
+        return result_document(self.solution)

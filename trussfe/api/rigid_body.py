@@ -3,14 +3,20 @@
 from __future__ import annotations
 
 import os
+from dataclasses import dataclass
+from typing import ClassVar
+
+import numpy as np
 
 from ..errors import InputError
 from ..model.structure import Structure
 from .model import ModelLike, as_structure, resolve_beside
 from .options import choice, positive_int
-from .results import ActuatorsResult, SimulateResult
+from .results import Result
 
-#: Kinematics schemes: exact, or Lacy's backward differences.
+#: Kinematics schemes: exact (:data:`~trussfe.mechanics.conventions.PHYSICAL`), or Lacy's
+#: Appendix A (:data:`~trussfe.mechanics.conventions.THESIS`: backward differences and
+#: whole-length section inertia).
 SCHEMES = ("exact", "thesis")
 
 
@@ -19,7 +25,8 @@ def load_motion_for(structure: Structure, motion, steps: int | None, *,
     """The :class:`~trussfe.rigid.motion.Motion` of a ``motion`` option: a motion object as
     is, a file path (TOML ``[motion]`` or CSV; a relative path not found from the working
     directory is taken beside the model file), or ``None`` (the model at rest)."""
-    from ..rigid.motion import Motion, load_motion
+    from ..rigid.motion import Motion
+    from ..rigid.motion_file import load_motion
 
     positive_int("--steps", steps)
     if motion is None:
@@ -38,13 +45,14 @@ def load_motion_for(structure: Structure, motion, steps: int | None, *,
 
 
 def _simulate(model: ModelLike, motion, steps, scheme: str, sections: int, progress: bool):
+    from ..mechanics.conventions import Conventions
     from ..rigid.simulate import simulate as run
 
     choice("--scheme", scheme, SCHEMES)
     structure = as_structure(model)
     mot = load_motion_for(structure, motion, steps)
-    return structure, run(structure, mot, scheme=scheme, n_sections=sections,
-                          progress=progress)
+    return structure, run(structure, mot, conventions=Conventions.from_scheme(scheme),
+                          n_sections=sections, progress=progress)
 
 
 def simulate(model: ModelLike, *, motion=None, steps: int | None = None,
@@ -97,8 +105,163 @@ def actuators(model: ModelLike, *, motion=None, steps: int | None = None) -> Act
     -------
     ActuatorsResult
         ``force``, ``motor_torque``, ``motor_voltage`` (step, actuator), ``history(name)``.
+
+    Raises
+    ------
+    InputError
+        The model has no ``[actuators]`` table.
     """
     from ..rigid import actuator as _actuator  # noqa: F401  (registers [actuators])
 
-    structure, res = _simulate(model, motion, steps, "exact", 7, False)
+    structure = as_structure(model)
+    if not _actuator.actuators_of(structure):
+        raise InputError(structure.source or structure.name or "model",
+                         "the model has no [actuators] table: give the leadscrew and motor "
+                         "data of the actuators to analyse (see docs/actuators.md)")
+    structure, res = _simulate(structure, motion, steps, "exact", 7, False)
     return ActuatorsResult(structure, res)
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class SimulateResult(Result):
+    """Rigid-body dynamic force analysis along a motion (:func:`trussfe.simulate`);
+    ``solution`` is a :class:`trussfe.rigid.simulate.SimulationResult`."""
+
+    command: ClassVar[str] = "simulate"
+
+    @property
+    def time(self) -> np.ndarray:
+        """Time of every step, shape (step,), s."""
+        return self.solution.time
+
+    @property
+    def position(self) -> np.ndarray:
+        """Node positions, shape (step, node, dim), m."""
+        return self.solution.kinematics.coords[..., :self.dim]
+
+    @property
+    def velocity(self) -> np.ndarray:
+        """Node velocities, shape (step, node, dim), m/s."""
+        return self.solution.kinematics.velocity[..., :self.dim]
+
+    @property
+    def acceleration(self) -> np.ndarray:
+        """Node accelerations, shape (step, node, dim), m/s²."""
+        return self.solution.kinematics.acceleration[..., :self.dim]
+
+    @property
+    def reaction(self) -> np.ndarray:
+        """Support reactions, shape (step, node, dim), N (zero on free coordinates)."""
+        return self.solution.forces.reactions[..., :self.dim]
+
+    @property
+    def axial_force(self) -> np.ndarray:
+        """Axial force at the middle of each member's tube, shape (step, member), N."""
+        return self.solution.midpoint_axial_force
+
+    @property
+    def station_axial_force(self) -> np.ndarray:
+        """Axial force at the sections, shape (step, member, station), N (Lacy eq. 2.18)."""
+        return self.solution.sections.tension
+
+    @property
+    def von_mises(self) -> np.ndarray:
+        """Von Mises stress at the sections, shape (step, member, station), Pa."""
+        return self.solution.stresses.von_mises
+
+    @property
+    def max_von_mises(self) -> np.ndarray:
+        """Largest von Mises stress over each member's sections, shape (step, member), Pa."""
+        return self.solution.stresses.von_mises.max(axis=2)
+
+    @property
+    def actuator_ids(self) -> tuple[str, ...]:
+        """Ids of the active members, in the order of every ``actuator`` axis."""
+        from ..rigid.active import active_members
+        return tuple(self.structure.member_ids[a.member] for a in active_members(self.structure))
+
+    @property
+    def actuator_force(self) -> np.ndarray:
+        """Force of the active base on the leadscrew tube, shape (step, actuator), N."""
+        return self.solution.actuator_force
+
+    def _document(self) -> dict:
+        from ..rigid.output import to_json
+        return to_json(self.solution)
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class ActuatorsResult(Result):
+    """Leadscrew and motor demands along a motion (:func:`trussfe.actuators`); ``solution``
+    is the :class:`trussfe.rigid.simulate.SimulationResult` they come from."""
+
+    command: ClassVar[str] = "actuators"
+
+    #: Histories of every actuator, each an array of shape (step, actuator).
+    QUANTITIES: ClassVar[tuple[str, ...]] = (
+        "force", "motor_speed", "motor_torque", "motor_current", "motor_voltage",
+        "motor_voltage_frictionless")
+
+    @property
+    def time(self) -> np.ndarray:
+        """Time of every step, shape (step,), s."""
+        return self.solution.time
+
+    @property
+    def actuator_ids(self) -> tuple[str, ...]:
+        """Ids of the ``[actuators]`` entries with histories, in the order of every
+        ``actuator`` axis."""
+        from ..rigid.actuator import actuators_of
+        return tuple(a.name for a in actuators_of(self.structure)
+                     if a.name in self.solution.actuators)
+
+    def history(self, quantity: str) -> np.ndarray:
+        """One of :attr:`QUANTITIES` for every actuator, shape (step, actuator)."""
+        if quantity not in self.QUANTITIES:
+            raise KeyError(f"{quantity!r}; have {', '.join(self.QUANTITIES)}")
+        h = self.solution.actuators
+        return np.stack([np.asarray(h[a][quantity], dtype=float) for a in self.actuator_ids],
+                        axis=1) if self.actuator_ids else np.zeros((self.time.size, 0))
+
+    @property
+    def force(self) -> np.ndarray:
+        """Actuator force, shape (step, actuator), N."""
+        return self.history("force")
+
+    @property
+    def motor_torque(self) -> np.ndarray:
+        """Motor torque, shape (step, actuator), N·m."""
+        return self.history("motor_torque")
+
+    @property
+    def motor_voltage(self) -> np.ndarray:
+        """Motor voltage, shape (step, actuator), V."""
+        return self.history("motor_voltage")
+
+    def _document(self) -> dict:
+        from ..rigid.actuator import actuators_of
+
+        res = self.solution
+        t = res.time
+
+        def peak(x: np.ndarray) -> dict:
+            k = int(np.argmax(np.abs(x)))
+            return {"value": float(x[k]), "time": float(t[k])}
+
+        out = {}
+        for act in actuators_of(self.structure):
+            h = res.actuators.get(act.name)
+            if h is None:
+                continue
+            out[act.name] = {
+                "self_locking": bool(act.self_locking),
+                "self_locking_limit": act.self_locking_limit,
+                "leadscrew_gain": act.leadscrew_gain,
+                "gearhead_gain": float(h["gearhead_gain"]),
+                "gearhead_gain_selected": bool(h["gearhead_gain_selected"]),
+                "convention": act.convention,
+                **{k: peak(np.asarray(h[k])) for k in self.QUANTITIES},
+                "flags": list(h["flags"]),
+            }
+        return {"units": "SI", "command": "actuators", "model": self.structure.name,
+                "actuators": out}

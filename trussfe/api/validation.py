@@ -41,7 +41,7 @@ class ValidationResult:
     def to_dict(self) -> dict:
         """Status and checked values of every case (``trussfe validate`` writes a report,
         not JSON; this is the same content as data)."""
-        from ..io.output import _jsonable
+        from ..io.output import plain
 
         cases = {}
         for r in self.cases:
@@ -51,7 +51,7 @@ class ValidationResult:
                                 "value": q.value, "reference": q.quantity.reference,
                                 "rel_error": q.rel_error, "status": q.status,
                                 "source": q.quantity.source} for q in r.quantities]}
-        return _jsonable({"command": "validate", "passed": self.passed, "cases": cases})
+        return plain({"command": "validate", "passed": self.passed, "cases": cases})
 
     def __repr__(self) -> str:
         return (f"<ValidationResult: {len(self.cases) - len(self.failed)}/{len(self.cases)} "

@@ -43,6 +43,4 @@ def _run(args: argparse.Namespace) -> int:
               f"({a['motor_voltage_frictionless']['value']:.4g} V without friction)")
         for f in a["flags"]:
             print(f"  flag: {f}")
-    if not doc["actuators"]:
-        print("the model has no [actuators] table")
     return 0

@@ -73,7 +73,7 @@ def _main(args: argparse.Namespace) -> int:
     res = api.buckling(args.model, count=args.count, bar_model=args.bar_model,
                        subdivisions=args.subdivisions)
     result = res.solution
-    doc = res.to_dict()
+    doc = res.to_dict() if args.json else None
     if args.vtk:
         write_vtk(args.vtk, result)
     if args.json:

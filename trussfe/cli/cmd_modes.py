@@ -10,7 +10,7 @@ from pathlib import Path
 
 from ..fem.discretisation import BAR_MODELS
 from .. import api
-from ..fem.modal import MASS_KINDS, ModalResult
+from ..fem.modal import DEFAULT_MODE_COUNT, MASS_KINDS, ModalResult
 from ..io.output import write_json
 from ._modeshapes import write_modes_vtk
 
@@ -22,8 +22,9 @@ def register(subparsers) -> None:
                               "mass-normalised mode shapes, participation factors and "
                               "effective masses.")
     p.add_argument("model", help="model file (TOML)")
-    p.add_argument("--count", type=int, default=6, metavar="N",
-                   help="number of modes (default 6)")
+    p.add_argument("--count", type=int, default=None, metavar="N",
+                   help="number of modes (default 6, or all there are when the model has "
+                   "fewer free DOFs that carry mass)")
     p.add_argument("--mass", choices=MASS_KINDS, default="consistent",
                    help="member mass matrix (default consistent)")
     p.add_argument("--bar-model", choices=BAR_MODELS, default="truss",
@@ -69,10 +70,13 @@ def _main(args: argparse.Namespace) -> int:
     res = api.modes(args.model, count=args.count, mass=args.mass, bar_model=args.bar_model,
                     subdivisions=args.subdivisions)
     result = res.solution
-    doc = res.to_dict()
+    doc = res.to_dict() if args.json else None
     if args.vtk:
         write_vtk(args.vtk, result)
     if args.json:
         write_json(args.json, doc)
     sys.stdout.write(_table(result) + "\n")
+    if args.count is None and result.count < DEFAULT_MODE_COUNT:
+        sys.stdout.write(f"the model has only {result.count} free DOFs that carry mass: all "
+                         f"{result.count} modes computed\n")
     return 0

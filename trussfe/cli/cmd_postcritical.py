@@ -16,6 +16,7 @@ import numpy as np
 
 from .. import api
 from ..io.output import write_json
+from ..nonlinear.analysis import unmodelled_buckling
 from ..nonlinear.model import BAR_MODELS
 from ..nonlinear.path import CONTROLS, PathResult
 from ..nonlinear.plot import write_plot
@@ -100,9 +101,18 @@ def _main(args) -> int:
     out = sys.stdout
     out.write(f"{doc['model']}: {len(doc['path'])} path points, maximum load factor "
               f"{doc['max_load_factor']:.6g}\n")
+    if doc["gravity_dead_load"]:
+        out.write("  gravity acts as a constant dead load; the load factor scales [loads]\n")
     for e in doc["events"]:
         who = f" member {e['member']}" if e["member"] is not None else ""
         out.write(f"  λ = {e['load_factor']:.6g}: {e['kind']}{who}"
                   f"{' — ' + e['detail'] if e['detail'] else ''}\n")
     out.write(f"  {doc['termination']}\n")
+    over = unmodelled_buckling(result)
+    if over is not None:
+        mem, lam, pe = over
+        s = result.model.structure
+        sys.stderr.write(f"trussfe: note: member buckling is not modelled (no [failure] "
+                         f"table); member {s.member_ids[mem]} exceeds its Euler load "
+                         f"{pe:.4g} N from load factor {lam:.6g}\n")
     return 0

@@ -95,7 +95,7 @@ def _main(args: argparse.Namespace) -> int:
     res = api.static(args.model, bar_model=args.bar_model, subdivisions=args.subdivisions,
                      solver=args.solver)
     result = res.solution
-    doc = res.to_dict()
+    doc = res.to_dict() if args.json else None
     # all outputs are produced before any is renamed into place
     if args.vtk:
         write_vtu(args.vtk, result)

@@ -19,5 +19,13 @@ class _CallablePackage(_types.ModuleType):
         from ..api import elastic as analysis
         return analysis(*args, **kwargs)
 
+    @property
+    def __signature__(self):
+        """The analysis's signature (for ``inspect.signature`` and ``help``)."""
+        import inspect
+
+        from ..api import elastic as analysis
+        return inspect.signature(analysis)
+
 
 _sys.modules[__name__].__class__ = _CallablePackage

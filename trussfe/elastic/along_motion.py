@@ -35,7 +35,7 @@ cross-check Lacy could not make because MSC/PAL lumps member weight at the nodes
 from __future__ import annotations
 
 import logging
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -43,6 +43,7 @@ from ..errors import AnalysisError, InputError
 from ..fem.discretisation import FEModel, discretise
 from ..fem.solver import factorise, solve_free
 from ..linalg import SingularMatrixError
+from ..mechanics.conventions import PHYSICAL, Conventions
 from ..model.structure import Structure
 from ..rigid.forces import MemberBodies, member_bodies
 from ..rigid.kinematics import Kinematics
@@ -115,6 +116,7 @@ def stacked_structure(structure: Structure, coords: np.ndarray) -> Structure:
         connectivity=conn, sections=list(structure.sections) * nt,
         materials=list(structure.materials) * nt,
         is_beam=np.tile(structure.is_beam, nt), releases=np.tile(structure.releases, (nt, 1)),
+        torsion_releases=np.tile(structure.torsion_releases, (nt, 1)),
         supports=np.tile(structure.supports, (nt, 1)),
         loads=np.zeros((nt * n, structure.ndof_node)), masses=np.zeros(nt * n),
         gravity=np.zeros(dim), orientation=np.tile(structure.orientation, (nt, 1)),
@@ -283,7 +285,9 @@ def compare_with_rigid(rigid_sections: SectionForces, response: ElasticResponse,
     Each member's differences are scaled by that member's largest force (tension or shear,
     over all steps and sections) for the forces and by its largest moment for the moments,
     so that near-zero values do not blow the ratio up; a member whose forces are all zero
-    (to 1e-12 of the largest in the structure) is scaled by the structure's largest.
+    (to 1e-12 of the largest in the structure) is scaled by the structure's largest, and the
+    moment scale is never below 1e-6 of the largest force in the model times the member's
+    length (a pin-jointed member's moments are round-off, not a quantity to divide by).
 
     Parameters
     ----------
@@ -308,8 +312,15 @@ def compare_with_rigid(rigid_sections: SectionForces, response: ElasticResponse,
     fmag = np.maximum(np.abs(rs.tension), np.linalg.norm(rs.shear, axis=-1))
     f_scale = fmag.max(axis=(0, 2))                                        # (m,)
     m_scale = np.linalg.norm(rs.moment, axis=-1).max(axis=(0, 2))
-    f_scale = np.maximum(f_scale, 1e-12 * max(f_scale.max(initial=0.0), 1e-300))
-    m_scale = np.maximum(m_scale, 1e-12 * max(m_scale.max(initial=0.0), 1e-300))
+    f_big = max(f_scale.max(initial=0.0), 1e-300)
+    f_scale = np.maximum(f_scale, 1e-12 * f_big)
+    # moments: a floor from the largest force in the model times the member's length, so
+    # that the round-off moments of a pin-jointed member (all zero but for the last digits)
+    # are not divided by zero
+    length = np.abs(np.asarray(rs.position, dtype=float)).max(axis=1)      # (m,) section span
+    m_floor = _MOMENT_FLOOR * f_big * length
+    m_scale = np.maximum(m_scale, np.maximum(m_floor, 1e-12 * max(m_scale.max(initial=0.0),
+                                                                  1e-300)))
     dT = np.abs(fs.tension - rs.tension) / f_scale[None, :, None]
     dV = np.linalg.norm(fs.shear - rs.shear, axis=-1) / f_scale[None, :, None]
     dM = np.linalg.norm(fs.moment - rs.moment, axis=-1) / m_scale[None, :, None]
@@ -325,8 +336,14 @@ def compare_with_rigid(rigid_sections: SectionForces, response: ElasticResponse,
     return out
 
 
-def simulate_elastic(structure: Structure, motion=None, *, scheme: str = "exact",
-                     n_sections: int = 7, subdivisions: int | None = None,
+#: Moment scale floor of :func:`compare_with_rigid`, as a fraction of the largest force in the
+#: model times the member's length: round-off moments (1e-16 of that) compare as 1e-10.
+_MOMENT_FLOOR = 1e-6
+
+
+def simulate_elastic(structure: Structure, motion=None, *,
+                     conventions: Conventions = PHYSICAL, n_sections: int = 7,
+                     subdivisions: int | None = None,
                      gravity: bool = True, loads: bool = True):
     """Rigid-body simulation and FE response along the same motion, compared.
 
@@ -335,8 +352,10 @@ def simulate_elastic(structure: Structure, motion=None, *, scheme: str = "exact"
     structure : Structure
     motion : Motion, optional
         Active-member histories (``None``: the model at rest, one step).
-    scheme : {"exact", "thesis"}
-        Kinematics of :func:`trussfe.rigid.simulate.simulate`.
+    conventions : Conventions
+        Of the rigid-body run (:func:`trussfe.rigid.simulate.simulate`), except that each
+        piece's own length is always used in its section inertia: the whole-length inertia of
+        Lacy's Appendix A is the inertia of no mass distribution, so no FE load matches it.
     n_sections : int
         Sections per member tube.
     subdivisions : int, optional
@@ -360,8 +379,8 @@ def simulate_elastic(structure: Structure, motion=None, *, scheme: str = "exact"
     """
     from ..rigid.simulate import simulate
 
-    sim = simulate(structure, motion, scheme=scheme, n_sections=n_sections,
-                   full_length_inertia=False, actuators=False)
+    sim = simulate(structure, motion, n_sections=n_sections, actuators=False,
+                   conventions=replace(conventions, full_length_inertia=False))
     k = subdivisions if subdivisions is not None else max(int(n_sections) - 1, 2)
     resp = elastic_along_motion(structure, sim.kinematics, bodies=sim.bodies,
                                 positions=sim.sections.position, subdivisions=k,

@@ -160,10 +160,10 @@ def motion_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies | N
     --------
     A 2 m tube at rest under gravity carries its weight ρAL·g as a uniform load:
 
-    >>> from trussfe.rigid.reproductions import triangular_truss
+    >>> from trussfe.models import triangular_truss
     >>> from trussfe.rigid.kinematics import compute_kinematics
     >>> from trussfe.rigid.motion import rest_motion
-    >>> s = triangular_truss()
+    >>> s = triangular_truss(member_weight=True, active_members=True)
     >>> ld = motion_loads(s, compute_kinematics(s, rest_motion(s)).at_rest())
     >>> w = s.density[0] * s.area[0] * 9.81
     >>> bool(np.allclose(ld.q0[0, 0], [0.0, -w, 0.0]))

@@ -438,7 +438,7 @@ def transient_response(structure: Structure, motion: Motion, *, bar_model: str =
     frozen = update == "frozen"
 
     # Rigid-body model: kinematics and the member forces of Lacy's model for comparison.
-    rig = simulate(structure, grid, scheme="exact", n_sections=RIGID_SECTIONS, actuators=False)
+    rig = simulate(structure, grid, n_sections=RIGID_SECTIONS, actuators=False)
     kin = rig.kinematics
     bodies = member_bodies(structure)
     s0 = massless_active(structure)

@@ -96,6 +96,7 @@ def batch_structure(structure: Structure, coords: np.ndarray) -> Structure:
         member_ids=[f"{j}@{c}" for c in range(nb) for j in s.member_ids],
         connectivity=conn, sections=list(s.sections) * nb, materials=list(s.materials) * nb,
         is_beam=np.tile(s.is_beam, nb), releases=np.tile(s.releases, (nb, 1)),
+        torsion_releases=np.tile(s.torsion_releases, (nb, 1)),
         supports=np.tile(s.supports, (nb, 1)), loads=np.tile(s.loads, (nb, 1)),
         masses=np.tile(s.masses, nb), gravity=np.array(s.gravity, dtype=float),
         orientation=np.tile(s.orientation, (nb, 1)), extensions=ext, source=s.source)
@@ -146,7 +147,7 @@ def rigid_field(fe: FEModel, node_vectors: np.ndarray) -> np.ndarray:
     --------
     A rigid rotation about the origin strains nothing: ``K u = 0``.
 
-    >>> from trussfe.rigid.reproductions import triangular_truss
+    >>> from trussfe.models import triangular_truss
     >>> from trussfe.fem.discretisation import discretise
     >>> s = triangular_truss()
     >>> fe = discretise(s, "pinned-beam", 4)

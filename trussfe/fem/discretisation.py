@@ -20,9 +20,11 @@ Global DOFs
   without a moment release;
 * interior points of subdivided frame members: translations and rotations in member axes
   (no twist DOF where torsion is suppressed, see below);
-* a released frame end: private bending rotations in member axes (2-D: θz; 3-D: θy, θz).
-  Its twist follows the joint's rotation when the joint has rotations and is zero otherwise
-  (a pin-ended member cannot spin freely about its own axis).
+* a member end rotation that is the end's own (:mod:`trussfe.mechanics.releases`): a private
+  DOF in member axes (2-D: θz; 3-D: twist, θy, θz).  A released end owns its bending
+  rotations; it owns its twist too where the joint has no rotational stiffness from a rigid
+  beam end or a rotational support (a ball joint), or where torsion is released explicitly.
+  A member free to twist at both ends has its start twist held (it cannot spin).
 
 Bar models (docs/cli.md, ``--bar-model``)
 ---------------------------
@@ -51,6 +53,7 @@ import scipy.sparse as sp
 from skfem import Basis, ElementLineHermite, ElementLineP1, MeshLine1, asm
 
 from ..errors import InputError
+from ..mechanics.releases import JOINT, OWN, end_rotations
 from ..model.structure import Structure
 from . import forms
 
@@ -410,6 +413,10 @@ class FEModel:
         self.released = released
         # torsion exists in beams only (pinned-beam bars: θ = 0 along the member)
         self.twist_member = s.is_beam & (dim == 3)
+        # what each end rotation is (joint's, the end's own, or held): one definition
+        er = end_rotations(dim, conn, self._axis, is_frame, self.twist_member, released,
+                           s.torsion_releases & s.is_beam[:, None], s.supports[:, dim:])
+        self.end_rotations = er
         self._check_properties(is_frame)
 
         ksub = np.where(is_frame, self.subdivisions, 1).astype(np.int64)
@@ -428,9 +435,7 @@ class FEModel:
         # ---- global DOF numbering
         node_dofs = -np.ones((n, dim + nrot), dtype=np.int64)
         node_dofs[:, :dim] = np.arange(n * dim).reshape(n, dim)
-        has_rot = np.zeros(n, dtype=bool)
-        for end in (0, 1):
-            has_rot[conn[is_frame & ~released[:, end], end]] = True
+        has_rot = er.joint_rotation
         nxt = n * dim
         nr = int(has_rot.sum())
         node_dofs[has_rot, dim:] = nxt + np.arange(nr * nrot).reshape(nr, nrot)
@@ -447,12 +452,12 @@ class FEModel:
         interior_dofs = -np.ones(mask.shape, dtype=np.int64)
         interior_dofs[mask] = nxt + np.arange(int(mask.sum()))
         nxt += int(mask.sum())
-        # private rotations at released ends (member axes): 2-D θz; 3-D θy, θz
-        npriv = 1 if dim == 2 else 2
-        private = -np.ones((m, 2, npriv), dtype=np.int64)
-        nrel = int(released.sum())
-        private[released] = nxt + np.arange(nrel * npriv).reshape(nrel, npriv)
-        nxt += nrel * npriv
+        # private rotations of member ends (member axes; 2-D θz, 3-D twist, θy, θz) where
+        # the end's rotation is its own (mechanics.releases)
+        own = er.state == OWN
+        private = -np.ones(er.state.shape, dtype=np.int64)
+        private[own] = nxt + np.arange(int(own.sum()))
+        nxt += int(own.sum())
         self.n_dof = int(nxt)
         self.node_dofs = node_dofs
         self.interior_dofs = interior_dofs
@@ -465,7 +470,8 @@ class FEModel:
         cols = np.r_[np.arange(dim), dim + np.arange(nrot)]      # DOF columns of supports
         # structure.supports columns: 2-D x,y,rz; 3-D x,y,z,rx,ry,rz — same order as node_dofs
         gd = node_dofs[:, cols]
-        hit = sup[:, : dim + nrot] & (gd >= 0)
+        hit = (sup[:, : dim + nrot] & (gd >= 0))
+        hit[:, dim:] |= er.joint_rotation_held        # joints with rotations from supports only
         fixed[gd[hit]] = True
         self.fixed = fixed
         self.free = np.flatnonzero(~fixed)
@@ -610,27 +616,22 @@ class FEModel:
                 add(eidx[ii], base + i, self.interior_dofs[pt[ii], i], 1.0)
             if not frame:
                 continue
-            rel = released[mem, end] & at_joint
-            jr = np.flatnonzero(at_joint & ~rel)
-            kr = np.flatnonzero(rel)
-            if dim == 2:
-                add(eidx[jr], base + 2, self.node_dofs[node[jr], 2], 1.0)
-                add(eidx[kr], base + 2, self.private_dofs[mem[kr], end, 0], 1.0)
-                add(eidx[ii], base + 2, self.interior_dofs[pt[ii], 2], 1.0)
-                continue
-            twist = self.twist_member[mem]
-            Rr = R[jr].copy()
-            Rr[:, 0, :] *= twist[jr, None]
-            add_block(eidx[jr], base + 3, self.node_dofs[node[jr], 3:], Rr)
-            for i in range(3):
-                add(eidx[ii], base + 3 + i, self.interior_dofs[pt[ii], 3 + i], 1.0)
-            # released end: twist from the joint's rotation (zero if the joint has none),
-            # bending rotations private
-            kt = kr[twist[kr]]
-            for jd in range(3):
-                add(eidx[kt], base + 3, self.node_dofs[node[kt], 3 + jd], R[kt, 0, jd])
-            add(eidx[kr], base + 4, self.private_dofs[mem[kr], end, 0], 1.0)
-            add(eidx[kr], base + 5, self.private_dofs[mem[kr], end, 1], 1.0)
+            # end rotations at joints, component by component (member axes): the joint's
+            # (a row of R on its rotations), the end's own (private DOF) or held (nothing)
+            state = self.end_rotations.state[mem, end]            # (el, 1 or 3)
+            comp0 = dim                                           # first rotation component
+            for c in range(state.shape[1]):
+                jc = np.flatnonzero(at_joint & (state[:, c] == JOINT))
+                oc = np.flatnonzero(at_joint & (state[:, c] == OWN))
+                if dim == 2:
+                    add(eidx[jc], base + 2, self.node_dofs[node[jc], 2], 1.0)
+                else:
+                    for jd in range(3):
+                        add(eidx[jc], base + comp0 + c, self.node_dofs[node[jc], 3 + jd],
+                            R[jc, c, jd])
+                add(eidx[oc], base + comp0 + c, self.private_dofs[mem[oc], end, c], 1.0)
+            for i in range(nrot):
+                add(eidx[ii], base + dim + i, self.interior_dofs[pt[ii], dim + i], 1.0)
         rows, cols, vals = (np.concatenate(a) for a in (rows, cols, vals))
         nz = vals != 0.0
         rows, cols, vals = rows[nz], cols[nz], vals[nz]

@@ -57,6 +57,10 @@ from ..threads import parallel_map
 
 log = logging.getLogger(__name__)
 
+#: Number of modes computed when none is asked for (fewer when the model has fewer
+#: mass-carrying free DOFs: then all of them).
+DEFAULT_MODE_COUNT = 6
+
 #: Free-DOF count up to which the eigenproblem is solved densely.
 DENSE_MODAL_LIMIT = 600
 
@@ -314,7 +318,7 @@ def generalized_eigen(Kff: sp.spmatrix, Mff: sp.spmatrix, count: int, sigma: flo
     return lam, V
 
 
-def solve_modes(structure: Structure, count: int = 6, mass: str = "consistent",
+def solve_modes(structure: Structure, count: int | None = None, mass: str = "consistent",
                 bar_model: str = "truss", subdivisions: int | None = None,
                 fe: FEModel | None = None, include_nodal_masses: bool = True,
                 check_resolution: bool = True) -> ModalResult:
@@ -323,8 +327,10 @@ def solve_modes(structure: Structure, count: int = 6, mass: str = "consistent",
     Parameters
     ----------
     structure : Structure
-    count : int
-        Number of modes (lowest first).
+    count : int, optional
+        Number of modes (lowest first).  Default :data:`DEFAULT_MODE_COUNT`, or every mode
+        when the model has fewer free DOFs that carry mass (logged); an explicit count larger
+        than that is an error.
     mass : {"consistent", "lumped"}
         Member mass model.
     bar_model : {"truss", "pinned-beam"}
@@ -379,6 +385,9 @@ def solve_modes(structure: Structure, count: int = 6, mass: str = "consistent",
     True
     """
     item = structure.source or structure.name
+    every = count is None               # the default count, or every mode there is
+    if every:
+        count = DEFAULT_MODE_COUNT
     if isinstance(count, bool) or int(count) != count or count < 1:
         raise InputError("--count", f"must be a positive integer, got {count!r}")
     count = int(count)
@@ -389,7 +398,7 @@ def solve_modes(structure: Structure, count: int = 6, mass: str = "consistent",
         raise AnalysisError(item, "every DOF is supported: there is nothing to vibrate")
     dense = n <= DENSE_MODAL_LIMIT or count >= n - 1
     Kff, fac, Mff = _free_matrices(fe, mass, include_nodal_masses, dense)
-    _check_mass(Mff, count, fe, mass, item)
+    count = _check_mass(Mff, count, fe, mass, item, every)
     rigid, sigma, factor = _zero_frequency_modes(Kff, Mff, fac, item)
     lam, V = generalized_eigen(Kff, Mff, count, sigma=sigma, factor=factor, item=item)
     lam = _clean_eigenvalues(lam, min(rigid, count), Kff, Mff, item)
@@ -436,17 +445,24 @@ def _free_matrices(fe: FEModel, mass: str, include_nodal_masses: bool, dense: bo
     return Kff, fac, Mff
 
 
-def _check_mass(Mff, count: int, fe: FEModel, mass: str, item: str) -> None:
-    """Refuse a model without mass, or fewer mass-carrying DOFs than modes asked for."""
+def _check_mass(Mff, count: int, fe: FEModel, mass: str, item: str, every: bool = False) -> int:
+    """The number of modes to compute: ``count``, or every mode there is when the default
+    count (``every``) exceeds the mass-carrying DOFs; refuse a model without mass, or an
+    explicit count above the mass-carrying DOFs."""
     n_mass = int(np.count_nonzero(Mff.diagonal() > 0))
     if n_mass == 0:
         raise AnalysisError(item, "the structure has no mass: give members a density or "
                             "nodes a [masses] entry")
+    if count > n_mass and every:
+        log.info("%s: the model has only %d free DOFs that carry mass: all %d modes computed",
+                 item, n_mass, n_mass)
+        count = n_mass
     if count > n_mass:
         raise AnalysisError(item, f"asked for {count} modes but the model has only {n_mass} "
                             f"free DOFs that carry mass ({fe.free.size} free DOFs in all, "
                             f"{mass} mass, {fe.bar_model} bar model); use --count {n_mass} "
                             "or fewer")
+    return count
 
 
 def _zero_frequency_modes(Kff, Mff, fac, item: str):

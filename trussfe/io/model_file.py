@@ -20,6 +20,7 @@ from . import toml_text
 from .extension_tables import TABLES as EXTENSION_TABLES
 from ..model.ids import IdIndex, IdRange, id_index
 from ..model.sections import Material, Section
+from ..mechanics.releases import parse_end_release
 from ..model.structure import DOF_NAMES, Structure
 
 #: Top-level tables of the core format.
@@ -122,7 +123,8 @@ def parse_section(name: str, raw: Any) -> Section:
     return Section(name=name, area=A, Iy=Iy, Iz=Iz, J=J, c=c)
 
 
-def _parse_member(mid: str, raw: Any, node_index: dict, sections: dict, materials: dict):
+def _parse_member(mid: str, raw: Any, node_index: dict, sections: dict, materials: dict,
+                  dim: int = 3):
     item = f"members.{mid}"
     keys = ("nodes", "section", "material", "type", "releases", "orientation")
     if not isinstance(raw, dict):
@@ -154,8 +156,23 @@ def _parse_member(mid: str, raw: Any, node_index: dict, sections: dict, material
     if mtype not in ("bar", "beam"):
         raise InputError(f"{item}.type", f"unknown member type '{mtype}'{_suggest(mtype, ('bar', 'beam'))}")
     rel = raw.get("releases", [])
-    if not isinstance(rel, list) or any(r not in ("start", "end") for r in rel):
-        raise InputError(f"{item}.releases", "expected a list of \"start\" and/or \"end\"")
+    if isinstance(rel, dict):
+        # per-end form: { start = ["bending", "torsion"], end = [...] }
+        _check_keys(rel, ("start", "end"), f"{item}.releases")
+        bend, tors = [False, False], [False, False]
+        for e, key in enumerate(("start", "end")):
+            if key in rel:
+                try:
+                    bend[e], tors[e] = parse_end_release(rel[key], dim)
+                except ValueError as exc:
+                    raise InputError(f"{item}.releases.{key}", str(exc)) from None
+        flags = (tuple(bend), tuple(tors))
+    elif not isinstance(rel, list) or any(r not in ("start", "end") for r in rel):
+        raise InputError(f"{item}.releases", "expected a list of \"start\" and/or \"end\", "
+                                             "or a table { start = [...], end = [...] } of "
+                                             "\"bending\" and/or \"torsion\"")
+    else:
+        flags = (("start" in rel, "end" in rel), (False, False))
     if rel and mtype != "beam":
         raise InputError(f"{item}.releases", "releases apply to beams only (a bar is pinned "
                                              "at both ends already)")
@@ -164,7 +181,7 @@ def _parse_member(mid: str, raw: Any, node_index: dict, sections: dict, material
     if "orientation" in raw and not np.any(orient != 0.0):
         raise InputError(f"{item}.orientation", "must be a non-zero vector in the member's "
                                                 "local x-y plane")
-    return idx, sections[sec], materials[mat], mtype == "beam", ("start" in rel, "end" in rel), orient
+    return idx, sections[sec], materials[mat], mtype == "beam", flags, orient
 
 
 def _parse_dofs(raw: Any, item: str, dim: int) -> list[int]:
@@ -237,14 +254,14 @@ def parse_model(data: dict, base_dir: Path | str = ".", source: str = "") -> Str
         members = _table(data, "members", required=True)
         if not members:
             raise InputError("[members]", "no members defined")
-        parsed = [_parse_member(str(k), v, node_index, sections, materials)
+        parsed = [_parse_member(str(k), v, node_index, sections, materials, dim)
                   for k, v in members.items()]
         member_ids = [str(k) for k in members]
         conn = np.array([p[0] for p in parsed], dtype=np.int64)
         secs = [p[1] for p in parsed]
         mats = [p[2] for p in parsed]
         beam = np.array([p[3] for p in parsed], dtype=bool)
-        rel = np.array([p[4] for p in parsed], dtype=bool).reshape(-1, 2)
+        rel = np.array([p[4] for p in parsed], dtype=bool).reshape(-1, 2, 2)
         orient = np.array([p[5] for p in parsed]).reshape(-1, 3)
         group_code = None
 
@@ -272,7 +289,8 @@ def parse_model(data: dict, base_dir: Path | str = ".", source: str = "") -> Str
     for a in (coords, conn, supports, loads, masses, beam, rel, orient):
         a.flags.writeable = False           # the reader's own arrays: the model need not copy
     s = Structure(name=name, dim=dim, node_ids=node_ids, coords=coords, member_ids=member_ids,
-                  connectivity=conn, sections=secs, materials=mats, is_beam=beam, releases=rel,
+                  connectivity=conn, sections=secs, materials=mats, is_beam=beam,
+                  releases=rel[:, 0], torsion_releases=rel[:, 1],
                   supports=supports, loads=loads, masses=masses, gravity=gravity,
                   orientation=orient, source=source, member_groups=group_code)
     # each table is read against the model holding the ones before it (actuators need the
@@ -414,7 +432,7 @@ def _mesh_geometry(mesh_name, base_dir, dim, data, sections, materials):
     used = np.unique(code)
     sec_of, mat_of = {}, {}
     beam_of = np.zeros(len(names), dtype=bool)
-    rel_of = np.zeros((len(names), 2), dtype=bool)
+    rel_of = np.zeros((len(names), 2, 2), dtype=bool)
     orient_of = np.full((len(names), 3), np.nan)
     for c in used:
         gname = names[c]
@@ -427,7 +445,7 @@ def _mesh_geometry(mesh_name, base_dir, dim, data, sections, materials):
         raw = dict(g)
         raw["nodes"] = ["0", "1"]
         _, sec_of[c], mat_of[c], beam_of[c], rel_of[c], orient_of[c] = _parse_member(
-            f"groups.{gname}", raw, {"0": 0, "1": 1}, sections, materials)
+            f"groups.{gname}", raw, {"0": 0, "1": 1}, sections, materials, dim)
     # per-member lists by one object-array gather (no Python loop over millions of cells)
     sec_obj = np.empty(len(names), dtype=object)
     mat_obj = np.empty(len(names), dtype=object)

@@ -159,7 +159,12 @@ def model_toml(structure: Structure, *, mesh: str | None = None, header: str = "
         if s.is_beam[i]:
             d["type"] = "beam"
             rel = [e for e, r in zip(("start", "end"), s.releases[i]) if r]
-            if rel:
+            if s.torsion_releases[i].any():          # per-end form: bending and/or torsion
+                d["releases"] = {e: [w for w, r in (("bending", s.releases[i, k]),
+                                                    ("torsion", s.torsion_releases[i, k])) if r]
+                                 for k, e in enumerate(("start", "end"))
+                                 if s.releases[i, k] or s.torsion_releases[i, k]}
+            elif rel:
                 d["releases"] = rel
         if s.orientation is not None and np.all(np.isfinite(s.orientation[i])):
             d["orientation"] = list(s.orientation[i])
@@ -220,6 +225,7 @@ def _mesh_groups(s: Structure) -> dict[str, np.ndarray]:
     sec, mat = codes(s.sections), codes(s.materials)
     key = ((sec * (mat.max(initial=0) + 1) + mat) * 2 + s.is_beam) * 4 \
         + s.releases[:, 0] * 2 + s.releases[:, 1]
+    key = key * 4 + s.torsion_releases[:, 0] * 2 + s.torsion_releases[:, 1]
     uniq, first, inverse = np.unique(key, return_index=True, return_inverse=True)
     if len(uniq) == 1:
         return {"default": np.arange(s.n_members)}

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import contextlib
 import json
+import math
 import os
 import shutil
 import tempfile
@@ -68,19 +69,33 @@ def atomic_dir(path: str | Path) -> Iterator[Path]:
         shutil.rmtree(tmp, ignore_errors=True)
 
 
-def _jsonable(obj: Any) -> Any:
+def plain(obj: Any) -> Any:
+    """A JSON-ready copy of ``obj``: dicts (keys as str), lists, str, int, bool, ``None`` and
+    finite floats; numpy arrays and scalars converted, tuples as lists, non-finite floats as
+    ``None`` (JSON has no NaN and a reader should see "no value").
+
+    The exact built-in types are tested first: a large document is mostly floats, lists and
+    dicts, and ``math.isfinite`` on a float is much cheaper than a numpy call.
+    """
+    t = type(obj)
+    if t is float:
+        return obj if math.isfinite(obj) else None
+    if t is dict:
+        return {k if type(k) is str else str(k): plain(v) for k, v in obj.items()}
+    if t is list or t is tuple:
+        return [plain(v) for v in obj]
+    if t is str or t is int or t is bool or obj is None:
+        return obj
     if isinstance(obj, dict):
-        return {str(k): _jsonable(v) for k, v in obj.items()}
+        return {str(k): plain(v) for k, v in obj.items()}
     if isinstance(obj, (list, tuple)):
-        return [_jsonable(v) for v in obj]
+        return [plain(v) for v in obj]
     if isinstance(obj, np.ndarray):
-        return _jsonable(obj.tolist())
+        return plain(obj.tolist())
     if isinstance(obj, (np.floating, float)):
         x = float(obj)
-        if not np.isfinite(x):
-            return None
-        return x
-    if isinstance(obj, (np.integer,)):
+        return x if math.isfinite(x) else None
+    if isinstance(obj, np.integer):
         return int(obj)
     if isinstance(obj, np.bool_):
         return bool(obj)
@@ -93,4 +108,4 @@ def write_json(path: str | Path, data: dict) -> None:
     Non-finite floats become ``null``: JSON has no NaN and a reader should see "no value".
     """
     with atomic_path(path) as tmp:
-        tmp.write_text(json.dumps(_jsonable(data), indent=1, allow_nan=False))
+        tmp.write_text(json.dumps(plain(data), indent=1, allow_nan=False))

@@ -18,7 +18,7 @@ What recomputing the paper's section 4 showed, and how it is implemented here:
   point; the worked numbers follow the incremental form ``d1 ← d1 − B11⁻¹ t``, implemented here.
 * Refreshing B11 at every iterate (Newton's method on eq. 1) converges in 4 iterations in the
   section-4 example where the frozen B11 of the paper needs 14 (see
-  :func:`trussfe.kinematics.reproductions.hortobagyi_section4`).  ``newton=False`` keeps the
+  :func:`trussfe.studies.hortobagyi.hortobagyi_section4`).  ``newton=False`` keeps the
   paper's frozen matrix.
 * Over-constrained assemblies (self-stress states, e.g. Bricard's octahedron) are corrected by
   least squares over all bars.

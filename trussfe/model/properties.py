@@ -71,6 +71,10 @@ def _spread(objs: Sequence[object], attrs: tuple[str, ...],
             groups: tuple[np.ndarray, np.ndarray]) -> list[np.ndarray]:
     first, inverse = groups
     table = np.array([[getattr(objs[i], a) for a in attrs] for i in first], dtype=float)
+    if len(first) == 1:
+        # one object for every member (the usual large model): a read-only broadcast view
+        # of its value, no memory per member
+        return [np.broadcast_to(v, inverse.shape) for v in table[0]]
     # one gather into an (attribute, member) array: every property a contiguous row
     rows = _readonly(np.take(np.ascontiguousarray(table.T), inverse, axis=1))
     return list(rows)

@@ -60,7 +60,10 @@ class Structure:
     is_beam : ndarray of bool, shape (m,)
         True for ``type = "beam"`` (rigid joints), False for pin-jointed bars.
     releases : ndarray of bool, shape (m, 2)
-        Moment releases of a beam at its start and end.
+        Bending-moment releases of a beam at its start and end.
+    torsion_releases : ndarray of bool, shape (m, 2)
+        Explicit torsion releases of a 3-D beam at its start and end (what a release frees:
+        :mod:`trussfe.mechanics.releases`).
     orientation : ndarray, shape (m, 3)
         For 3-D beams, a vector in the local x–y plane (``nan`` row: default orientation).
     supports : ndarray of bool, shape (n, ndof)
@@ -106,6 +109,7 @@ class Structure:
     masses: np.ndarray
     gravity: np.ndarray
     orientation: np.ndarray | None = None
+    torsion_releases: np.ndarray | None = None
     extensions: Mapping[str, Any] = field(default_factory=dict)
     source: str = ""
     member_groups: InitVar[np.ndarray | None] = None
@@ -137,6 +141,9 @@ class Structure:
                                                 "connectivity"))
         put(self, "is_beam", _frozen_array(self.is_beam, bool, (m,), "is_beam"))
         put(self, "releases", _frozen_array(self.releases, bool, (m, 2), "releases"))
+        tors = np.zeros((m, 2), dtype=bool) if self.torsion_releases is None \
+            else self.torsion_releases
+        put(self, "torsion_releases", _frozen_array(tors, bool, (m, 2), "torsion_releases"))
         orient = np.full((m, 3), np.nan) if self.orientation is None else self.orientation
         put(self, "orientation", _frozen_array(orient, float, (m, 3), "orientation"))
         put(self, "supports", _frozen_array(self.supports, bool, (n, ndof), "supports"))
@@ -148,6 +155,16 @@ class Structure:
             else member_properties(sections, materials, member_groups))
         put(self, "_node_index", None)
         put(self, "_member_index", None)
+
+    def __getstate__(self) -> dict[str, Any]:
+        state = {f.name: getattr(self, f.name) for f in fields(self)}
+        state["extensions"] = dict(self.extensions)       # a mappingproxy does not pickle
+        return state
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        # unpickled arrays come back writable: freeze them again (pickle, copy.deepcopy)
+        self.__dict__.update(state)
+        self._freeze(None)
 
     # ------------------------------------------------------------------ sizes and lookups
     @property
@@ -272,12 +289,20 @@ class Structure:
 
     def _derive(self, changes: dict[str, Any], properties: MemberProperties | None
                 ) -> "Structure":
-        names = {f.name for f in fields(self)}
-        unknown = sorted(set(changes) - names)
+        unknown = sorted(set(changes) - _FIELD_NAMES)
         if unknown:
             raise TypeError(f"Structure has no field {unknown[0]!r}")
         new = object.__new__(Structure)
         new.__dict__.update(self.__dict__)
+        if properties is not None and _NODE_DATA.issuperset(changes):
+            # node data only (a structure at each step of a motion): check what changed
+            shapes = {"coords": (self.n_nodes, self.dim), "masses": (self.n_nodes,),
+                      "loads": (self.n_nodes, self.ndof_node), "gravity": (self.dim,),
+                      "supports": (self.n_nodes, self.ndof_node)}
+            for key, value in changes.items():
+                object.__setattr__(new, key, _frozen_array(
+                    value, bool if key == "supports" else float, shapes[key], key))
+            return new
         for key, value in changes.items():
             object.__setattr__(new, key, value)
         new._freeze(properties)
@@ -322,8 +347,8 @@ class Structure:
         return self.variant(
             materials=self._per_member(self.materials, materials, "materials"))
 
-    def with_member_data(self, *, is_beam=None, releases=None, orientation=None
-                         ) -> "Structure":
+    def with_member_data(self, *, is_beam=None, releases=None, orientation=None,
+                         torsion_releases=None) -> "Structure":
         """The structure with other member types, moment releases or beam orientations.
 
         Each argument is either a whole array (shapes (m,), (m, 2), (m, 3)) or a mapping
@@ -332,7 +357,8 @@ class Structure:
         """
         changes = {}
         for key, value in (("is_beam", is_beam), ("releases", releases),
-                           ("orientation", orientation)):
+                           ("orientation", orientation),
+                           ("torsion_releases", torsion_releases)):
             if value is None:
                 continue
             if isinstance(value, Mapping):
@@ -381,6 +407,7 @@ imperfection=None, branch=None, max_displacement=None)}
             sections=tuple(self.sections[i] for i in idx),
             materials=tuple(self.materials[i] for i in idx),
             is_beam=self.is_beam[idx], releases=self.releases[idx],
+            torsion_releases=self.torsion_releases[idx],
             orientation=self.orientation[idx],
             extensions=subset_extensions(self.extensions, idx)), props)
 
@@ -482,6 +509,11 @@ def build_structure(
         releases=np.zeros((m, 2), dtype=bool), supports=sup, loads=ld, masses=ms, gravity=g,
         member_groups=np.zeros(m, dtype=np.int64),     # one section and material for all
     )
+
+
+_FIELD_NAMES = frozenset(f.name for f in fields(Structure))
+#: Fields whose change leaves every member datum and id as it is.
+_NODE_DATA = frozenset(("coords", "loads", "supports", "masses", "gravity"))
 
 
 def _frozen_ids(ids: Sequence[str]) -> Sequence[str]:

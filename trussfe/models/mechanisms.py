@@ -108,9 +108,31 @@ def hortobagyi_section4() -> MechanismEntry:
                   "Hortobágyi (1999) section 4: rho(B) = 2 at the folded state", "1:y", -0.1)
 
 
+#: Crank-rocker four-bar (Grashof: 1 + 3.2 ≤ 2.6 + 3): ground 3, crank 1, coupler 3.2, rocker 2.6.
+FOURBAR = {"ground": 3.0, "crank": 1.0, "coupler": 3.2, "rocker": 2.6}
+
+
+def fourbar_position(theta: np.ndarray, a=1.0, b=3.2, c=2.6, d=3.0) -> tuple[np.ndarray, ...]:
+    """Closed-form open-branch position of a four-bar: pin B and joint C for crank angle θ.
+
+    Ground pivots A = (0, 0) and D = (d, 0); C is the intersection of the circles (B, b) and
+    (D, c) on the left of B→D (above the ground for the open configuration).
+    """
+    th = np.asarray(theta, float)
+    B = a * np.stack([np.cos(th), np.sin(th)], axis=-1)
+    D = np.array([d, 0.0])
+    w = D - B
+    delta = np.linalg.norm(w, axis=-1)
+    u = w / delta[..., None]
+    along = (b * b - c * c + delta ** 2) / (2 * delta)
+    h = np.sqrt(b * b - along ** 2)
+    uperp = np.stack([-u[..., 1], u[..., 0]], axis=-1)
+    C = B + along[..., None] * u + h[..., None] * uperp
+    return B, C
+
+
 def fourbar(theta: float = 0.1) -> MechanismEntry:
     """Crank-rocker four-bar: ground 3, crank 1, coupler 3.2, rocker 2.6 (Grashof)."""
-    from trussfe.kinematics.reproductions import fourbar_position
     B, C = fourbar_position(theta)
     return _entry("mech_fourbar", "Four-bar linkage (crank-rocker)",
                   [[0, 0], B, C, [3, 0]], [[0, 1], [1, 2], [3, 2]], {0: "xy", 3: "xy"},
@@ -185,7 +207,7 @@ def section6_foldable(remove: int | None = None) -> MechanismEntry:
     removed bar (each with its mirror image y → −y).  With a ground bar removed the assembly is
     a flat four-bar (two branches) carrying two flat dyads, each of which opens both ways or not
     at all, so 0 or 8 lines: in a sweep of 150 random folded states of this graph
-    (:func:`trussfe.kinematics.reproductions.section6_direction_counts`, 598 counted
+    (:func:`trussfe.studies.hortobagyi.section6_direction_counts`, 598 counted
     cases) the count was 0 in 444 cases and 8 in 153 (once 7, a root the multi-start missed),
     never 2 — the paper's "two shapes, symmetrical pairs of these are the other two", read as
     all the unfolding shapes, cannot hold together with the other properties here.  The four

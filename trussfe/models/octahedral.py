@@ -31,6 +31,7 @@ import numpy as np
 from ..errors import AnalysisError, InputError
 from ..kinematics.assembly import solve_positions
 from ..model.structure import Structure
+from ..model.active import ActiveMember
 from .materials import ALUMINIUM, octahedral_tube
 
 #: Member id → (start node, end node), thesis numbering (Table 4.1 / Appendix D order).
@@ -55,6 +56,11 @@ SLEW_SHORT = 1.1079
 #: The text and the Appendix D load file state 46.0 N, which gives every value 3.4 % high.
 TABLE_LOAD = 44.498
 STATED_LOAD = 46.0
+#: Active members of Appendix C: base of 3 kg and 0.7 m, CG at 0.35 m from its pivot, inertia
+#: m·l²/3 about it; leadscrew tube 0.254 m.
+ACTIVE_BASE_MASS = 3.0
+ACTIVE_BASE_LENGTH = 0.7
+ACTIVE_TUBE_LENGTH = 0.254
 
 # Appendix D "Nodal Point Locations" (4 decimals): the starting guess of the solver.
 _APPENDIX_D = np.array([
@@ -129,7 +135,7 @@ def double_octahedron(active_lengths: Sequence[float] = (EQUILIBRIUM_LENGTH,) * 
                       top_load: float = STATED_LOAD, *, base_side: float = BASE_SIDE,
                       longeron: float = LONGERON, inner_diameter: float | None = None,
                       gravity: Sequence[float] | None = None, top_mass: float = 0.0,
-                      name: str | None = None) -> Structure:
+                      name: str | None = None, active_members: bool = False) -> Structure:
     """One double-octahedral bay at the position given by its three active lengths.
 
     Parameters
@@ -150,6 +156,10 @@ def double_octahedron(active_lengths: Sequence[float] = (EQUILIBRIUM_LENGTH,) * 
         Lumped mass at each top node, kg.
     name : str, optional
         Model name.
+    active_members : bool
+        If True, ``extensions["active_members"]`` holds M7/8, M9/10, M11/12's data
+        (:func:`active_member`, base at each member's start node), as the rigid-body model
+        reads them; the FE models do not use them.
 
     Returns
     -------
@@ -196,12 +206,29 @@ def double_octahedron(active_lengths: Sequence[float] = (EQUILIBRIUM_LENGTH,) * 
     if name is None:
         name = ("double-octahedral VGT bay, active lengths "
                 + " / ".join(f"{v:g}" for v in active) + " m")
+    ext = {"active_members": [active_member(i) for i in _ACTIVE_IDX]} if active_members else {}
     return Structure(
         name=name, dim=3, node_ids=list(_NODE_IDS), coords=coords,
         member_ids=list(_MEMBER_IDS), connectivity=_CONN.copy(), sections=[section] * m,
         materials=[ALUMINIUM] * m, is_beam=np.zeros(m, bool), releases=np.zeros((m, 2), bool),
         supports=supports, loads=loads, masses=masses,
-        gravity=np.zeros(3) if gravity is None else np.asarray(gravity, float).reshape(3))
+        gravity=np.zeros(3) if gravity is None else np.asarray(gravity, float).reshape(3),
+        extensions=ext)
+
+
+def active_member(member: int) -> ActiveMember:
+    """One active member of the bay (Appendix C) as member ``member``: base at its start node.
+
+    Examples
+    --------
+    >>> a = active_member(6)
+    >>> a.base_mass, a.base_cg, a.tube_length
+    (3.0, 0.35, 0.254)
+    """
+    return ActiveMember(member=int(member), base_mass=ACTIVE_BASE_MASS,
+                        base_length=ACTIVE_BASE_LENGTH, base_cg=ACTIVE_BASE_LENGTH / 2,
+                        base_inertia=ACTIVE_BASE_MASS * ACTIVE_BASE_LENGTH ** 2 / 3,
+                        tube_length=ACTIVE_TUBE_LENGTH)
 
 
 def _bays_local(act: np.ndarray, bay0: np.ndarray, base_side: float,
@@ -288,7 +315,8 @@ def double_octahedral_chain(n_bays: int, active_lengths: np.ndarray | None = Non
                             tip_load: float = STATED_LOAD, *, base_side: float = BASE_SIDE,
                             longeron: float = LONGERON, inner_diameter: float | None = None,
                             gravity: Sequence[float] | None = None,
-                            name: str | None = None) -> Structure:
+                            name: str | None = None, active_members: bool = False
+                            ) -> Structure:
     """``n_bays`` double-octahedral bays stacked, each bay's top plane the next one's base
     (Lacy ch. 6).
 
@@ -303,8 +331,8 @@ def double_octahedral_chain(n_bays: int, active_lengths: np.ndarray | None = Non
         once), and the bays are stacked by composing the rigid motions base → top up the chain.
     tip_load : float
         Force in +z on each top node of the last bay, N.
-    base_side, longeron, inner_diameter, gravity, name
-        As :func:`double_octahedron`.
+    base_side, longeron, inner_diameter, gravity, name, active_members
+        As :func:`double_octahedron` (every bay's M7/8, M9/10, M11/12 are active).
 
     Returns
     -------
@@ -359,10 +387,14 @@ def double_octahedral_chain(n_bays: int, active_lengths: np.ndarray | None = Non
     loads[n - 3:, 2] = tip_load
     if name is None:
         name = f"chain of {n_bays} double-octahedral bays"
+    ext = {}
+    if active_members:
+        idx = (18 * k[:, None] + _ACTIVE_IDX[None, :]).ravel()
+        ext["active_members"] = [active_member(i) for i in idx]
     return Structure(
         name=name, dim=3, node_ids=node_ids, coords=coords, member_ids=member_ids,
         connectivity=conn, sections=[section] * m, materials=[ALUMINIUM] * m,
         is_beam=np.zeros(m, bool), releases=np.zeros((m, 2), bool), supports=supports,
         loads=loads, masses=np.zeros(n),
         gravity=np.zeros(3) if gravity is None else np.asarray(gravity, float).reshape(3),
-        member_groups=np.zeros(m, dtype=np.int64))     # one tube and one material
+        extensions=ext, member_groups=np.zeros(m, dtype=np.int64))   # one tube, one material

@@ -26,6 +26,7 @@ import numpy as np
 from ..errors import InputError
 from ..kinematics.assembly import solve_positions
 from ..model.structure import Structure, build_structure
+from ..model.active import ActiveMember
 from .materials import ALUMINIUM, triangular_tube
 
 #: Table 3.1 dimensions, m.
@@ -33,12 +34,29 @@ FOLLOWER_LENGTH = 2.0      # L1
 LEADSCREW_LENGTH = 2.0     # L2
 ACTIVE_MIN_LENGTH = 0.5    # L3min
 GROUND_LENGTH = 2.0        # L4
+ACTIVE_MAX_LENGTH = 2.1    # L3max, the active base's overall length
 GRAVITY = 9.81             # m/s², the value of Appendix A
+#: Active base of Appendix A: 2.4 kg (``m3``), CG at mid-length, inertia about O2
+#: ``io2 = m3·l3max²/3``.
+ACTIVE_BASE_MASS = 2.4
+
+
+def active_member(member: int) -> ActiveMember:
+    """The triangular truss' active member (Table 3.1, Appendix A) as member ``member``.
+
+    Base of 2.4 kg and 2.1 m pinned at O2 (the member's start node), centre of gravity at
+    1.05 m, inertia m·l²/3 about O2; leadscrew tube of 2.0 m pinned at B; stroke 2.5–4.1 m.
+    """
+    return ActiveMember(
+        member=member, base_mass=ACTIVE_BASE_MASS, base_length=ACTIVE_MAX_LENGTH,
+        base_cg=ACTIVE_MAX_LENGTH / 2, base_inertia=ACTIVE_BASE_MASS * ACTIVE_MAX_LENGTH ** 2 / 3,
+        tube_length=LEADSCREW_LENGTH, min_length=ACTIVE_MIN_LENGTH + LEADSCREW_LENGTH,
+        max_length=ACTIVE_MAX_LENGTH + LEADSCREW_LENGTH)
 
 
 def triangular_truss(x: float = 0.0, lumped_mass: float = 10.0, member_weight: bool = False,
                      load: Sequence[float] | None = None, *,
-                     split_active: bool = False) -> Structure:
+                     split_active: bool = False, active_members: bool = False) -> Structure:
     """Lacy's triangular truss with the active member extended by ``x``.
 
     Parameters
@@ -59,6 +77,10 @@ def triangular_truss(x: float = 0.0, lumped_mass: float = 10.0, member_weight: b
         If True the active member is two beams, ``active_base`` O2–C and ``leadscrew_tube``
         C–B, rigidly joined at the cantilever connection C (0.5 + x from O2) and pinned at O2
         and B — the Appendix B MSC/PAL model (its node 2).  If False (default) it is one bar.
+    active_members : bool
+        If True (one-bar model only), ``extensions["active_members"]`` holds the active
+        member's data (:func:`active_member`: base at O2, tube at B), as the rigid-body model
+        reads them; the static FE model does not use them.
 
     Returns
     -------
@@ -99,11 +121,15 @@ def triangular_truss(x: float = 0.0, lumped_mass: float = 10.0, member_weight: b
                                                   f"{load!r}")
     gravity = [0.0, -GRAVITY] if member_weight else None
     if not split_active:
-        return build_structure(
+        s = build_structure(
             pos, conn, section=triangular_tube(), material=ALUMINIUM,
             supports={0: "xy", 2: "xy"}, loads={1: f_b}, masses={1: lumped_mass},
             gravity=gravity, name=f"Lacy triangular truss, x = {x:g} m",
             node_ids=["O2", "B", "O1"], member_ids=["follower", "active"])
+        return s.with_extensions(active_members=[active_member(1)]) if active_members else s
+    if active_members:
+        raise InputError("triangular_truss.active_members", "the active member's data belong "
+                         "to the one-bar model (split_active=False)")
     unit = pos[1] / np.linalg.norm(pos[1])
     c = unit * (ACTIVE_MIN_LENGTH + x)
     coords = np.vstack([pos[0], c, pos[1], pos[2]])

@@ -54,8 +54,8 @@ def run_postcritical(structure: Structure, **options) -> PathResult:
     opts.update(given)
     laws = structure.extensions.get("failure") or FailureLaws.none(structure.n_members)
     if np.any(structure.gravity != 0):
-        log.warning("%s: gravity is not part of the post-critical load pattern; only [loads] "
-                    "is scaled by the load factor", structure.source or structure.name)
+        log.info("%s: gravity acts as a constant dead load; [loads] is scaled by the load "
+                 "factor", structure.source or structure.name)
     model = NonlinearModel(structure, bar_model=opts.pop("bar_model", "truss"),
                            subdivisions=opts.pop("subdivisions", 8), laws=laws)
     imperfection = opts.pop("imperfection", 0.0)
@@ -70,6 +70,52 @@ def run_postcritical(structure: Structure, **options) -> PathResult:
     if len(result.path) < 2 and result.termination.startswith("path cannot"):
         raise AnalysisError(structure.source or structure.name, result.termination)
     return result
+
+
+def unmodelled_buckling(result: PathResult) -> tuple[int, float, float] | None:
+    """The first bar to pass its Euler load on a path that does not model member buckling.
+
+    Without a ``[failure]`` table a bar modelled as a truss element stays straight in
+    compression whatever the force; this finds, along the path, the first state where a
+    live bar's compression exceeds its pinned–pinned Euler load
+    (:func:`~trussfe.fem.buckling.euler_load`, Lacy eq. 2.26).
+
+    Returns
+    -------
+    tuple or None
+        ``(member, load factor, Euler load N)``, or None when no bar passes it, when the model
+        has failure laws, or when its bars have no second moment of area.
+    """
+    from ..fem.buckling import euler_load
+    m = result.model
+    s = m.structure
+    if "failure" in s.extensions or m.t_member.size == 0 or not result.path:
+        return None
+    with np.errstate(invalid="ignore"):
+        Pe = euler_load(s)[m.t_member]
+    ok = np.isfinite(Pe) & (Pe > 0)
+    if not ok.any():
+        return None
+    N = np.array([p.forces[m.t_member] for p in result.path])          # (point, bar)
+    over = (N < -Pe[None, :]) & ok[None, :]
+    if not over.any():
+        return None
+    point = int(np.flatnonzero(over.any(axis=1))[0])
+    bar = int(np.argmax(np.where(over[point], -N[point] / np.where(ok, Pe, 1.0), -np.inf)))
+    return int(m.t_member[bar]), float(result.path[point].load_factor), float(Pe[bar])
+
+
+def monitor_label(model, dof: int) -> dict:
+    """``{"node": id, "axis": "x" … "z" or "rx" … "rz"}`` of a monitored DOF (a joint's
+    translation, or a joint rotation when the loads are moments only)."""
+    s = model.structure
+    ids = s.node_ids
+    if dof < s.n_nodes * s.dim:
+        node, axis = divmod(dof, s.dim)
+        return {"node": ids[node], "axis": AXES[axis]}
+    slot, comp = divmod(dof - model.n_points * s.dim, model.rdof)
+    node = int(np.flatnonzero(model.joint_slot == slot)[0])
+    return {"node": ids[node], "axis": "rz" if s.dim == 2 else "r" + AXES[comp]}
 
 
 def result_document(result: PathResult) -> dict:
@@ -97,11 +143,11 @@ def result_document(result: PathResult) -> dict:
             ev["strain"] = float(e.force)
             ev["law_limit"] = float(e.threshold)
         events.append(ev)
-    node, axis = divmod(result.monitor, s.dim)
     doc = {"units": "SI", "command": "postcritical", "model": s.name,
-           "monitor": {"node": ids[node], "axis": AXES[axis]},
+           "monitor": monitor_label(result.model, result.monitor),
            "path": path, "events": events, "termination": result.termination,
-           "max_load_factor": float(max(p.load_factor for p in result.path))}
+           "max_load_factor": float(max(p.load_factor for p in result.path)),
+           "gravity_dead_load": bool(np.any(result.model.dead != 0))}
     mot = result.mechanism
     if mot is not None:
         alive = result.path[-1].alive

@@ -24,12 +24,17 @@ In 2-D a rotation slot holds one angle (updated additively).  In 3-D a slot is e
   (:func:`~trussfe.nonlinear.beam3d.compose`);
 * **additive** (where a rotation component must be held): it stores ``φ = Qᵀψ`` and its DOFs
   are the increments of ``φ`` (``δw = Tₛ(ψ) Q δφ``), so that holding a component of ``φ`` is
-  a holonomic constraint.  These are the start ends of members released at both ends (a
-  pinned-beam bar would spin freely about its own axis, so the axial component of its start
-  rotation vector is held — the nonlinear counterpart of the linear FE's twist-free pinned
-  beam) and joints with some but not all rotations supported.
+  a holonomic constraint.  These are the start ends of members free to twist at both ends
+  (the axial component of the start rotation vector is held, so the member cannot spin) and
+  joints with some but not all rotations supported;
+* **relative** (an additive slot of a member end whose twist — or, under a torsion release
+  of an end rigid in bending, whose bending rotations — are the joint's): it stores the
+  end's rotation relative to its joint's, ``R_end = R_joint exp(S(Qφ))``, with the
+  components that are the joint's held at zero.
 
-In 3-D a released member end is a spherical hinge (all three end moments free).
+What a release frees is :mod:`trussfe.mechanics.releases`, the same definition as the linear
+discretisation's: a released end transmits no bending moment, and torsion only where the
+joint has rotational stiffness from a rigid beam end or a rotational support.
 """
 from __future__ import annotations
 
@@ -40,6 +45,7 @@ import numpy as np
 from ..errors import InputError
 from ..model.postcritical import BAR_MODELS
 from ..model.structure import Structure
+from ..mechanics.releases import HELD, JOINT, OWN, end_rotations
 from .beam3d import (beam3d_matrices, compose, expm_so3, reference_frames,
                      tangent_operator, tangent_operator_derivative)
 from .elements import (beam2d_local, beam2d_matrices, truss_kinematics,
@@ -117,12 +123,15 @@ class NonlinearModel:
         # ---- beam elements: k per beam member, points inside, rotation slots
         b_mem = np.flatnonzero(beam_members)
         nb = b_mem.size
-        rigid_end = np.zeros((m, 2), dtype=bool)
-        rigid_end[s.is_beam] = ~s.releases[s.is_beam]
+        # what each end rotation is: the meaning shared with the linear discretisation
+        released = np.where(s.is_beam[:, None], s.releases, True) & beam_members[:, None]
+        axis = s.member_vectors() / s.lengths()[:, None]
+        er = end_rotations(dim, conn, axis, beam_members, s.is_beam & (dim == 3), released,
+                           s.torsion_releases & s.is_beam[:, None], s.supports[:, dim:])
+        self.end_rotations = er
+        rigid_end = er.shared & beam_members[:, None]
         self.rigid_end = rigid_end
-        joint_has_rot = np.zeros(n, dtype=bool)
-        np.logical_or.at(joint_has_rot, conn[rigid_end[:, 0], 0], True)
-        np.logical_or.at(joint_has_rot, conn[rigid_end[:, 1], 1], True)
+        joint_has_rot = er.joint_rotation
         joint_slot = np.full(n, -1)
         joint_slot[joint_has_rot] = np.arange(joint_has_rot.sum())
         nslot = int(joint_has_rot.sum())
@@ -133,7 +142,8 @@ class NonlinearModel:
         X_inner = (Xa[:, None, :] * (1 - t) + Xb[:, None, :] * t).reshape(-1, dim)
         chain = np.concatenate([conn[b_mem, :1], inner_pts, conn[b_mem, 1:]], axis=1)
         slots = np.empty((nb, k + 1), dtype=np.int64)
-        # start and end slots: the joint's when rigid, else a slot of the member end
+        # start and end slots: the joint's when every end rotation is the joint's, else a
+        # slot of the member end
         for col, end in ((0, 0), (k, 1)):
             rigid = rigid_end[b_mem, end]
             slots[rigid, col] = joint_slot[conn[b_mem[rigid], end]]
@@ -174,14 +184,15 @@ class NonlinearModel:
         rot0 = self.n_points * dim
         #: 3-D slots parametrised additively by their rotation vector in the slot basis
         self.slot_additive = np.zeros(nslot, dtype=bool)
-        twist_free = np.zeros(0, dtype=np.int64)
+        #: 3-D slots whose rotation is relative to a joint's (``-1``: absolute); see _beam3d
+        self.slot_parent = np.full(nslot, -1)
+        held = np.zeros(0, dtype=np.int64)
         if nb and dim == 3:
             sdofs = lambda sl: rot0 + sl[:, None] * 3 + np.arange(3)
-            bd = np.empty((len(self.b_conn), 12), dtype=np.int64)
+            bd = np.empty((len(self.b_conn), 18), dtype=np.int64)
             bd[:, 0:3], bd[:, 6:9] = tdofs(self.b_conn)[:, :3], tdofs(self.b_conn)[:, 3:]
             bd[:, 3:6] = sdofs(self.b_slot[:, 0])
             bd[:, 9:12] = sdofs(self.b_slot[:, 1])
-            self.b_dofs = bd
             # spin bases: global axes at joints, the member's axes at its own points
             member_axes = reference_frames(s.coords, conn[b_mem], s.orientation[b_mem])
             Q = np.broadcast_to(np.eye(3), (nslot, 3, 3)).copy()
@@ -191,9 +202,35 @@ class NonlinearModel:
             has = owned >= 0
             Q[owned[has]] = np.repeat(member_axes, k + 1, axis=0).reshape(nb, k + 1, 3, 3)[has]
             self.slot_basis = Q
-            both = ~rigid_end[b_mem, 0] & ~rigid_end[b_mem, 1]
-            self.slot_additive[slots[both, 0]] = True
-            twist_free = rot0 + 3 * slots[both, 0]          # rotation about the member axis
+            # own end slots: components that are the joint's make the slot relative to the
+            # joint's slot (those components of the relative rotation held at zero); held
+            # components make it additive with them fixed
+            held_list = []
+            for col, end in ((0, 0), (k, 1)):
+                own = ~rigid_end[b_mem, end]
+                st = er.state[b_mem[own], end].copy()                 # (own end, 3)
+                if self.bar_model == "pinned-beam" and end == 1:
+                    # a pinned-beam bar has no torsion: its twist is held at its start only
+                    st[~s.is_beam[b_mem[own]], 0] = OWN
+                sl = slots[own, col]
+                rel = np.any(st == JOINT, axis=1)
+                self.slot_parent[sl[rel]] = joint_slot[conn[b_mem[own][rel], end]]
+                fix = (st == JOINT) | (st == HELD)
+                self.slot_additive[sl[fix.any(axis=1)]] = True
+                e, c = np.nonzero(fix)
+                held_list.append(rot0 + 3 * sl[e] + c)
+            held = np.concatenate(held_list)
+            # parent slot DOFs of every element end (own DOFs again, unused, where none);
+            # only models with relative slots carry them
+            if not np.any(self.slot_parent >= 0):
+                bd = bd[:, :12]
+            for end, (own_cols, cols) in enumerate(((slice(3, 6), slice(12, 15)),
+                                                    (slice(9, 12), slice(15, 18)))):
+                par = self.slot_parent[self.b_slot[:, end]]
+                if bd.shape[1] == 18:
+                    bd[:, cols] = np.where(par[:, None] >= 0, sdofs(np.maximum(par, 0)),
+                                           bd[:, own_cols])
+            self.b_dofs = bd
         elif nb:
             bd = np.empty((len(self.b_conn), 6), dtype=np.int64)
             bd[:, [0, 1, 3, 4]] = tdofs(self.b_conn)
@@ -201,14 +238,14 @@ class NonlinearModel:
             bd[:, 5] = self.n_points * dim + self.b_slot[:, 1]
             self.b_dofs = bd
         else:
-            self.b_dofs = np.zeros((0, 6 if dim == 2 else 12), dtype=np.int64)
+            self.b_dofs = np.zeros((0, 6 if dim == 2 else 18), dtype=np.int64)
 
         # ---- supports, loads
         free = np.ones(self.ndof, dtype=bool)
         free[: n * dim] = ~s.supports[:, :dim].ravel()
         if dim == 2:
-            rz = s.supports[:, 2] & joint_has_rot
-            free[n * dim * 0 + self.n_points * dim + joint_slot[rz]] = False
+            rz = er.joint_rotation_held[:, 0]
+            free[self.n_points * dim + joint_slot[rz]] = False
         # joints that no member touches carry nothing: fixed, unless loaded
         touched = np.zeros(n, dtype=bool)
         touched[conn.ravel()] = True
@@ -221,12 +258,12 @@ class NonlinearModel:
         self.free = free
         if dim == 3:
             # a partly fixed joint rotation holds components of its rotation vector: additive
-            rs = s.supports[:, 3:6] & joint_has_rot[:, None]
+            rs = er.joint_rotation_held
             part = rs.any(axis=1) & ~rs.all(axis=1)
             self.slot_additive[joint_slot[part]] = True
             jn, comp = np.nonzero(rs)
             free[self.n_points * dim + 3 * joint_slot[jn] + comp] = False
-            free[twist_free] = False
+            free[held] = False
         f = np.zeros(self.ndof)
         f[: n * dim] = s.loads[:, :dim].ravel()
         moments = s.loads[:, dim:]
@@ -246,12 +283,36 @@ class NonlinearModel:
             has = np.flatnonzero(moments[:, 0] != 0)
             f[self.n_points * dim + joint_slot[has]] = moments[has, 0]
         self.load = f
+        self.dead = self._dead_load()
         self.alive = np.ones(m, dtype=bool)
         self.plastic = np.zeros(len(t_mem))
         #: (cause, truss element): events already reported (each is reported once)
         self.silenced = np.zeros((3, len(t_mem)), dtype=bool)
 
     # ------------------------------------------------------------------ helpers
+    def _dead_load(self) -> np.ndarray:
+        """Constant dead load of gravity (``[model] gravity``), shape (dof,): the weight of
+        every element lumped half at each of its ends (truss elements: the member's ends;
+        beam elements: their end points along the member) and the weight of the nodal
+        masses.  Zero without gravity."""
+        s = self.structure
+        d = self.dim
+        out = np.zeros(self.ndof)
+        g = np.asarray(s.gravity, dtype=float)
+        if not np.any(g):
+            return out
+        half_t = 0.5 * (s.density * s.area)[self.t_member] * self.t_len0
+        pts = [self.t_conn.ravel()]
+        w = [np.repeat(half_t, 2)]
+        if len(self.b_conn):
+            L0 = np.linalg.norm(self.X[self.b_conn[:, 1]] - self.X[self.b_conn[:, 0]], axis=1)
+            pts.append(self.b_conn.ravel())
+            w.append(np.repeat(0.5 * (s.density * s.area)[self.b_member] * L0, 2))
+        mass = np.bincount(np.concatenate(pts), np.concatenate(w), minlength=self.n_points)
+        mass[: s.n_nodes] += s.masses
+        out[: self.n_points * d] = (mass[:, None] * g[None, :]).ravel()
+        return out
+
     def positions(self, u: np.ndarray) -> np.ndarray:
         """Current point positions, shape (point, dim)."""
         return self.X + u[: self.n_points * self.dim].reshape(-1, self.dim)
@@ -356,18 +417,74 @@ class NonlinearModel:
         return out
 
     def _beam3d(self, x, psi, tangent=True, N_override=None):
-        """Element forces and tangents of the 3-D beams in the slot bases (DOF order of
-        ``b_dofs``)."""
+        """Element forces and tangents of the 3-D beams in the slot DOFs (DOF order of
+        ``b_dofs``: translations and own slot of each end, then each end's parent slot)."""
         R = expm_so3(psi)                                            # (slot, 3, 3)
+        rel = np.flatnonzero(self.slot_parent >= 0)
+        if rel.size == 0:
+            return self._beam3d_absolute(x, psi, R, tangent, N_override)
+        par = self.slot_parent[rel]
+        if rel.size:
+            # a relative slot stores the rotation of the member end relative to its joint,
+            # in the member's reference axes: R_end = R_joint exp(S(Q φ))
+            R[rel] = R[par] @ R[rel]
         conn = self.b_conn
         R0 = reference_frames(self.X, conn, self.b_orientation)
         L0 = np.linalg.norm(self.X[conn[:, 1]] - self.X[conn[:, 0]], axis=1)
         f, k, N, M = beam3d_matrices(x, conn, R[self.b_slot[:, 0]], R[self.b_slot[:, 1]], R0,
                                      L0, self.b_EA, self.b_GJ, self.b_EI, self.b_EIz,
                                      N_override=N_override, tangent=tangent)
-        # DOFs of the slots: spins δw = Q δφ (multiplicative slots) or rotation-vector
-        # increments δw = Tₛ(ψ) Q δφ (additive slots); f_φ = Cᵀ f_w, k_φ = Cᵀ k C (+ the
-        # derivative of Tₛᵀ at fixed f_w on the additive slots' diagonal blocks)
+        # DOFs of the slots: spins δw = C δφ with C = Q (multiplicative slots), Tₛ(ψ) Q
+        # (additive slots) or, for a relative slot, δw = C_joint δφ_joint + R_joint Tₛ(v) Q δφ
+        # (v = Qφ); f_φ = Cᵀ f_w, k_φ = Cᵀ k C, plus the derivative of Cᵀ at fixed f_w on the
+        # additive slots' diagonal blocks
+        C_all = np.broadcast_to(np.eye(3), (self.n_rot, 3, 3)).copy() \
+            if self.n_rot else np.zeros((0, 3, 3))
+        C_all[:] = self.slot_basis
+        add = self.slot_additive
+        if add.any():
+            C_all[add] = tangent_operator(psi[add]) @ self.slot_basis[add]
+        C_par = C_all[par].copy() if rel.size else None
+        if rel.size:
+            C_all[rel] = R[par] @ C_all[rel]
+        ne = len(conn)
+        B = np.zeros((ne, 12, 18))
+        B[:, 0:3, 0:3] = np.eye(3)
+        B[:, 6:9, 6:9] = np.eye(3)
+        extra = np.zeros((ne, 18, 18)) if k is not None else None
+        for sl, end, pc in ((slice(3, 6), 0, slice(12, 15)), (slice(9, 12), 1, slice(15, 18))):
+            slot = self.b_slot[:, end]
+            B[:, sl, sl] = C_all[slot]
+            p = self.slot_parent[slot]
+            e_rel = np.flatnonzero(p >= 0)
+            if e_rel.size:
+                B[e_rel, sl, pc] = C_par[np.searchsorted(rel, slot[e_rel])]
+            e_add = np.flatnonzero(add[slot])
+            if k is not None and e_add.size:
+                sa = slot[e_add]
+                m = f[e_add, sl]
+                rr = np.flatnonzero(self.slot_parent[sa] >= 0)
+                if rr.size:                      # relative: the moment in the joint's frame
+                    m = m.copy()
+                    m[rr] = np.einsum("eji,ej->ei", R[self.slot_parent[sa[rr]]], m[rr])
+                Q = self.slot_basis[sa]
+                dT = tangent_operator_derivative(psi[sa], m)
+                r = np.arange(sl.start, sl.stop)
+                extra[e_add[:, None, None], r[None, :, None], r[None, None, :]] += \
+                    np.transpose(Q, (0, 2, 1)) @ dT @ Q
+        f = np.einsum("eji,ej->ei", B, f)
+        if k is not None:
+            k = np.transpose(B, (0, 2, 1)) @ k @ B + extra
+        return f, k, N, M
+
+    def _beam3d_absolute(self, x, psi, R, tangent, N_override):
+        """:meth:`_beam3d` of a model without relative slots (12 DOFs per element)."""
+        conn = self.b_conn
+        R0 = reference_frames(self.X, conn, self.b_orientation)
+        L0 = np.linalg.norm(self.X[conn[:, 1]] - self.X[conn[:, 0]], axis=1)
+        f, k, N, M = beam3d_matrices(x, conn, R[self.b_slot[:, 0]], R[self.b_slot[:, 1]], R0,
+                                     L0, self.b_EA, self.b_GJ, self.b_EI, self.b_EIz,
+                                     N_override=N_override, tangent=tangent)
         for sl, end in ((slice(3, 6), 0), (slice(9, 12), 1)):
             slot = self.b_slot[:, end]
             C = self.slot_basis[slot].copy()                         # (el, 3, 3)

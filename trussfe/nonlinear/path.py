@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..errors import InputError, MechanismError
+from ..errors import AnalysisError, InputError, MechanismError
 from ..linalg import SingularMatrixError, factor
 from ..linalg.eigen import nearest_zero_mode
 from ..model.postcritical import CONTROLS
@@ -47,6 +47,13 @@ _BIFURCATION_RATIO = 1e-3
 _JUMP_FACTOR = 5.0
 #: Newton iterations per step that the step-size control aims at.
 _TARGET_ITERATIONS = 6.0
+#: Largest growth of the step from one step to the next.
+_MAX_GROWTH = 2.0
+#: Default largest arc-length step, as a multiple of the first one.
+_MAX_STEP_RATIO = 8.0
+#: A located critical point's eigenvalue nearest zero, relative to the unloaded tangent's,
+#: above which the tangent there is not singular (the inertia changed across a jump).
+_SINGULAR_RATIO = 1e-3
 
 
 @dataclass
@@ -121,6 +128,9 @@ class _Stepper:
         self.free = np.flatnonzero(model.free)
         self.f = model.load[self.free]
         self.fn = np.linalg.norm(self.f)
+        #: constant dead load (gravity) under the scaled pattern λ f
+        self.fd = model.dead[self.free]
+        self.fdn = np.linalg.norm(self.fd)
         self.c = int(np.searchsorted(self.free, monitor)) if monitor >= 0 else -1
         self.tol = tol
         self.max_iter = max_iter
@@ -130,6 +140,14 @@ class _Stepper:
         self.dsign = 1.0
         #: free DOFs up to which every Newton iteration refactorises the tangent
         self.full_newton_size = 2000
+
+    def unloaded_eigenvalue(self) -> float:
+        """|eigenvalue nearest zero| of the tangent of the unloaded structure (the scale of
+        "singular" for the critical points), computed once."""
+        if not hasattr(self, "_w0"):
+            K0 = self.m.reference_tangent()[self.free][:, self.free]
+            self._w0 = abs(nearest_zero_mode(K0)[0])
+        return self._w0
 
     def full(self, uf):
         u = np.zeros(self.m.ndof)
@@ -149,31 +167,41 @@ class _Stepper:
 
     def step(self, uf0, lam0, fac0, ds, direction, du_prev, mode=None, fac_iter=None,
              refactor_ratio=0.5):
-        """One step of size ``ds`` from a converged state.
+        """One step of size ``ds`` from a converged state: :meth:`predictor`, then
+        :meth:`corrector`.
 
         ``fac0`` is the tangent factor at the start (predictor); ``fac_iter``, if given, a
         factor nearer the expected solution for the modified-Newton corrections, which
-        refactorise when the residual falls by less than ``refactor_ratio``.  Returns
+        refactorise when the residual falls by less than ``refactor_ratio``.  Under arc-length
+        control ``direction`` is the sign of the load increment (or, in ``"branch"`` mode, the
+        direction vector); without it the predictor continues ``du_prev``.  Returns
         ``(uf, lam, res, iterations, fresh factor or None)`` or None.
         """
         mode = mode or self.control
-        f = self.f
+        pred = self.predictor(fac0, ds, direction, du_prev, mode)
+        if pred is None:
+            return None
+        du, dlam, ut, mode = pred
+        return self.corrector(uf0, lam0, fac0, du, dlam, ut, mode, fac_iter, refactor_ratio)
+
+    def predictor(self, fac0, ds, direction, du_prev, mode):
+        """Tangent predictor ``(Δu, Δλ, u_t, mode)`` of a step of size ``ds``, or None.
+
+        ``u_t = K⁻¹ f`` is the tangent displacement per unit load factor.  Load control
+        prescribes Δλ, displacement control the monitored Δu, arc-length ``‖Δu‖ = ds`` with the
+        sign of Δλ given (``direction``) or continuing the previous increment ``du_prev``."""
         try:
-            ut = fac0.solve(f, refine=False)
+            ut = fac0.solve(self.f)
         except SingularMatrixError:
             return None
         if mode == "load":
             dlam = ds
-            du = dlam * ut
         elif mode == "displacement":
             if abs(ut[self.c]) < 1e-300:
                 return None
             dlam = ds * self.dsign / ut[self.c]
-            du = dlam * ut
         elif mode == "branch":
-            du = ds * direction
-            dlam = 0.0
-            mode = "arc-length"
+            return ds * direction, 0.0, ut, "arc-length"
         else:
             sign = 1.0
             if du_prev is not None:
@@ -181,7 +209,14 @@ class _Stepper:
             elif direction is not None:
                 sign = float(direction)
             dlam = sign * ds / np.linalg.norm(ut)
-            du = dlam * ut
+        return dlam * ut, dlam, ut, mode
+
+    def corrector(self, uf0, lam0, fac0, du, dlam, ut, mode, fac_iter=None,
+                  refactor_ratio=0.5):
+        """Newton corrections of a predicted increment ``(du, dlam)`` to equilibrium on the
+        step's constraint (load: fixed λ; displacement: fixed monitored DOF; arc-length:
+        Crisfield's cylinder ``‖Δu‖ = ‖du‖``).  Returns the :meth:`step` tuple or None."""
+        f = self.f
         ds_arc = np.linalg.norm(du)
         # load and displacement control may converge to a remote equilibrium beyond a limit
         # point (a dynamic snap); such a step is refused (and cut) rather than followed
@@ -198,8 +233,8 @@ class _Stepper:
         for it in range(1, (self.max_iter if refactor_ratio <= 0.5 else 2 * self.max_iter) + 1):
             lam = lam0 + dlam
             res, fint, K = self.eval(uf, tangent=not modified)
-            R = fint - lam * f
-            scale = self.fn * max(abs(lam), self.lam_unit)
+            R = fint - lam * f - self.fd
+            scale = self.fn * max(abs(lam), self.lam_unit) + self.fdn
             if not np.all(np.isfinite(R)):
                 return None
             rn = np.linalg.norm(R)
@@ -246,6 +281,104 @@ class _Stepper:
         return None
 
 
+def _dead_load_state(st, max_cuts: int) -> np.ndarray:
+    """The equilibrium under the dead load alone (λ = 0), where the path starts: the dead
+    load applied in load-controlled increments (one, halved while Newton fails)."""
+    ramp = _Stepper(st.m, "load", -1, st.tol, st.max_iter)
+    ramp.f, ramp.fn = st.fd, st.fdn
+    ramp.fd, ramp.fdn = np.zeros_like(st.fd), 0.0
+    uf, t, dt = np.zeros(st.free.size), 0.0, 1.0
+    while t < 1.0:
+        new = None
+        try:
+            fac = factor(ramp.eval(uf)[2], "symmetric")
+            new = ramp.step(uf, t, fac, min(dt, 1.0 - t), None, None, "load")
+        except SingularMatrixError:
+            pass
+        if new is None:
+            dt *= 0.5
+            if dt < 0.5 ** max_cuts:
+                raise AnalysisError(st.m.structure.source or st.m.structure.name,
+                                    "no equilibrium under the dead load (gravity) alone: the "
+                                    "structure cannot carry its own weight")
+            continue
+        uf, t = new[0], new[1]
+    return uf
+
+
+def _inertia(fac) -> int | None:
+    """Negative pivots of a factor, or None when unknown (no factor, or a factorisation that
+    had to pivot off the diagonal and did not count them)."""
+    if fac is None:
+        return None
+    neg = getattr(fac, "negative", None)
+    if neg is None:
+        neg = getattr(fac, "inertia", None)
+    return None if neg is None or neg < 0 else int(neg)
+
+
+def _crossed(neg0: int | None, neg1: int | None) -> bool:
+    """A change of the inertia between two states (never claimed when either is unknown)."""
+    return neg0 is not None and neg1 is not None and neg0 != neg1
+
+
+def _next_step(ds: float, iterations: int, ds_max: float, control: str) -> float:
+    """Step control: the next increment from the last one and the Newton iterations it took
+    (aiming at :data:`_TARGET_ITERATIONS`), growing by at most :data:`_MAX_GROWTH` per step and
+    never beyond ``ds_max``; displacement control keeps its step."""
+    if control == "displacement":
+        return ds
+    nxt = float(np.clip(ds * np.sqrt(_TARGET_ITERATIONS / max(iterations, 1)),
+                        0.25 * ds, _MAX_GROWTH * ds))
+    return min(nxt, ds_max)
+
+
+def _next_sign(sign: float, neg0: int | None, neg1: int | None, limit_point: bool,
+               ut1: np.ndarray | None, du: np.ndarray) -> float:
+    """Arc-length: the sign of the load increment of the next predictor.
+
+    Between limit points the load factor is monotonic along the path, and at a limit point it
+    turns back: the sign is kept, and flips where the step crossed a limit point (an odd
+    change of the number of negative pivots at a critical point classified as a limit point;
+    past a bifurcation the fundamental path goes on in the same sense).  Where the inertia is
+    unknown the next predictor continues the last increment (the tangent ``ut1`` at the new
+    state along the step ``du``)."""
+    if neg0 is not None and neg1 is not None:
+        return -sign if limit_point and (neg1 - neg0) % 2 == 1 else sign
+    if ut1 is None:
+        return sign
+    return 1.0 if ut1 @ du >= 0.0 else -1.0
+
+
+#: Default first step of displacement and arc-length control, as a fraction of the size of
+#: the structure (its largest extent).
+DEFAULT_STEP_FRACTION = 1.0 / 1000.0
+
+
+def default_step(control: str, steps: int, size: float, ut: np.ndarray, c: int,
+                 max_load_factor: float | None) -> float:
+    """The first increment when none is given, derived from the structure.
+
+    * load control: ``max_load_factor / steps`` (1/steps without a maximum);
+    * displacement and arc-length control: a step moves the structure
+      :data:`DEFAULT_STEP_FRACTION` of its size ``L`` (the monitored displacement by ``L/1000``,
+      or the displacement norm ``Δs = L/1000``) — a scale that does not depend on the size of
+      the reference load, so that the default run reaches the first limit point of a
+      snap-through structure whatever load pattern is given; with ``max_load_factor`` never
+      more than a tenth of the linear response to it.
+
+    ``ut`` is the linear displacement per unit load factor (free DOFs), ``c`` the monitored
+    one's index in it.
+    """
+    if control == "load":
+        return (max_load_factor if max_load_factor is not None else 1.0) / steps
+    linear = np.abs(ut[c]) if control == "displacement" else np.linalg.norm(ut)
+    step = DEFAULT_STEP_FRACTION * size
+    if max_load_factor is not None:
+        step = min(step, max_load_factor * linear / 10.0)
+    return float(step)
+
+
 def _mech_free(model: NonlinearModel) -> np.ndarray:
     """Free joint coordinates for the rank check, shape (node, dim): joints still reached by a
     live member, or loaded (a loaded joint left without members is a mechanism)."""
@@ -282,8 +415,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
         Number of converged steps (events add located points).
     step : float, optional
         First increment: Δλ (load control), Δu of the monitored DOF (displacement control) or
-        the arc length Δs in displacement norm (arc-length).  Default: a tenth of the linear
-        response to ``max_load_factor`` (or to λ = 1).
+        the arc length Δs in displacement norm (arc-length).  Default: see
+        :func:`default_step` (a step moves the structure 1/1000 of its size).
     max_load_factor : float, optional
         Stop when λ exceeds it (default: no limit for displacement and arc-length control,
         1 for load control).
@@ -311,7 +444,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
     max_failures : int, optional
         Stop after this many member failure events.
     max_step : float, optional
-        Largest increment the step control may grow to (default 32 × the first one).
+        Largest increment the step control may grow to (default 8 × the first one; the step
+        grows by at most 2× per step).
 
     Returns
     -------
@@ -352,6 +486,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
 
     uf = np.zeros(free.size)
     lam = 0.0
+    if st.fdn > 0:
+        uf = _dead_load_state(st, max_cuts)
     res, fint, K = st.eval(uf)
     try:
         fac = factor(K, "symmetric")
@@ -367,14 +503,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
             raise InputError("monitor", "the reference load does not move the monitored "
                                         "displacement: choose another for displacement control")
         st.dsign = float(np.sign(ut[st.c]))
-    lam_ref = max_load_factor if max_load_factor is not None else 1.0
     if step is None:
-        if control == "load":
-            step = lam_ref / steps
-        elif control == "displacement":
-            step = lam_ref * abs(ut[st.c]) / 10.0
-        else:
-            step = lam_ref * np.linalg.norm(ut) / 10.0
+        step = default_step(control, steps, st.size, ut, st.c, max_load_factor)
     st.lam_unit = abs(step / ut[st.c]) if control == "displacement" else (
         abs(step) if control == "load" else abs(step) / np.linalg.norm(ut))
 
@@ -383,17 +513,20 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                                   m.alive.copy(), neg, stage))
         return len(out.path) - 1
 
-    record(uf, lam, res, fac.inertia)
+    record(uf, lam, res, -1 if _inertia(fac) is None else _inertia(fac))
     ds = float(step)
     size = float(np.ptp(m.X, axis=0).max())
-    ds_max = abs(ds) if control == "load" else 32.0 * abs(ds)
+    ds_max = abs(ds) if control == "load" else _MAX_STEP_RATIO * abs(ds)
     if max_step is not None:
         if not (np.isfinite(max_step) and max_step > 0):
             raise InputError("max_step", f"must be a positive number, got {max_step}")
         ds_max = float(max_step)
     du_prev = None
     branch_dir = None
-    neg = fac.inertia
+    neg = _inertia(fac)
+    #: arc-length: the sign of the load increment of the next predictor
+    sign = 1.0
+    rejected = 0
     k = 0
     while k < steps:
         if max_load_factor is not None and lam >= max_load_factor * (1 - 1e-12):
@@ -410,39 +543,46 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
         if control == "load" and max_load_factor is not None:
             dss = min(ds, max_load_factor - lam)
         mode = "branch" if branch_dir is not None else None
-        new = None
-        for _cut in range(max_cuts + 1):
-            new = st.step(uf, lam, fac, dss, branch_dir, du_prev, mode)
-            if new is not None:
-                break
-            dss *= 0.5
+        # arc-length steps are given the sign of their load increment (step control below);
+        # a branch step its direction vector
+        arc = control == "arc-length" and mode is None
+        direction = branch_dir if mode == "branch" else (sign if arc else None)
+        prev = None if arc else du_prev
+        new, checked = _attempt(st, uf, lam, fac, dss, direction, prev, mode, du_prev, neg,
+                                max_cuts, arc)
+        if new is not None:
+            dss = new[-1]
+            new = new[:-1]
         if new is None or (control == "load" and dss < 1e-4 * abs(step)):
             out.termination = _cannot_continue(control, lam, neg)
             out.events.append(Event("end", lam, detail=out.termination))
             break
         uf1, lam1, res1, its, fac_new = new
+        n_events = len(out.events)
         # ---- member failure events inside the step: cut the step to the first one
         mg0 = m.margins(res)
         mg1 = m.margins(res1)
         crossed = (mg1 > event_tolerance) & (mg0 <= event_tolerance)
         if crossed.any():
-            located = _locate_failure(st, m, uf, lam, fac, dss, branch_dir, du_prev, mode,
+            located = _locate_failure(st, m, uf, lam, fac, dss, direction, prev, mode,
                                       mg0, uf1, lam1, res1, fac_new, event_tolerance)
             uf1, lam1, res1, fac_new = located
+            checked = None
         mg1 = m.margins(res1)
         hit = (mg1 >= -event_tolerance) & (mg0 < -event_tolerance)
         # ---- accept the step; the factor of the last Newton iteration (one tiny correction
         # away from the converged state) serves the next predictor and the inertia count
         try:
-            fac1 = fac_new if fac_new is not None else factor(st.eval(uf1)[2], "symmetric")
-            neg1 = fac1.inertia
+            fac1 = checked or (fac_new if fac_new is not None
+                               else factor(st.eval(uf1)[2], "symmetric"))
+            neg1 = _inertia(fac1)
         except SingularMatrixError:
             fac1, neg1 = None, None
-        known = neg is not None and neg1 is not None     # both inertias counted
-        if control == "load" and known and neg1 > neg and not hit.any():
+        if (control == "load" and fac1 is not None and _crossed(neg, neg1) and neg1 > neg
+                and not hit.any()):
             # load control cannot pass a critical point: a limit point ends the path; on a
             # bifurcation the (now unstable) fundamental path is followed
-            kind, detail, _ = _classify(st, uf1, neg, neg1)
+            kind, detail, _, _ = _classify(st, uf1, neg, neg1)
             out.events.append(Event(kind, lam1, point=len(out.path), detail=detail
                                     + "; located within the last load step"))
             if kind == "limit_point":
@@ -451,17 +591,24 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                 out.termination = _cannot_continue(control, lam1, neg1)
                 out.events.append(Event("end", lam1, detail=out.termination))
                 break
-        if (locate_critical and known and neg1 != neg and not hit.any()
+        if (locate_critical and fac1 is not None and _crossed(neg, neg1) and not hit.any()
                 and mode != "branch" and control != "load"):
-            crit = _critical_point(st, m, out, uf, lam, fac, dss, branch_dir, du_prev, mode,
-                                   neg, neg1, record, branch)
+            crit = _critical_point(st, m, out, uf, lam, fac, dss, direction, prev, mode,
+                                   neg, neg1, record, branch,
+                                   may_reject=rejected < max_cuts and arc)
+            if crit == "reject":
+                # the inertia changed across a jump, not at a singular tangent: a smaller step
+                rejected += 1
+                ds = 0.5 * dss
+                continue
         else:
             crit = None
-            if known and neg1 != neg and hit.any() and control != "load":
+            if fac1 is not None and _crossed(neg, neg1) and hit.any() and control != "load":
                 # a failure event changed the inertia: the critical point is the event state
-                kind, detail, _ = _classify(st, uf1, neg, neg1)
+                kind, detail, _, _ = _classify(st, uf1, neg, neg1)
                 out.events.append(Event(kind, lam1, point=len(out.path),
                                         detail=detail + "; at a member failure event"))
+        rejected = 0
         branch_dir = None
         m.commit(res1)
         if crit is not None:
@@ -471,7 +618,7 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
             uf, lam, res = u2, lam2, res2
             try:
                 fac1 = factor(st.eval(uf)[2], "symmetric")
-                neg1 = fac1.inertia
+                neg1 = _inertia(fac1)
             except SingularMatrixError:
                 # (a multiple critical point) the factor from before serves the predictor
                 fac1 = fac
@@ -481,9 +628,19 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
             fac, neg = fac1, neg1
             k += 1
             continue
+        if control == "arc-length" and fac1 is not None:
+            limit = any(e.kind == "limit_point" for e in out.events[n_events:])
+            if _crossed(neg, neg1) and len(out.events) == n_events:
+                limit = _classify(st, uf1, neg, neg1)[0] == "limit_point"
+            ut1 = fac1.solve(st.f)
+            if mode == "branch":
+                # the first step on a new branch: its load sense is the one it took
+                sign = 1.0 if ut1 @ (uf1 - uf) >= 0.0 else -1.0
+            else:
+                sign = _next_sign(sign, neg, neg1, limit, ut1, uf1 - uf)
         du_prev = uf1 - uf
         uf, lam, res = uf1, lam1, res1
-        point = record(uf, lam, res, neg1)
+        point = record(uf, lam, res, -1 if neg1 is None else neg1)
         k += 1
         # ---- apply the failure events at this state
         if hit.any() and _apply_failures(st, m, out, hit, mg1, res, lam, point):
@@ -493,16 +650,14 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                 out.termination = reason
                 break
             uf, res, fac1 = uf_new, res_new, fac_new
-            neg1 = fac1.inertia
+            neg1 = _inertia(fac1)
         if fac1 is None:
-            out.termination = _cannot_continue(control, lam, neg)
+            out.termination = _cannot_continue(control, lam, -1 if neg is None else neg)
             out.events.append(Event("end", lam, detail=out.termination))
             break
         fac = fac1
         neg = neg1
-        ds = float(np.clip(dss * np.sqrt(_TARGET_ITERATIONS / max(its, 1)),
-                           0.25 * dss, 2.0 * dss))
-        ds = min(ds, ds_max) if control != "displacement" else dss
+        ds = _next_step(dss, its, ds_max, control)
     else:
         out.termination = f"completed {steps} steps"
     if not out.termination:
@@ -512,7 +667,41 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
     return out
 
 
-def _cannot_continue(control: str, lam: float, neg: int | None) -> str:
+def _attempt(st, uf, lam, fac, dss, direction, prev, mode, du_prev, neg, max_cuts, arc):
+    """Step control: one step of size ``dss``, halved until it converges and, under
+    arc-length control, until it is acceptable — a step that turns back along the path
+    (its increment against the last one) while the inertia did not change, or that crosses
+    several critical points at once, is rejected and halved.  (At the smallest step the
+    result is taken as it is.)  Returns ``((uf, lam, res, its, fresh, dss), checked)`` —
+    the :meth:`_Stepper.step` tuple with the step size taken, and the factor made at the new
+    state for the check (None when the step's own ``fresh`` factor serves) — or
+    ``(None, None)``.
+    """
+    for cut in range(max_cuts + 1):
+        new = st.step(uf, lam, fac, dss, direction, prev, mode)
+        if new is not None and arc and cut < max_cuts:
+            try:
+                f1 = new[4] if new[4] is not None else factor(st.eval(new[0])[2], "symmetric")
+            except SingularMatrixError:
+                f1 = None
+            neg1 = _inertia(f1)
+            dl = new[1] - lam
+            # without a critical point in the step neither the displacement increment nor
+            # the load increment may turn against the path's direction
+            turned = not _crossed(neg, neg1) and (
+                (du_prev is not None and (new[0] - uf) @ du_prev < 0.0)
+                or (direction * dl < 0.0 and abs(dl) > 1e-9 * max(abs(lam), st.lam_unit)))
+            several = _crossed(neg, neg1) and abs(neg1 - neg) > 1 and cut < max_cuts // 2
+            if not (turned or several):
+                return new + (dss,), (f1 if new[4] is None else None)
+            new = None
+        if new is not None:
+            return new + (dss,), None
+        dss *= 0.5
+    return None, None
+
+
+def _cannot_continue(control: str, lam: float, neg: int) -> str:
     why = "Newton iterations did not converge even with a step cut 4096 times"
     if control == "load" and neg:           # a count of negative eigenvalues, not unknown
         why = ("no equilibrium at a larger load factor: the tangent stiffness has "
@@ -587,8 +776,15 @@ def _locate_failure(st, m, uf, lam, fac, dss, direction, du_prev, mode, mg0, uf1
 
 
 def _critical_point(st, m, out, uf, lam, fac, dss, direction, du_prev, mode, neg0, neg1,
-                    record, branch):
-    """Bisect the step for the inertia change, record a limit point or a bifurcation."""
+                    record, branch, may_reject=False):
+    """Event location: bisect the step for the inertia change, record a limit point or a
+    bifurcation.
+
+    A critical point is reported only where the tangent is singular: the eigenvalue nearest
+    zero at the located state is checked against the unloaded tangent's
+    (:data:`_SINGULAR_RATIO`).  When it is not (the inertia changed across a jump of the
+    corrector, not at a critical point) and ``may_reject``, nothing is recorded and
+    ``"reject"`` returned, so that the step is retried smaller."""
     lo, hi = 0.0, 1.0
     state_hi = None
     for _ in range(40):
@@ -603,7 +799,10 @@ def _critical_point(st, m, out, uf, lam, fac, dss, direction, du_prev, mode, neg
         except SingularMatrixError:
             state_hi = new
             break
-        if fmid.inertia == neg0:
+        nmid = _inertia(fmid)
+        if nmid is None:                 # unknown inertia: the bracket cannot be narrowed
+            break
+        if nmid == neg0:
             lo = mid
         else:
             hi, state_hi = mid, new
@@ -613,7 +812,9 @@ def _critical_point(st, m, out, uf, lam, fac, dss, direction, du_prev, mode, neg
     if state_hi is None:
         return None
     u2, l2, r2 = state_hi[:3]
-    kind, detail, phi = _classify(st, u2, neg0, neg1)
+    kind, detail, phi, w = _classify(st, u2, neg0, neg1)
+    if may_reject and abs(w) > _SINGULAR_RATIO * st.unloaded_eigenvalue():
+        return "reject"
     p = record(u2, l2, r2, neg1)
     ev = Event(kind, l2, point=p, detail=detail)
     out.events.append(ev)
@@ -629,7 +830,7 @@ def _classify(st, uf, neg0, neg1):
     ratio = abs(phi @ st.f) / (np.linalg.norm(st.f) * np.linalg.norm(phi))
     kind = "limit_point" if ratio > _BIFURCATION_RATIO else "bifurcation"
     return kind, (f"negative eigenvalues {neg0} -> {neg1}; |phi.f|/(|phi||f|) = "
-                  f"{ratio:.2e}"), phi
+                  f"{ratio:.2e}"), phi, w
 
 
 def _apply_failures(st, m, out, hit, mg, res, lam, point):
@@ -699,7 +900,7 @@ def _reequilibrate(st, m, out, uf, lam, handover, record):
         over = mg >= (-1e-6 if interrupted else 1e-9)
         if not over.any():
             fac = factor(st.eval(uf)[2], "symmetric")
-            record(uf, lam, res, fac.inertia)
+            record(uf, lam, res, -1 if _inertia(fac) is None else _inertia(fac))
             return uf, res, fac, ""
         # cascade: the most overloaded member fails now, at the same load factor
         c, e = np.unravel_index(np.argmax(np.where(over, mg, -np.inf)), mg.shape)
@@ -730,7 +931,7 @@ def _release(st, uf0, lam, event_tolerance=1e-6, min_increment=1.0 / 4096):
     """
     m = st.m
     res, fint, _ = st.eval(uf0, tangent=False)
-    r0 = fint - lam * st.f
+    r0 = fint - lam * st.f - st.fd
     scale = st.fn * max(abs(lam), st.lam_unit)
     if np.linalg.norm(r0) <= st.tol * scale:
         return uf0, m.evaluate(st.full(uf0)), False
@@ -743,7 +944,7 @@ def _release(st, uf0, lam, event_tolerance=1e-6, min_increment=1.0 / 4096):
         rprev = np.inf
         for _ in range(2 * st.max_iter if modified else st.max_iter):
             r, fi, K = st.eval(u, tangent=not modified)
-            R = fi - lam * st.f - target * r0
+            R = fi - lam * st.f - st.fd - target * r0
             rn = np.linalg.norm(R)
             if rn <= st.tol * scale:
                 return u, r
@@ -795,7 +996,7 @@ def _release(st, uf0, lam, event_tolerance=1e-6, min_increment=1.0 / 4096):
 def _handover(st, m, out, x, conn, lam):
     """Finite-mechanism motion of the remaining bars to the equilibrium form."""
     s = m.structure
-    load = lam * s.loads[:, : s.dim]
+    load = lam * s.loads[:, : s.dim] + m.dead[: s.n_nodes * s.dim].reshape(s.n_nodes, s.dim)
     mot = equilibrium_form(x, conn, _mech_free(m), load)
     out.mechanism = mot
     X = s.coords

@@ -15,8 +15,9 @@ def write_plot(path: str | Path, result: PathResult) -> None:
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    from .analysis import monitor_label
     s = result.model.structure
-    node, axis = divmod(result.monitor, s.dim)
+    label = monitor_label(result.model, result.monitor)
     lam = result.load_factors
     u = result.displacement()
     eq = np.array([p.stage == "equilibrium" for p in result.path])
@@ -36,7 +37,8 @@ def write_plot(path: str | Path, result: PathResult) -> None:
             ax.plot(u[e.point], result.path[e.point].load_factor, mk, ms=8, mfc="none",
                     color="C3", label=None if lab in seen else lab)
             seen.add(lab)
-    ax.set_xlabel(f"displacement of node {s.node_ids[node]}, {'xyz'[axis]} (m)")
+    ax.set_xlabel(f"displacement of node {label['node']}, {label['axis']} "
+                  f"({'rad' if label['axis'].startswith('r') else 'm'})")
     ax.set_ylabel("load factor λ")
     ax.set_title(s.name)
     ax.grid(alpha=0.3)

@@ -14,20 +14,18 @@ reproduces the published maximum velocity (1.2477 m/s for the Base Simulation; 4
 acceleration are evaluated exactly from the partial-fraction form of the step response (the
 thesis' ``lsim`` of a constant input is exact too), not by differencing.
 
-Motion files are TOML (``[motion] type = "third-order"``), or CSV histories read by
-:mod:`trussfe.rigid.motion_csv`, or top-plane rotations converted by :mod:`trussfe.rigid.slew`.
+Motion files (TOML ``[motion]`` tables, CSV histories of :mod:`trussfe.rigid.motion_csv`,
+top-plane rotations of :mod:`trussfe.rigid.slew`) are read by :mod:`trussfe.rigid.motion_file`.
 """
 from __future__ import annotations
 
 import math
-import tomllib
 from dataclasses import dataclass
-from pathlib import Path
-from typing import Any
 
 import numpy as np
 
 from ..errors import InputError
+from ..mechanics.conventions import PHYSICAL
 from ..model.structure import Structure
 from .active import active_members
 
@@ -109,7 +107,8 @@ def check_motion(motion: Motion, item: str | None = None) -> None:
 
 
 def third_order_response(t: np.ndarray, duration: float, *, damping_ratio: float = 0.8,
-                         settling_fraction: float = 0.9, settling_constant: float = 6.0,
+                         settling_fraction: float = 0.9,
+                         settling_constant: float = PHYSICAL.settling_constant,
                          real_root_factor: float = 2.0) -> tuple[np.ndarray, ...]:
     """Unit-step response of the thesis' third-order actuator model and its two derivatives.
 
@@ -121,7 +120,8 @@ def third_order_response(t: np.ndarray, duration: float, *, damping_ratio: float
         Total motion time T, s; the settling time is ``settling_fraction * T``.
     damping_ratio, settling_fraction, settling_constant, real_root_factor : float
         ζ, ts/T, the constant c of ωn = c/(ζ ts) and the real pole as a multiple of ωn
-        (Lacy section 2.2 and Appendix A: 0.8, 0.9, 6, 2).
+        (Lacy section 2.2 and Appendix A: 0.8, 0.9, 6, 2; c is
+        :attr:`~trussfe.mechanics.conventions.Conventions.settling_constant`).
 
     Returns
     -------
@@ -217,98 +217,3 @@ def rest_motion(structure: Structure) -> Motion:
     z = np.zeros_like(L)
     return Motion(time=np.zeros(1), members=members, length=L, velocity=z, acceleration=z,
                   source="at rest")
-
-
-_TOML_KEYS = ("type", "duration", "steps", "start", "end", "damping_ratio", "settling_fraction",
-              "settling_constant", "real_root_factor", "first_sample", "include_end", "file")
-
-
-def motion_from_spec(spec: dict, structure: Structure, base_dir: Path, source: str = "",
-                     steps: int | None = None) -> Motion:
-    """Build a :class:`Motion` from a parsed ``[motion]`` table."""
-    item = f"{source}: motion" if source else "motion"
-    if not isinstance(spec, dict):
-        raise InputError(item, "expected a [motion] table")
-    kind = spec.get("type", "third-order")
-    if kind == "csv":
-        from .motion_csv import read_motion_csv  # written alongside the actuator model
-        if "file" not in spec:
-            raise InputError(f"{item}.file", "a csv motion needs file = \"history.csv\"")
-        _no_steps(steps, "a CSV motion history")
-        return read_motion_csv(base_dir / str(spec["file"]), structure)
-    if kind == "rotation":
-        from .slew import rotation_motion
-        return rotation_motion(spec, structure, steps=steps)
-    if kind != "third-order":
-        raise InputError(f"{item}.type", f"unknown motion type {kind!r}; valid: "
-                         "'third-order', 'csv', 'rotation'")
-    for key in spec:
-        if key not in _TOML_KEYS:
-            raise InputError(f"{item}.{key}", f"unknown key; valid: {', '.join(_TOML_KEYS)}")
-    for key in ("duration", "start", "end"):
-        if key not in spec:
-            raise InputError(f"{item}.{key}", "is required")
-    n = steps if steps is not None else spec.get("steps", 50)
-    opts: dict[str, Any] = {}
-    for key in ("damping_ratio", "settling_fraction", "settling_constant", "real_root_factor"):
-        if key in spec:
-            v = spec[key]
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or not v > 0:
-                raise InputError(f"{item}.{key}", f"must be a positive number, got {v!r}")
-            opts[key] = float(v)
-    for key in ("start", "end"):
-        v = spec[key]
-        if not isinstance(v, dict):
-            raise InputError(f"{item}.{key}", "expected a table member id = length (m)")
-        for k, x in v.items():
-            if isinstance(x, bool) or not isinstance(x, (int, float)) or not x > 0:
-                raise InputError(f"{item}.{key}.{k}", f"must be a positive length, got {x!r}")
-    dur = spec["duration"]
-    if isinstance(dur, bool) or not isinstance(dur, (int, float)):
-        raise InputError(f"{item}.duration", f"expected a number of seconds, got {dur!r}")
-    m = third_order_motion(structure, spec["start"], spec["end"], float(dur), n,
-                           first_sample=int(spec.get("first_sample", 0)),
-                           include_end=bool(spec.get("include_end", False)), **opts)
-    m.source = source or m.source
-    return m
-
-
-def _no_steps(steps: int | None, what: str) -> None:
-    """Refuse a step count for a motion whose samples are given (nothing to generate)."""
-    if steps is not None:
-        raise InputError("--steps", f"{what} gives its own time samples; --steps sets the "
-                         "number of steps of a generated motion only (third-order or "
-                         "rotation start/end/duration)")
-
-
-def load_motion(path: str | Path, structure: Structure, steps: int | None = None) -> Motion:
-    """Read a motion file: TOML ``[motion]`` spec, or a CSV history (``.csv``).
-
-    Parameters
-    ----------
-    path : path
-        Motion file.
-    structure : Structure
-        The model the motion drives (active members must exist in it).
-    steps : int, optional
-        Overrides the number of steps of a generated (third-order) motion.
-
-    Raises
-    ------
-    InputError
-        Unreadable file, unknown keys or members, non-monotonic time, NaN values.
-    """
-    path = Path(path)
-    if not path.is_file():
-        raise InputError(str(path), "motion file not found")
-    if path.suffix.lower() == ".csv":
-        from .motion_csv import read_motion_csv
-        _no_steps(steps, "a CSV motion history")
-        return read_motion_csv(path, structure)
-    try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
-        raise InputError(path.name, f"not a valid TOML motion file ({exc})") from None
-    if "motion" not in data:
-        raise InputError(path.name, "no [motion] table")
-    return motion_from_spec(data["motion"], structure, path.parent, path.name, steps)

@@ -12,7 +12,7 @@ Columns::
 * ``ID.velocity`` (m/s), ``ID.acceleration`` (m/s²) — optional.
 
 Active members without a column keep their model length.  Missing rates are obtained by smooth
-differentiation: a cubic smoothing spline (:func:`scipy.interpolate.make_smoothing_spline`,
+differentiation (:func:`~trussfe.rigid.smoothing.smooth_derivative`): a cubic smoothing spline (:func:`scipy.interpolate.make_smoothing_spline`,
 which minimises ``Σ (y_i − f(t_i))² + λ ∫ f''² dt``) is fitted to the lengths, λ chosen by
 generalised cross-validation unless given; its first and second derivatives are the velocity and the
 acceleration (continuous, piecewise linear).  When a velocity column is given and the
@@ -31,45 +31,14 @@ import math
 from pathlib import Path
 
 import numpy as np
-from scipy.interpolate import make_smoothing_spline
 
 from ..errors import InputError
 from ..model.structure import Structure
 from .active import active_indices
 from .motion import Motion
+from .smoothing import smooth_derivative
 
 _QUANTITIES = ("length", "velocity", "acceleration")
-
-
-def smooth_derivative(t: np.ndarray, y: np.ndarray, smoothing: float | None = None,
-                      order: int = 1) -> np.ndarray:
-    """Derivative of a cubic smoothing spline through ``(t, y)``, columnwise.
-
-    Parameters
-    ----------
-    t : ndarray, shape (nt,)
-        Strictly increasing times, at least 5.
-    y : ndarray, shape (nt, k)
-        Samples.
-    smoothing : float, optional
-        λ of the smoothing spline; ``None`` selects it by generalised cross-validation.
-    order : int
-        1 or 2: first or second derivative.
-
-    Examples
-    --------
-    Away from the ends (natural end conditions, f'' = 0, bend the first and last samples):
-
-    >>> t = np.linspace(0.0, 1.0, 41)
-    >>> d = smooth_derivative(t, np.sin(t)[:, None])
-    >>> bool(np.max(np.abs(d[2:-2, 0] - np.cos(t[2:-2]))) < 2e-3)
-    True
-    """
-    y = np.asarray(y, dtype=float)
-    out = np.empty_like(y)
-    for j in range(y.shape[1]):     # one GCV choice of λ per member (few columns)
-        out[:, j] = make_smoothing_spline(t, y[:, j], lam=smoothing).derivative(order)(t)
-    return out
 
 
 def _read_rows(path: Path) -> tuple[list[str], list[tuple[int, list[str]]]]:

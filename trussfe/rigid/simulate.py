@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import AnalysisError, InputError
+from ..mechanics.conventions import PHYSICAL, Conventions
 from ..model.structure import Structure
 from .active import active_members
 from .buckling import BucklingCheck, buckling_check
@@ -114,9 +115,8 @@ class SimulationResult:
         }
 
 
-def simulate(structure: Structure, motion: Motion | None = None, *, scheme: str = "exact",
-             n_sections: int = 7, full_length_inertia: bool | None = None,
-             shear_factor: float = 3.0,
+def simulate(structure: Structure, motion: Motion | None = None, *,
+             conventions: Conventions = PHYSICAL, n_sections: int = 7,
              buckling_constants: np.ndarray | float = 1.0, actuators: bool = True,
              progress: bool = False) -> SimulationResult:
     """Rigid-body dynamic force analysis of a truss along a motion (Lacy chapters 2–4).
@@ -127,15 +127,13 @@ def simulate(structure: Structure, motion: Motion | None = None, *, scheme: str 
         Statically determinate pin-jointed truss, with ``[active_members]`` if it moves.
     motion : Motion, optional
         Active-member histories; ``None`` analyses the model at rest (one step).
-    scheme : {"exact", "thesis"}
-        Kinematics: exact compatibility equations, or Lacy's backward differences.
+    conventions : Conventions
+        :data:`~trussfe.mechanics.conventions.PHYSICAL` (default: exact kinematics, each
+        piece's own section inertia, von Mises at S1 by eq. 2.24) or
+        :data:`~trussfe.mechanics.conventions.THESIS` (Lacy's Appendix A: backward-difference
+        rates, whole-length inertia), or any other combination.
     n_sections : int
         Sections per member (Lacy: 7 in the triangular truss).
-    full_length_inertia : bool, optional
-        Lacy's Appendix A section inertia (whole tube length in every piece); default: True
-        with the thesis scheme, False (physical) with the exact one.
-    shear_factor : float
-        3 for von Mises at S1 (eq. 2.24); Lacy's code uses 1.
     buckling_constants : float or array (m,)
         End-condition constants C of eq. 2.26.
     actuators : bool
@@ -156,8 +154,7 @@ def simulate(structure: Structure, motion: Motion | None = None, *, scheme: str 
     if n_sections < 1 or int(n_sections) != n_sections:
         raise InputError("sections", f"need a positive integer number of sections (1 = the "
                          f"midpoint only), got {n_sections}")
-    if full_length_inertia is None:
-        full_length_inertia = scheme == "thesis"
+    scheme = conventions.kinematics
     if motion is None:
         motion = rest_motion(structure)
     acts = active_members(structure)
@@ -167,8 +164,8 @@ def simulate(structure: Structure, motion: Motion | None = None, *, scheme: str 
         raise InputError("motion", f"member '{structure.member_ids[bad]}' is not an active "
                          "member of the model (add it to [active_members])")
     bodies = member_bodies(structure)
-    opts = dict(n_sections=n_sections, full_length_inertia=full_length_inertia,
-                shear_factor=shear_factor)
+    opts = dict(n_sections=n_sections, full_length_inertia=conventions.full_length_inertia,
+                shear_factor=conventions.shear_factor)
     nt, m = motion.n_steps, structure.n_members
     step = max(1, CHUNK_ENTRIES // max(m, 1))
     if scheme == "exact" and nt > step:
@@ -240,8 +237,8 @@ def simulate(structure: Structure, motion: Motion | None = None, *, scheme: str 
                            actuator_force=act_force, static_actuator_force=act_static,
                            cantilever_moment=cmoment, buckling=buck,
                            options={"scheme": scheme, "n_sections": int(n_sections),
-                                    "full_length_inertia": full_length_inertia,
-                                    "shear_factor": shear_factor})
+                                    "full_length_inertia": conventions.full_length_inertia,
+                                    "shear_factor": conventions.shear_factor})
     if actuators and "actuators" in structure.extensions and act_idx.size:
         res.actuators = _actuator_histories(structure, motion, res)
     return res

@@ -60,6 +60,7 @@ from ..kinematics.compatibility import compatibility_matrix
 from ..model.structure import Structure
 from .active import active_indices
 from .motion import Motion, third_order_response
+from .smoothing import smooth_derivative
 
 log = logging.getLogger(__name__)
 
@@ -342,7 +343,6 @@ def rotation_motion(spec: dict, structure: Structure, *, steps: int | None = Non
             raise InputError(f"{item}.angle", "time and angle must be finite")
         if np.any(np.diff(t) <= 0):
             raise InputError(f"{item}.time", "must increase strictly")
-        from .motion_csv import smooth_derivative
         dang = smooth_derivative(t, ang[:, None])[:, 0]
         ddang = smooth_derivative(t, ang[:, None], order=2)[:, 0]
     elif spec.get("profile", "third-order") == "constant-velocity":

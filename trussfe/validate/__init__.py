@@ -26,5 +26,13 @@ class _CallablePackage(_types.ModuleType):
         from ..api import validate as analysis
         return analysis(*args, **kwargs)
 
+    @property
+    def __signature__(self):
+        """The analysis's signature (for ``inspect.signature`` and ``help``)."""
+        import inspect
+
+        from ..api import validate as analysis
+        return inspect.signature(analysis)
+
 
 _sys.modules[__name__].__class__ = _CallablePackage

@@ -205,6 +205,9 @@ def _parse(data: dict, path: Path) -> Case:
             if not isinstance(raw[key], dict):
                 raise InputError(f"case.{key}", "expected a table")
             setattr(case, key, dict(raw[key]))
+    if case.analysis is not None and case.python is None:
+        from .. import api
+        api.check_options(case.analysis, case.options)
     if "parameters" in raw and case.catalogue is None:
         raise InputError("case.parameters", "parameters apply to a 'catalogue' model only")
     if "plot" in raw:

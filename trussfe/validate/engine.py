@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import importlib
-import inspect
 import logging
 import math
 import re
@@ -176,15 +175,9 @@ def _analyse(name: str):
         from ..io.model_file import _suggest
         raise InputError("case.analysis", f"unknown analysis '{name}'"
                                           f"{_suggest(name, sorted(api.ANALYSES))}") from None
-    known = [p.name for p in inspect.signature(func).parameters.values()
-             if p.kind is inspect.Parameter.KEYWORD_ONLY]
 
     def analyse(model: str, **options) -> dict:
-        for key in options:
-            if key not in known:
-                from ..io.model_file import _suggest
-                raise InputError("case.options", f"'{name}' has no option '{key}'"
-                                                 f"{_suggest(key, known)}")
+        api.check_options(name, options)
         return func(model, **options).to_dict()
     return analyse
 

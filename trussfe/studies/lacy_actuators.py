@@ -23,12 +23,13 @@ from dataclasses import replace
 
 import numpy as np
 
+from ..mechanics.conventions import THESIS
 from ..model.structure import Structure
-from .actuator import Actuator, max_leadscrew_gain, motor_histories, select_gearhead_gain
-from .motion import Motion, third_order_response
-from .reproductions import double_octahedron
-from .simulate import simulate
-from .slew import TopPlaneInverse, constant_velocity_profile
+from ..rigid.actuator import Actuator, max_leadscrew_gain, motor_histories, select_gearhead_gain
+from ..rigid.motion import Motion, third_order_response
+from .lacy_rigid import double_octahedron
+from ..rigid.simulate import simulate
+from ..rigid.slew import TopPlaneInverse, constant_velocity_profile
 
 #: Appendix C / Table 5.1 actuator of the VPI&SU prototype.
 PROTOTYPE = dict(leadscrew_gain=2.5266e-4, mean_diameter=0.5 * 0.0254, thread="square",
@@ -103,7 +104,7 @@ def slew1(convention: str = "thesis", steps: int = 220) -> dict:
     """
     s = slew1_structure(convention)
     m = slew1_motion(s, steps=steps)
-    r = simulate(s, m, scheme="exact")
+    r = simulate(s, m)
     j = list(m.members).index(s.member_index("M7_8"))
     f = r.actuator_force[:, j]
     # Constant-velocity phase (the ramps' acceleration spikes add inertia forces).
@@ -186,15 +187,15 @@ def base_simulation_motor(convention: str = "thesis") -> dict:
         ``final_torque`` and ``final_holding_torque`` (N·m: the torque at the end and that
         needed to hold the final static force), ``max_voltage`` (V), ``max_speed`` (rad/s).
     """
-    from .reproductions import L2, L3MIN, triangular_truss
-    from .motion import third_order_motion
+    from .lacy_rigid import L2, L3MIN, triangular_truss
+    from ..rigid.motion import third_order_motion
 
     s = triangular_truss(mass=10.0)
     k = s.member_index("active")
     s = s.with_extensions(actuators=[Actuator(member=k, name="active", convention=convention,
                                               **TRIANGLE_MOTOR)])
     m = third_order_motion(s, [L3MIN + L2], [L3MIN + 1.2 + L2], 3.0, 50)
-    r = simulate(s, m, scheme="thesis", full_length_inertia=True)
+    r = simulate(s, m, conventions=THESIS)
     h = r.actuators["active"]
     tq = np.abs(h["motor_torque"])
     f = r.actuator_force[:, 0]
@@ -220,14 +221,14 @@ def actuator_force_variants(durations=(3.0, 5.0, 10.0), mass: float = 10.0) -> d
     tube), the motion-induced part ``dynamic = force − static_force``, and the active member's
     ``acceleration`` (m/s²), at the 50 samples of Appendix A (thesis scheme).
     """
-    from .motion import third_order_motion
-    from .reproductions import L2, L3MIN, triangular_truss
+    from ..rigid.motion import third_order_motion
+    from .lacy_rigid import L2, L3MIN, triangular_truss
 
     out = {}
     for T in durations:
         s = triangular_truss(mass=mass)
         m = third_order_motion(s, [L3MIN + L2], [L3MIN + 1.2 + L2], T, 50)
-        r = simulate(s, m, scheme="thesis", full_length_inertia=True)
+        r = simulate(s, m, conventions=THESIS)
         f, fs = r.actuator_force[:, 0], r.static_actuator_force[:, 0]
         out[T] = {"force": f, "static_force": fs, "dynamic": f - fs,
                   "acceleration": m.acceleration[:, 0]}

@@ -12,23 +12,37 @@ import math
 
 import numpy as np
 
-from ..model.sections import Material, Section
-from ..model.structure import Structure, build_structure
-from .active import ActiveMember
-from .motion import third_order_motion
-from .simulate import simulate
+from .. import models
+from ..kinematics.assembly import solve_positions
+from ..mechanics.conventions import Conventions
+from ..model.sections import Section
+from ..model.structure import Structure
+from ..rigid.motion import third_order_motion
+from ..rigid.simulate import simulate
+from .numbering import renumber_nodes, reverse_members
 
-#: Lacy Table 3.1 / Appendix A data.
-L1, L2, L3MIN, L3MAX, L4 = 2.0, 2.0, 0.5, 2.1, 2.0
-OD, ID = 0.0254, 0.022225
-ALUMINIUM = Material(name="aluminium", E=71.0e9, G=26.2e9, density=2711.5,
-                     yield_strength=math.nan)
-TUBE = Section.tube("tube", OD, ID)
+#: Lacy Table 3.1 / Appendix A data, in the thesis' symbols (the catalogue's values).
+L1 = models.triangular.FOLLOWER_LENGTH
+L2 = models.triangular.LEADSCREW_LENGTH
+L3MIN = models.triangular.ACTIVE_MIN_LENGTH
+L3MAX = models.triangular.ACTIVE_MAX_LENGTH
+L4 = models.triangular.GROUND_LENGTH
+ALUMINIUM = models.materials.ALUMINIUM
+TUBE = models.materials.triangular_tube()
+OD, ID = TUBE.outer_diameter, TUBE.inner_diameter
 
 
 def triangular_truss(x: float = 0.0, mass: float = 10.0, *, gravity: bool = True,
                      load: float = 0.0) -> Structure:
-    """Lacy's triangular truss with the active member extended by ``x`` (m).
+    """Lacy's triangular truss with the active member extended by ``x`` (m), numbered as
+    Appendix A.
+
+    The catalogue entry (:func:`trussfe.models.triangular_truss`, with its active member) in
+    Appendix A's numbering: nodes O2, O1, B (the pivots first) and the follower from O1 to B
+    (:func:`~trussfe.studies.numbering.renumber_nodes`,
+    :func:`~trussfe.studies.numbering.reverse_members`).  The active member runs from O2 (its
+    base) to B in both.  B is placed by Lacy's eq. 2.1 (law of cosines), as Appendix A does;
+    the catalogue's forward-position solve agrees with it to the last bit or two.
 
     Parameters
     ----------
@@ -48,20 +62,13 @@ def triangular_truss(x: float = 0.0, mass: float = 10.0, *, gravity: bool = True
     >>> np.round(s.coords[2], 4)          # Appendix B node 3
     array([1.5625, 1.9516])
     """
-    La = L3MIN + x + L2
-    phi = math.acos((L1 ** 2 + L4 ** 2 - La ** 2) / (2 * L4 * L1))   # Lacy eq. 2.1
-    B = [L4 - L1 * math.cos(phi), L1 * math.sin(phi)]
-    s = build_structure([[0.0, 0.0], [L4, 0.0], B], [[1, 2], [0, 2]], section=TUBE,
-                        material=ALUMINIUM, supports={0: "xy", 1: "xy"},
-                        masses={2: mass} if mass else None,
-                        loads={2: [0.0, load]} if load else None,
-                        gravity=[0.0, -9.81] if gravity else None,
-                        node_ids=["O2", "O1", "B"], member_ids=["follower", "active"],
-                        name="triangular truss (Lacy Fig. 2.1)")
-    return s.with_extensions(active_members=[ActiveMember(
-        member=1, base_mass=2.4, base_length=L3MAX, base_cg=L3MAX / 2,
-        base_inertia=2.4 * L3MAX ** 2 / 3, tube_length=L2, min_length=L3MIN + L2,
-        max_length=L3MAX + L2)])
+    s = models.triangular_truss(x, lumped_mass=mass, member_weight=gravity,
+                                load=(0.0, load), active_members=True)
+    s = reverse_members(renumber_nodes(s, ["O2", "O1", "B"]), ["follower"])
+    phi = math.acos((L1 ** 2 + L4 ** 2 - (L3MIN + x + L2) ** 2) / (2 * L4 * L1))   # eq. 2.1
+    coords = s.coords.copy()
+    coords[2] = [L4 - L1 * math.cos(phi), L1 * math.sin(phi)]
+    return s.variant(coords=coords, name="triangular truss (Lacy Fig. 2.1)")
 
 
 def static_reactions() -> dict:
@@ -84,15 +91,15 @@ def base_simulation(duration: float = 3.0, mass: float = 10.0, steps: int = 50,
                     scheme: str = "thesis", x_end: float = 1.2) -> dict:
     """The Base Simulation of Lacy section 3.3 and its variants (sections 3.4–3.5, Table 3.3).
 
-    ``scheme="thesis"`` reproduces Appendix A (backward-difference angle rates, whole-length
-    section inertia, 50 steps at t = (i−1)·dt); ``"exact"`` gives the exact kinematics.
+    ``scheme="thesis"`` reproduces Appendix A (:data:`~trussfe.mechanics.conventions.THESIS`:
+    backward-difference angle rates, whole-length section inertia; 50 steps at t = (i−1)·dt);
+    ``"exact"`` gives the physical model (:data:`~trussfe.mechanics.conventions.PHYSICAL`).
     Lacy labels step i (1-based) with the time i·dt, one step after the instant at which its
     state is evaluated; ``thesis_time`` reports that label.
     """
     s = triangular_truss(mass=mass)
     m = third_order_motion(s, [L3MIN + L2], [L3MIN + x_end + L2], duration, steps)
-    thesis = scheme == "thesis"
-    r = simulate(s, m, scheme=scheme, full_length_inertia=thesis)
+    r = simulate(s, m, conventions=Conventions.from_scheme(scheme))
     dt = duration / steps
     fol = r.member_summary(0, section=3)       # motion-induced at the follower midpoint
     tube = r.member_summary(1)
@@ -111,27 +118,55 @@ def base_simulation(duration: float = 3.0, mass: float = 10.0, steps: int = 50,
 
 
 # ------------------------------------------------------------------ double-octahedral bay
-#: Lacy Appendix C/D: base side 1.2192 m, cross longerons 0.889 m (Appendix D's coordinates;
-#: Table 5.1 says 0.9144 m), tubes OD 0.75 in.  Appendix D's area 9.0245e-5 m² is that of an
-#: ID of 0.62 in; the code's 0.63 in would make every stress 7.5 % higher.
-BASE_SIDE = 1.2192
-LONGERON = 0.889
-EQUILIBRIUM_LENGTH = 1.1684
-DO_TUBE = Section.tube("tube", 0.75 * 0.0254, 0.62 * 0.0254)
-#: Members in Lacy's numbering (Table 4.1 / Appendix C–D); active members as start → end
-#: (base at the start node, leadscrew tube at the end node, Appendix C ``u73``, ``u93``,
-#: ``u113``).
-DO_MEMBERS = {
-    "M1": (2, 6), "M2": (1, 6), "M3": (1, 4), "M4": (3, 4), "M5": (3, 5), "M6": (2, 5),
-    "M7_8": (4, 5), "M9_10": (6, 5), "M11_12": (4, 6),
-    "M13": (6, 9), "M14": (6, 7), "M15": (4, 7), "M16": (4, 8), "M17": (5, 8), "M18": (5, 9),
-    "M19": (7, 9), "M20": (8, 7), "M21": (8, 9),
-}
+EQUILIBRIUM_LENGTH = models.EQUILIBRIUM_LENGTH
+#: Members whose orientation Appendix C's code reverses against the catalogue (Appendix D's
+#: ``Connect`` list): the base→mid longerons run from their base node, and M9/10 (whose
+#: active base is at N6, ``u93``) from N6 to N5.
+APPENDIX_C_REVERSED = ("M1", "M2", "M3", "M4", "M5", "M6", "M9_10")
+#: The catalogue's tube (Appendix D's area) with its diameters converted from inches as the
+#: code does (OD 0.75 in, ID 0.62 in, × 0.0254 m/in): the same section to the last bit or two.
+APPENDIX_C_TUBE = Section.tube("tube", 0.75 * models.materials.INCH, 0.62 * models.materials.INCH)
+
+
+def _positions_from_appendix_d(s: Structure, active_lengths) -> np.ndarray:
+    """Node positions of bay ``s`` solved from Appendix D's printed mid-plane coordinates.
+
+    The base is the equilateral triangle of side 1.2192 m written with r = a/√3, the top
+    plane starts 1.1218 m above it; the forward-position solver goes to the equilibrium
+    lengths first and then to ``active_lengths`` (so the bay stays on its own branch).  The
+    catalogue's solve from another start lands on the same positions to a bit or two; the
+    published comparisons of this module were made from this start and are kept to the bit.
+    """
+    a = models.octahedral.BASE_SIDE
+    r = a / math.sqrt(3.0)
+    base = np.array([[-a / 2, -r / 2, 0.0], [a / 2, -r / 2, 0.0], [0.0, r, 0.0]])
+    guess = np.vstack([base,
+                       [[-0.5842, 0.3373, 0.5609], [0.5842, 0.3373, 0.5609], [0, -0.6746, 0.5609]],
+                       (base + [0, 0, 1.1218])[[0, 2, 1]]])   # N7 over N1, N8 over N3, N9 over N2
+    names = list(s.member_ids)
+    lengths = np.full(len(names), models.octahedral.LONGERON)
+    for k in ("M19", "M20", "M21"):
+        lengths[names.index(k)] = a
+    active = [names.index(k) for k in models.ACTIVE_MEMBERS]
+    eq = lengths.copy()
+    eq[active] = EQUILIBRIUM_LENGTH
+    lengths[active] = active_lengths
+    fixed = s.translation_supports
+    x = solve_positions(guess, s.connectivity, eq, fixed).coords
+    return solve_positions(x, s.connectivity, lengths, fixed).coords
 
 
 def double_octahedron(active_lengths=(EQUILIBRIUM_LENGTH,) * 3, *, top_load: float = 0.0,
                       gravity: float = 0.0, top_masses: float = 0.0) -> Structure:
-    """Lacy's double-octahedral VGT bay (Fig. 4.1, Appendix D) at given active lengths.
+    """Lacy's double-octahedral VGT bay (Fig. 4.1, Appendix D) at given active lengths, with
+    the member orientation of Appendix C's code.
+
+    The catalogue entry (:func:`trussfe.models.double_octahedron` with its active members)
+    with the members :data:`APPENDIX_C_REVERSED` reversed
+    (:func:`~trussfe.studies.numbering.reverse_members`): each active member's base is at its
+    start node, as in Appendix C (``u73``, ``u93``, ``u113``), the tube's diameters in inches
+    (:data:`APPENDIX_C_TUBE`), and the positions solved from Appendix D's printed coordinates
+    (:func:`_positions_from_appendix_d`).
 
     Parameters
     ----------
@@ -147,7 +182,7 @@ def double_octahedron(active_lengths=(EQUILIBRIUM_LENGTH,) * 3, *, top_load: flo
     Returns
     -------
     Structure
-        Nodes "N1"…"N9", members as :data:`DO_MEMBERS`, base nodes fixed, active members with
+        Nodes "N1"…"N9", members M1…M21 (18), base nodes fixed, active members with
         Appendix C's data (base 3 kg, 0.7 m, CG at 0.35 m; tube 0.254 m).
 
     Examples
@@ -156,41 +191,12 @@ def double_octahedron(active_lengths=(EQUILIBRIUM_LENGTH,) * 3, *, top_load: flo
     >>> np.round(s.coords[3], 4)            # Appendix D node 4
     array([-0.5842,  0.3373,  0.5609])
     """
-    from ..kinematics.assembly import solve_positions
-
-    a = BASE_SIDE
-    r = a / math.sqrt(3.0)
-    base = np.array([[-a / 2, -r / 2, 0.0], [a / 2, -r / 2, 0.0], [0.0, r, 0.0]])
-    guess = np.vstack([base,
-                       [[-0.5842, 0.3373, 0.5609], [0.5842, 0.3373, 0.5609], [0, -0.6746, 0.5609]],
-                       base + [0, 0, 1.1218]])
-    guess[6:] = guess[[6, 8, 7]]                  # N7 over N1, N8 over N3, N9 over N2
-    conn = np.array(list(DO_MEMBERS.values())) - 1
-    names = list(DO_MEMBERS)
-    lengths = np.full(len(names), LONGERON)
-    for k in ("M19", "M20", "M21"):
-        lengths[names.index(k)] = a
-    for k, L in zip(("M7_8", "M9_10", "M11_12"), active_lengths):
-        lengths[names.index(k)] = L
-    fixed = np.zeros((9, 3), dtype=bool)
-    fixed[:3] = True
-    # Continue from the equilibrium position so that the truss stays on its own branch.
-    eq = lengths.copy()
-    for k in ("M7_8", "M9_10", "M11_12"):
-        eq[names.index(k)] = EQUILIBRIUM_LENGTH
-    x = solve_positions(guess, conn, eq, fixed).coords
-    x = solve_positions(x, conn, lengths, fixed).coords
-    g = None if gravity == 0.0 else [0.0, 0.0, -gravity]
-    s = build_structure(x, conn, section=DO_TUBE, material=ALUMINIUM,
-                        supports={0: "xyz", 1: "xyz", 2: "xyz"},
-                        loads={i: [0.0, 0.0, top_load] for i in (6, 7, 8)} if top_load else None,
-                        masses={i: top_masses for i in (6, 7, 8)} if top_masses else None,
-                        gravity=g, node_ids=[f"N{i}" for i in range(1, 10)], member_ids=names,
-                        name="double-octahedral VGT bay (Lacy Fig. 4.1)")
-    return s.with_extensions(active_members=[
-        ActiveMember(member=names.index(k), base_mass=3.0, base_length=0.7, base_cg=0.35,
-                     base_inertia=3.0 * 0.7 ** 2 / 3, tube_length=0.254)
-        for k in ("M7_8", "M9_10", "M11_12")])
+    s = models.double_octahedron(active_lengths, top_load,
+                                 gravity=None if gravity == 0.0 else [0.0, 0.0, -gravity],
+                                 top_mass=top_masses, active_members=True,
+                                 name="double-octahedral VGT bay (Lacy Fig. 4.1)")
+    s = reverse_members(s, APPENDIX_C_REVERSED).with_sections([APPENDIX_C_TUBE] * 18)
+    return s.with_coords(_positions_from_appendix_d(s, active_lengths))
 
 
 #: Active lengths of Tables 5.2–5.4.  The short slewed length reproduces as 1.1079 m (printed
@@ -248,42 +254,17 @@ def validation_double_octahedron() -> dict:
 
 def double_octahedral_chain(n_bays: int, *, top_load: float = 0.0, gravity: float = 0.0
                             ) -> Structure:
-    """A chain of ``n_bays`` double-octahedral bays at the equilibrium position (Lacy ch. 6).
+    """A chain of ``n_bays`` double-octahedral bays at the equilibrium position (Lacy ch. 6),
+    each bay with the member orientation of Appendix C's code.
 
-    Bay k's top plane is bay k+1's base; the base triangle (3 members between fixed nodes) is
-    included, so the chain has 18 n + 3 members (1,803 for 100 bays) and 6 n free nodes.
-    Active members ``M7_8.k``, ``M9_10.k``, ``M11_12.k`` carry Appendix C's data.
+    The catalogue chain (:func:`trussfe.models.double_octahedral_chain`, nodes ``bK.N1``…,
+    members ``bK.M1``…, active members ``bK.M7_8``, ``bK.M9_10``, ``bK.M11_12``) with every
+    bay's :data:`APPENDIX_C_REVERSED` members reversed and the tube of
+    :data:`APPENDIX_C_TUBE`: 18 n members and 6 n free nodes.
     """
-    if n_bays < 1:
-        raise ValueError("n_bays must be at least 1")
-    bay = double_octahedron()
-    x = bay.coords
-    h = float(x[6, 2])
-    base = x[:3]
-    mid = x[3:6]
-    coords = [base]
-    conn = [(0, 1), (1, 2), (2, 0)]
-    names = ["B12", "B23", "B31"]
-    for k in range(n_bays):
-        lvl = 6 * k                                 # first node of this bay's base level
-        m0 = len(np.vstack(coords))
-        coords.append(mid + [0.0, 0.0, k * h])
-        coords.append(base + [0.0, 0.0, (k + 1) * h])
-        t0 = m0 + 3
-        node = {1: lvl, 2: lvl + 1, 3: lvl + 2, 4: m0, 5: m0 + 1, 6: m0 + 2,
-                7: t0, 9: t0 + 1, 8: t0 + 2}
-        for mid_name, (a, b) in DO_MEMBERS.items():
-            conn.append((node[a], node[b]))
-            names.append(f"{mid_name}.{k + 1}")
-    X = np.vstack(coords)
-    top = range(len(X) - 3, len(X))
-    s = build_structure(X, conn, section=DO_TUBE, material=ALUMINIUM,
-                        supports={0: "xyz", 1: "xyz", 2: "xyz"},
-                        loads={i: [0.0, 0.0, top_load] for i in top} if top_load else None,
-                        gravity=None if gravity == 0.0 else [0.0, 0.0, -gravity],
-                        node_ids=[f"N{i + 1}" for i in range(len(X))], member_ids=names,
-                        name=f"{n_bays}-bay double-octahedral chain")
-    return s.with_extensions(active_members=[
-        ActiveMember(member=i, base_mass=3.0, base_length=0.7, base_cg=0.35,
-                     base_inertia=3.0 * 0.7 ** 2 / 3, tube_length=0.254)
-        for i, nm in enumerate(names) if nm.split(".")[0] in ("M7_8", "M9_10", "M11_12")])
+    s = models.double_octahedral_chain(
+        n_bays, tip_load=top_load, gravity=None if gravity == 0.0 else [0.0, 0.0, -gravity],
+        active_members=True)
+    s = reverse_members(s, [f"b{k}.{m}" for k in range(1, n_bays + 1)
+                            for m in APPENDIX_C_REVERSED])
+    return s.with_sections([APPENDIX_C_TUBE] * s.n_members)

@@ -24,8 +24,8 @@ from ..model.sections import Material, Section
 from ..model.structure import Structure, build_structure
 from ..rigid.active import ActiveMember
 from ..rigid.motion import Motion, third_order_motion
-from ..rigid.reproductions import L2, L3MIN, triangular_truss
-from .transient import TransientResult, transient_response
+from .lacy_rigid import L2, L3MIN, triangular_truss
+from ..elastic.transient import TransientResult, transient_response
 
 log = logging.getLogger(__name__)
 
@@ -166,7 +166,7 @@ def double_octahedron_slew(duration: float, dt: float = 5.0e-4, *, angle: float 
     """Lacy's double-octahedral bay, standing under gravity with ``top_mass`` (kg) on each top
     node, tilting its top plane from 0 to ``angle`` degrees about n̂1 in ``duration`` s (the
     third-order profile of :mod:`trussfe.rigid.slew`, centroid height held)."""
-    from ..rigid.reproductions import double_octahedron
+    from .lacy_rigid import double_octahedron
     from ..rigid.slew import rotation_motion
 
     s = double_octahedron(top_masses=top_mass, gravity=9.81)

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .reproductions import ID, L1, L2, L3MAX, L3MIN, L4, OD, TUBE, ALUMINIUM
+from .lacy_rigid import ID, L1, L2, L3MAX, L3MIN, L4, OD, TUBE, ALUMINIUM
 
 G = 9.81
 
@@ -125,8 +125,8 @@ def newton_euler_system(structure, kin, bodies=None):
         ``"end_force"``: index array (m, 2, dim) of the force unknowns; ``"reaction"``: list of
         (node, component, column).
     """
-    from .forces import element_accelerations, member_bodies
-    from .kinematics import pad3
+    from ..rigid.forces import element_accelerations, member_bodies
+    from ..rigid.kinematics import pad3
 
     bodies = member_bodies(structure) if bodies is None else bodies
     dim = structure.dim

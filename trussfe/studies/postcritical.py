@@ -21,10 +21,10 @@ from scipy.special import ellipe, ellipk
 
 from .._resources import mesh_path
 from ..io.model_file import read_model
-from .analysis import run_postcritical
-from .buckling import linear_buckling
-from .model import NonlinearModel
-from .path import follow_path
+from ..nonlinear.analysis import run_postcritical
+from ..nonlinear.buckling import linear_buckling
+from ..nonlinear.model import NonlinearModel
+from ..nonlinear.path import follow_path
 
 
 # ------------------------------------------------------------------------- closed forms
@@ -102,7 +102,7 @@ def _figure(result, name: str) -> dict:
     """The load–displacement plot of a path as a PNG in a temporary folder."""
     import tempfile
     from pathlib import Path
-    from .plot import write_plot
+    from ..nonlinear.plot import write_plot
     path = Path(tempfile.mkdtemp(prefix="trussfe_postcritical_")) / f"{name}.png"
     write_plot(path, result)
     return {name: str(path)}
@@ -336,7 +336,7 @@ def double_layer_grid(n: int, spacing: float = 1.0, depth: float = 0.7,
     """
     from ..model.sections import Material, Section
     from ..model.structure import build_structure
-    from .failure import BUCKLING, FailureLaws
+    from ..nonlinear.failure import BUCKLING, FailureLaws
     i, j = np.meshgrid(np.arange(n), np.arange(n), indexing="ij")
     top = np.stack([i.ravel() * spacing, j.ravel() * spacing, np.zeros(n * n)], axis=1)
     k, l = np.meshgrid(np.arange(n - 1), np.arange(n - 1), indexing="ij")

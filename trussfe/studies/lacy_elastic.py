@@ -5,7 +5,7 @@
   3 s, 50 steps, 10 kg at B, downward gravity.
 * **Double-octahedral bay, Slewing Experiment 1** (section 5.5.1): the synthetic
   constant-velocity slew −10° → +10° about n̂1 in 5.5 s of
-  :func:`trussfe.rigid.actuator_reproductions.slew1_motion` (the measured link histories are
+  :func:`trussfe.studies.lacy_actuators.slew1_motion` (the measured link histories are
   not published), hanging bay, 46.0 N on N7–N9.
 * **Slewing Experiment 2** (section 5.5.2): −8° ↔ +8° about n̂1 driven by a sinusoidal
   voltage, "one cycle" of 80 samples at Δt = 0.121 s; synthetic here as the top-plane angle
@@ -13,8 +13,9 @@
 
 The rigid model is run with the exact kinematics and the physical section inertia (each piece
 with its own length): Lacy's Appendix A quirk of using the whole tube length in every piece's
-inertia (``full_length_inertia``) is not the inertia of any mass distribution, so no FE load
-reproduces it.  Lacy's backward-difference kinematics (``scheme="thesis"``) are a consistent
+inertia (``Conventions.full_length_inertia``) is not the inertia of any mass distribution, so
+no FE load reproduces it.  Lacy's backward-difference kinematics
+(``Conventions.finite_difference_rates``) are a consistent
 set of accelerations for the loads, and are compared too.
 """
 from __future__ import annotations
@@ -27,15 +28,16 @@ from pathlib import Path
 import numpy as np
 from scipy.interpolate import make_interp_spline
 
-from ..rigid.actuator_reproductions import slew1_motion, slew1_structure
+from .lacy_actuators import slew1_motion, slew1_structure
+from ..mechanics.conventions import Conventions
 from ..rigid.motion import Motion, third_order_motion
-from ..rigid.reproductions import (DO_POSITIONS, EQUILIBRIUM_LENGTH, L2, L3MIN,
+from .lacy_rigid import (DO_POSITIONS, EQUILIBRIUM_LENGTH, L2, L3MIN,
                                    double_octahedron, triangular_truss)
 from ..rigid.sections import section_stresses
 from ..rigid.simulate import SimulationResult, simulate
 from ..rigid.slew import TopPlaneInverse
-from .along_motion import ElasticResponse, compare_with_rigid, elastic_along_motion
-from .strains import gauge_strains, static_strain, zeroed_strain
+from ..elastic.along_motion import ElasticResponse, compare_with_rigid, elastic_along_motion
+from ..elastic.strains import gauge_strains, static_strain, zeroed_strain
 
 log = logging.getLogger(__name__)
 
@@ -43,8 +45,8 @@ log = logging.getLogger(__name__)
 TABLE_5_5 = {"equilibrium": (5.8631, 5.9468), "slew1": (5.2094, 5.1829),
              "slew2": (6.8197, 7.1210)}
 #: Positions of Table 5.5: slew position 1 = M7/8 at its maximum (section 5.1's first slewed
-#: position); Tables 5.3/5.4 print these two swapped (docs/model-format.md), Table 5.5 does not: its
-#: strains follow the forces of M7/8 at the maximum for "slew position 1".
+#: position); Tables 5.3/5.4 print these two swapped (docs/model-format.md), Table 5.5 does
+#: not: its strains follow the forces of M7/8 at the maximum for "slew position 1".
 TABLE_5_5_LENGTHS = {"equilibrium": DO_POSITIONS["table_5_2"],
                      "slew1": DO_POSITIONS["table_5_4"], "slew2": DO_POSITIONS["table_5_3"]}
 #: Section 5.6.1 numbers.
@@ -62,7 +64,8 @@ def base_simulation(scheme: str = "exact", steps: int = 50, duration: float = 3.
     """Rigid and FE responses of the triangular truss along the Base Simulation."""
     s = triangular_truss(mass=mass)
     m = third_order_motion(s, [L3MIN + L2], [L3MIN + 1.2 + L2], duration, steps)
-    r = simulate(s, m, scheme=scheme, full_length_inertia=False, actuators=False)
+    r = simulate(s, m, actuators=False,
+                 conventions=Conventions(finite_difference_rates=scheme == "thesis"))
     e = elastic_along_motion(s, r.kinematics, bodies=r.bodies, positions=r.sections.position,
                              subdivisions=subdivisions)
     return r, e
@@ -100,7 +103,7 @@ def slew(which: int, subdivisions: int = 6, steps: int | None = None
         m = slew1_motion(s, steps=steps or 220)
     else:
         m = slew2_motion(s, steps=steps or 160)
-    r = simulate(s, m, scheme="exact", full_length_inertia=False, actuators=False)
+    r = simulate(s, m, actuators=False)
     e = elastic_along_motion(s, r.kinematics, bodies=r.bodies, positions=r.sections.position,
                              subdivisions=subdivisions)
     return r, e

@@ -12,12 +12,12 @@ from __future__ import annotations
 import numpy as np
 import scipy.linalg as sla
 
-from ..kinematics.assembly import solve_structure_positions
+from .. import models
 from ..kinematics.compatibility import compatibility_matrix
 from ..model.sections import Material, Section
 from ..model.structure import Structure, build_structure
-from .buckling import euler_load, solve_buckling
-from .modal import solve_modes
+from ..fem.buckling import euler_load, solve_buckling
+from ..fem.modal import solve_modes
 
 #: Lacy, Appendix A/C code: ``E = 71.0e9``, ``ro = 2711.5``, ``G = 26.2e9``.
 ALUMINIUM = Material("aluminium", E=71.0e9, G=26.2e9, density=2711.5)
@@ -29,13 +29,13 @@ LEADSCREW_TUBE = Section.tube("leadscrew", 0.75 * INCH, 0.63 * INCH)
 #: Fixed members with Appendix D's area 9.0245e-5 m² (ID 0.62 in).
 FIXED_TUBE = Section.tube("fixed", 0.75 * INCH, 0.62 * INCH)
 
-#: Double-octahedral bay (docs/model-format.md): base side, cross-longeron length (Appendix D
+#: Double-octahedral bay (catalogue values): base side, cross-longeron length (Appendix D
 #: coordinates), active lengths at the equilibrium and the two slewed positions (1.1079 m is the
 #: short length that reproduces Tables 5.2–5.4; the thesis prints 1.1077 m).
-BASE_SIDE = 1.2192
-LONGERON = 0.889
-ACTIVE_EQUILIBRIUM = 1.1684
-ACTIVE_LONG, ACTIVE_SHORT = 1.2289, 1.1079
+BASE_SIDE = models.octahedral.BASE_SIDE
+LONGERON = models.octahedral.LONGERON
+ACTIVE_EQUILIBRIUM = models.EQUILIBRIUM_LENGTH
+ACTIVE_LONG, ACTIVE_SHORT = models.SLEW_LONG, models.SLEW_SHORT
 TOP_MASS = 4.536            # kg: the 10 lb weights on the top nodes (44.498 N / 9.81)
 
 
@@ -109,40 +109,10 @@ def modal_closed_form() -> dict:
 
 def double_octahedron(active: tuple[float, float, float] = (ACTIVE_EQUILIBRIUM,) * 3,
                       top_mass: float = TOP_MASS) -> Structure:
-    """The double-octahedral bay (9 nodes, 21 members as 18 bars + 3 active bars).
-
-    Built at the symmetric position from the base side, cross-longeron length and active
-    length (docs/model-format.md), then moved to the active lengths ``active`` by the
-    forward-position solver.  Base nodes pinned; ``top_mass`` on each top node.  Node ids
-    ``B1..B3`` (base), ``M1..M3`` (midplane), ``T1..T3`` (top); active members ``A1..A3``
-    (midplane triangle, ``A1`` = M1–M2).
-    """
-    R = BASE_SIDE / np.sqrt(3.0)
-    rm = ACTIVE_EQUILIBRIUM / np.sqrt(3.0)
-    ang = np.deg2rad(90.0 + 120.0 * np.arange(3))
-    pb = R * np.c_[np.cos(ang), np.sin(ang)]
-    pm = rm * np.c_[np.cos(ang + np.pi / 3), np.sin(ang + np.pi / 3)]
-    h = np.sqrt(LONGERON**2 - np.sum((pm[0] - pb[0]) ** 2))
-    coords = np.vstack([np.c_[pb, np.zeros(3)], np.c_[pm, np.full(3, h)],
-                        np.c_[pb, np.full(3, 2 * h)]])
-    conn, ids = [], []
-    for i in range(3):
-        j = (i + 1) % 3
-        conn += [(3 + i, 3 + j), (6 + i, 6 + j), (i, 3 + i), (j, 3 + i), (3 + i, 6 + i),
-                 (3 + i, 6 + j)]
-        ids += [f"A{i + 1}", f"T{i + 1}{j + 1}", f"L{i + 1}a", f"L{i + 1}b", f"U{i + 1}a",
-                f"U{i + 1}b"]
-    s = build_structure(coords, conn, section=FIXED_TUBE, material=ALUMINIUM,
-                        supports={0: "xyz", 1: "xyz", 2: "xyz"},
-                        masses={6: top_mass, 7: top_mass, 8: top_mass},
-                        name="double-octahedral bay",
-                        node_ids=["B1", "B2", "B3", "M1", "M2", "M3", "T1", "T2", "T3"],
-                        member_ids=ids)
-    L = s.lengths()
-    L[[0, 6, 12]] = active
-    if not np.allclose(active, ACTIVE_EQUILIBRIUM):
-        s = s.with_coords(solve_structure_positions(s, L).coords)
-    return s
+    """The double-octahedral bay of the catalogue (:func:`trussfe.models.double_octahedron`)
+    at the active lengths ``active`` (M7/8, M9/10, M11/12) with ``top_mass`` on each top node
+    and no load: the structure of the modal check."""
+    return models.double_octahedron(active, 0.0, top_mass=top_mass, name="double-octahedral bay")
 
 
 def independent_truss_modes(s: Structure, count: int) -> np.ndarray:
@@ -173,14 +143,16 @@ def independent_truss_modes(s: Structure, count: int) -> np.ndarray:
 def double_octahedron_modes(count: int = 3) -> dict:
     """First frequencies of the double-octahedral bay at its three static positions (truss
     model, consistent mass, 4.536 kg on each top node), by the FE core and by the independent
-    dense assembly; and the lumped-mass frequencies for comparison.
+    dense assembly; and the lumped-mass frequencies for comparison.  The bay is symmetric under
+    a third of a turn about z, so which active member is the long one does not change a
+    frequency or the vertical effective mass.
 
     Returns
     -------
     dict
         ``{position}_f{i}`` (FE), ``{position}_f{i}_independent`` and ``{position}_f{i}_ratio``
-        (FE / independent) for position ``equilibrium``, ``slewed_1`` (A1 long, A2, A3 short)
-        and ``slewed_2`` (A1 short, A2, A3 long); ``{position}_meff_z_fraction``: share of the
+        (FE / independent) for position ``equilibrium``, ``slewed_1`` (M7/8 long, M9/10 and
+        M11/12 short) and ``slewed_2`` (M7/8 short, the others long); ``{position}_meff_z_fraction``: share of the
         free mass in the first ``count`` modes, vertically.
     """
     positions = {"equilibrium": (ACTIVE_EQUILIBRIUM,) * 3,

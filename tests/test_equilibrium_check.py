@@ -1,0 +1,45 @@
+# SPDX-License-Identifier: MIT
+"""The global equilibrium check itself (tests/equilibrium.py, applied by tests/conftest.py to
+every static result): it is active, and it fails when a reaction is lost.
+Source: statics (zero resultant force and moment of a body at rest)."""
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+import trussfe.fem.static as static
+from trussfe.model.sections import Material, Section
+from trussfe.model.structure import build_structure
+
+
+def _frame():
+    sec = Section.tube("t", 0.1, 0.08)
+    mat = Material("steel", 2.1e11, 8.1e10, density=7850.0)
+    return build_structure([[0, 0, 0], [2, 0, 0], [2, 2, 1]], [(0, 1), (1, 2)], section=sec,
+                           material=mat, is_beam=True,
+                           supports={0: ["x", "y", "z", "rx", "ry", "rz"], 2: "xyz"},
+                           loads={1: [10.0, -20.0, 30.0, 5.0, 0.0, -7.0]},
+                           gravity=[0.0, 0.0, -9.81])
+
+
+def test_every_static_solve_is_checked():
+    """conftest.py replaces the solver by one that checks its result."""
+    assert hasattr(static.solve_static, "__wrapped__")
+
+
+def test_the_check_passes_and_fails_when_it_should(equilibrium):
+    """A frame under loads, end moments and self-weight balances; the same result with one
+    force reaction, one moment reaction or the self-weight reactions lost does not."""
+    r = static.solve_static(_frame())
+    equilibrium(r)
+    assert np.all(r.reactions[0, 3:] != 0)
+    for i, col in ((0, 1), (0, 4), (2, 0)):
+        lost = r.reactions.copy()
+        lost[i, col] = 0.0
+        with pytest.raises(AssertionError):
+            equilibrium(dataclasses.replace(r, reactions=lost))
+    weightless = static.solve_static(_frame(), self_weight=False)
+    with pytest.raises(AssertionError):
+        equilibrium(dataclasses.replace(r, reactions=weightless.reactions))
