@@ -16,6 +16,7 @@ import pkgutil
 import sys
 
 from .. import __version__
+from ..allocator import tune_allocator
 from ..errors import TrussfeError
 from ..io.toml_text import compiled_parser
 from ..threads import compute_threads
@@ -46,6 +47,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv: list[str] | None = None) -> int:
     """Run the command line; returns the exit status."""
+    tune_allocator()   # numpy temporaries reuse heap memory (trussfe.allocator): the command only
     parser = build_parser()
     args = parser.parse_args(argv)
     logging.basicConfig(level=logging.INFO if args.verbose else logging.WARNING,
