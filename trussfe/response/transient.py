@@ -20,7 +20,7 @@ locked at their instantaneous length in the FE model (their prescribed motion en
 
 with ``K``, ``M`` the pinned-beam (or truss) FE stiffness and mass in the current geometry
 (:mod:`trussfe.fem`), ``f_g`` gravity and nodal loads, and ``M ẍ_r`` the d'Alembert load of the
-rigid acceleration field (:mod:`trussfe.elastic.transient_fe`; exact Newton–Euler loads for
+rigid acceleration field (:mod:`trussfe.response.transient_fe`; exact Newton–Euler loads for
 the telescoping active members, Lacy eqs. 2.9–2.11, 4.20).  Terms of order ``u·Ω`` (Coriolis
 and centrifugal coupling of the elastic field with the member rotation rate Ω), the geometric
 stiffness of the member forces and the change of the interior DOFs' member axes within a step
@@ -64,6 +64,7 @@ import numpy as np
 import scipy.linalg as sla
 import scipy.sparse.linalg as spla
 
+from ..budget import along_motion_bytes, require
 from ..errors import AnalysisError, InputError
 from ..fem.discretisation import BAR_MODELS, FEModel, discretise
 from ..fem.solver import factorise
@@ -257,7 +258,12 @@ def motion_on_grid(motion: Motion, dt: float | None = None, t_end: float | None 
     if dt > end - t[0]:
         raise InputError("dt", f"{dt:g} s is longer than the analysed time ({end - t[0]:g} s);"
                          " the motion is too short for this step: give a smaller dt")
-    n = int(np.floor((end - t[0]) / dt * (1 + 1e-12))) + 1
+    n_float = np.floor((end - t[0]) / dt * (1 + 1e-12)) + 1
+    # the FE response at every step dwarfs the motion itself: refuse what cannot fit
+    require(along_motion_bytes(n_float, 0, motion.length.shape[1]),
+            "--dt" if t_end is None else "--dt, --t-end",
+            f"{n_float:,.0f} time steps of {dt:g} s", "give a longer time step")
+    n = int(n_float)
     tq = t[0] + dt * np.arange(n)
     L, V, A = motion.length, motion.velocity, motion.acceleration
     if end > t[-1] * (1 + 1e-12) + 1e-12:
