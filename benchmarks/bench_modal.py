@@ -31,6 +31,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from trussfe.cli import environment_workers  # noqa: E402
 from trussfe.threads import compute_threads  # noqa: E402
+from trussfe.allocator import tune_allocator  # noqa: E402
+
+tune_allocator()   # the heap reuse of the trussfe command (trussfe.allocator)
 from trussfe.fem import discretise  # noqa: E402
 from trussfe.fem.modal import RESOLVED_RESIDUAL, mass_matrix, solve_modes  # noqa: E402
 from trussfe.linalg import free_submatrix  # noqa: E402

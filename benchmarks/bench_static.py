@@ -44,6 +44,9 @@ from trussfe.models import double_octahedral_chain  # noqa: E402
 from trussfe.cli import environment_workers  # noqa: E402
 from trussfe.io.toml_text import compiled_parser  # noqa: E402
 from trussfe.threads import compute_threads  # noqa: E402
+from trussfe.allocator import tune_allocator  # noqa: E402
+
+tune_allocator()   # the heap reuse of the trussfe command (trussfe.allocator)
 
 
 

@@ -215,3 +215,22 @@ def test_linalg_sits_below_the_solvers():
                     (path.name, node.module)
             elif isinstance(node, ast.Import):
                 assert not any(a.name.startswith("trussfe") for a in node.names), path.name
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_determinant_sign_and_transposed_solve(seed):
+    """The sign of det A from the pivots and the permutations' parity equals numpy's slogdet
+    sign on random sparse nonsymmetric matrices; the transposed solve solves Aᵀ x = b (dense
+    reference); symmetric factorisations give (−1)^inertia."""
+    rng = np.random.default_rng(seed)
+    n = 50
+    A = rng.normal(size=(n, n)) * (rng.random((n, n)) < 0.15) + np.diag(rng.normal(size=n))
+    b = rng.normal(size=n)
+    f = factor(sp.csr_matrix(A), "general", "superlu")
+    assert f.determinant_sign == int(np.linalg.slogdet(A)[0])
+    assert_allclose(A.T @ f.solve(b, transpose=True), b, atol=1e-8 * np.linalg.cond(A))
+    S = _indefinite(n, seed)
+    g = factor(sp.csr_matrix(S), "symmetric", "superlu")
+    assert g.determinant_sign == int(np.linalg.slogdet(S)[0]) == (-1) ** g.inertia
+    assert factor(sp.csr_matrix([[1.0, 2.0], [2.0, 4.0]]), "general",
+                  singular="flag").determinant_sign == 0

@@ -23,6 +23,7 @@ from typing import Iterator
 import numpy as np
 
 from .. import __version__
+from ..allocator import tune_allocator
 from ..errors import TrussfeError, one_line
 from ..io.output import output_transaction
 from ..io.toml_text import compiled_parser
@@ -102,6 +103,7 @@ def main(argv: list[str] | None = None) -> int:
     Exit status: 0 success, 1 a validation check failed, 2 bad input or an analysis that
     cannot be carried out (one line on stderr), 3 an internal fault, 130 interrupted (Ctrl-C).
     """
+    tune_allocator()   # numpy temporaries reuse heap memory (trussfe.allocator): the command only
     try:
         parser = build_parser()
         args = parser.parse_args(argv)

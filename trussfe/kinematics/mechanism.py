@@ -33,7 +33,7 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
-from ..linalg import factor
+from ..linalg import SingularMatrixError, factor
 from ..mechanics.geometry import member_vectors
 from .compatibility import compatibility_matrix
 
@@ -270,33 +270,17 @@ def pivoted_partition(B: np.ndarray, n_independent: int | None = None) -> tuple[
 
 
 # --------------------------------------------------------------------------- tangent, test function
-def _perm_parity(perm: np.ndarray) -> int:
-    """Parity (0 even, 1 odd) of a permutation, vectorised by pointer doubling."""
-    n = perm.size
-    lab = np.arange(n)
-    p = perm.copy()
-    for _ in range(max(1, int(np.ceil(np.log2(max(n, 2)))) + 1)):
-        lab = np.minimum(lab, lab[p])
-        p = p[p]
-    cycles = int(np.sum(lab == np.arange(n)))
-    return (n - cycles) % 2
-
-
 def _augmented_tangent(B: sp.csr_matrix, c: np.ndarray, return_lu: bool = False):
     """Tangent τ with ``B τ = 0, cᵀ τ = 1`` and the sign of ``det [B; cᵀ]`` (sparse LU)."""
-    A = sp.vstack([B, sp.csr_matrix(c[None, :])]).tocsc()
-    try:
-        lu = spla.splu(A)
-    except RuntimeError:
-        return None, 0
-    diag = lu.U.diagonal()
-    if np.abs(diag).min() <= 1e-13 * max(np.abs(diag).max(), 1.0):
+    A = sp.vstack([B, sp.csr_matrix(c[None, :])]).tocsr()
+    # SuperLU's LU whatever the size: it gives the determinant sign and transposed solves
+    lu = factor(A, "general", "superlu", singular="flag")
+    if lu.is_singular:
         return None, 0
     rhs = np.zeros(A.shape[0])
     rhs[-1] = 1.0
-    tau = lu.solve(rhs)
-    sign = int(np.prod(np.sign(diag)))
-    sign *= (-1) ** (_perm_parity(lu.perm_r) + _perm_parity(lu.perm_c))
+    tau = lu.solve(rhs, refine=False)
+    sign = lu.determinant_sign
     if return_lu:
         return tau, sign, lu
     return tau, sign
@@ -318,7 +302,7 @@ def _chord_corrector(x0, conn, L, fidx, pred, lu, p, tol, max_iterations) -> Ste
         if res <= tol or not np.isfinite(res) or it == max_iterations:
             break
         rhs[:-1] = -t
-        d = d + lu.solve(rhs)
+        d = d + lu.solve(rhs, refine=False)
     return StepResult(increments=d, iterations=it, residual=res,
                       converged=bool(res <= tol))
 
@@ -377,7 +361,8 @@ def _test_function(x, conn, free, c, rows=None) -> float:
     a limit point.  Its sign is that of the determinant (by LU with the permutations' parity,
     never the determinant's value, which under- or overflows); the magnitude comes from an
     exact SVD up to the dense limit and from four steps of inverse iteration on ``AᵀA`` with
-    the same LU above it.  Returns 0.0 when the matrix is exactly singular or not square.
+    the same LU above it.  Returns 0.0 when the matrix is singular
+    (:mod:`trussfe.linalg.tolerance`) or not square.
     """
     B = compatibility_matrix(x, conn, free)
     if rows is not None and rows.size != B.shape[0]:
@@ -390,28 +375,26 @@ def _test_function(x, conn, free, c, rows=None) -> float:
         Ad = A.toarray()
         sign = np.linalg.slogdet(Ad)[0]
         return float(sign * np.linalg.svd(Ad, compute_uv=False)[-1])
-    try:
-        lu = spla.splu(A)
-    except RuntimeError:
+    lu = factor(A.tocsr(), "general", "superlu", singular="flag")
+    if lu.is_singular:                 # singular under trussfe.linalg.tolerance: the zero
         return 0.0
-    diag = lu.U.diagonal()
-    if np.any(diag == 0):
-        return 0.0
-    sign = int(np.prod(np.sign(diag)))
-    sign *= (-1) ** (_perm_parity(lu.perm_r) + _perm_parity(lu.perm_c))
-    return float(sign * _lu_smallest_singular(lu))
+    return float(lu.determinant_sign * _lu_smallest_singular(lu))
 
 
 def _lu_smallest_singular(lu) -> float:
-    """Smallest singular value of a SuperLU-factorised matrix A, estimated by two steps of power
-    iteration on ``(AᵀA)⁻¹`` (two solves each) from a fixed start: an estimate from above,
-    within a small factor — enough to see the test function dip towards zero."""
-    n = lu.shape[0]
+    """Smallest singular value of a factorised matrix A (:class:`trussfe.linalg.Factor` with
+    transposed solves), estimated by two steps of power iteration on ``(AᵀA)⁻¹`` (two solves
+    each) from a fixed start: an estimate from above, within a small factor — enough to see
+    the test function dip towards zero."""
+    n = lu.n
     v = np.random.default_rng(0).normal(size=n)
     v /= np.linalg.norm(v)
     lam = 1.0
     for _ in range(2):
-        z = lu.solve(lu.solve(v, trans="T"))
+        try:
+            z = lu.solve(lu.solve(v, refine=False, transpose=True), refine=False)
+        except SingularMatrixError:                # an overflowing (non-finite) solution
+            return 0.0
         lam = float(np.linalg.norm(z))
         if not np.isfinite(lam) or lam == 0.0:
             return 0.0

@@ -106,6 +106,10 @@ class Factor:
     is_singular : bool
         Singular under :data:`~trussfe.linalg.tolerance.SINGULAR_PIVOT`; :meth:`solve` then
         raises.
+    determinant_sign : int or None
+        Sign of ``det A`` (+1 or −1; 0 when singular) where the factorisation gives it — from
+        the pivots and the parity of the permutations, never from the determinant's value,
+        which under- or overflows — else None.
     residuals : list of float
         Relative residual ‖A x − b‖/‖b‖ of every refined solve, for reporting.
     """
@@ -120,9 +124,12 @@ class Factor:
     _solve: Callable | None = field(repr=False, default=None)
     residuals: list = field(default_factory=list)
     reason: str = ""
+    determinant_sign: int | None = None
+    _solve_transposed: Callable | None = field(repr=False, default=None)
 
-    def solve(self, b: np.ndarray, refine: bool = True) -> np.ndarray:
-        """Solve ``A x = b`` (b of shape (n,) or (n, k)).
+    def solve(self, b: np.ndarray, refine: bool = True, transpose: bool = False) -> np.ndarray:
+        """Solve ``A x = b`` (b of shape (n,) or (n, k)); ``Aᵀ x = b`` with ``transpose``
+        (without refinement; the symmetric kinds and SuperLU's LU).
 
         Raises
         ------
@@ -132,6 +139,13 @@ class Factor:
         if self.is_singular:
             raise SingularMatrixError(self.reason or "singular matrix")
         b = np.asarray(b, dtype=float)
+        if transpose and self.kind == "general":
+            if self._solve_transposed is None:
+                raise ValueError(f"no transposed solve with the {self.backend} backend")
+            x = self._solve_transposed(b)
+            if not np.all(np.isfinite(x)):
+                raise SingularMatrixError("non-finite solution")
+            return x
         x = self._solve(b)
         if refine:
             x = self._refine(b, x)
@@ -239,9 +253,11 @@ def factor(A, kind: str = "general", backend: str = "auto", *,
         band = banded_factor(layout=layout) if layout is not None else None
         if band is not None:
             log.debug("factorised %d unknowns (%s)", n, band.kind)
+            chol = band.kind == "banded"               # positive definite: det > 0
             return Factor(matrix=A, backend=band.kind, kind=kind, n=n,
-                          inertia=0 if band.kind == "banded" else None,
-                          pivot_ratio=band.pivot_ratio, is_singular=False, _solve=band.solve)
+                          inertia=0 if chol else None, pivot_ratio=band.pivot_ratio,
+                          is_singular=False, _solve=band.solve,
+                          determinant_sign=1 if chol else None)
     used = general_backend(backend, n)
     M = _csr(A)
     if used == "pardiso":
@@ -265,7 +281,31 @@ def _csr(A) -> sp.csr_matrix:
 
 def _singular(M, backend: str, kind: str, reason: str, ratio: float = 0.0) -> Factor:
     return Factor(matrix=M, backend=backend, kind=kind, n=M.shape[0], inertia=None,
-                  pivot_ratio=ratio, is_singular=True, reason=reason)
+                  pivot_ratio=ratio, is_singular=True, reason=reason, determinant_sign=0)
+
+
+def permutation_parity(perm: np.ndarray) -> int:
+    """Parity (0 even, 1 odd) of a permutation, vectorised by pointer doubling.
+
+    Examples
+    --------
+    >>> permutation_parity(np.array([1, 0, 2])), permutation_parity(np.array([1, 2, 0]))
+    (1, 0)
+    """
+    n = perm.size
+    lab = np.arange(n)
+    p = perm.copy()
+    for _ in range(max(1, int(np.ceil(np.log2(max(n, 2)))) + 1)):
+        lab = np.minimum(lab, lab[p])
+        p = p[p]
+    cycles = int(np.sum(lab == np.arange(n)))
+    return (n - cycles) % 2
+
+
+def _lu_sign(lu, d: np.ndarray) -> int:
+    """Sign of det A from SuperLU's ``Pr A Pc = L U`` (unit L)."""
+    sign = int(np.prod(np.sign(d)))
+    return sign * (-1) ** (permutation_parity(lu.perm_r) + permutation_parity(lu.perm_c))
 
 
 def _ratio(d: np.ndarray) -> float:
@@ -290,7 +330,9 @@ def _superlu(M: sp.csr_matrix, kind: str) -> Factor:
         return _singular(M, "superlu", kind, f"pivot {a.min():.3g} against {a.max():.3g}",
                          ratio)
     return Factor(matrix=M, backend="superlu", kind=kind, n=n, inertia=None,
-                  pivot_ratio=ratio, is_singular=False, _solve=lu.solve)
+                  pivot_ratio=ratio, is_singular=False, _solve=lu.solve,
+                  determinant_sign=_lu_sign(lu, d),
+                  _solve_transposed=lambda b: lu.solve(b, trans="T"))
 
 
 def _superlu_symmetric(M: sp.csr_matrix) -> Factor:
@@ -312,13 +354,15 @@ def _superlu_symmetric(M: sp.csr_matrix) -> Factor:
         d = lu.U.diagonal()
         neg = int(np.sum(sla.eigvalsh(K.toarray()) < 0)) if n <= INERTIA_DENSE_LIMIT else None
         return Factor(matrix=M, backend="superlu", kind="symmetric", n=n, inertia=neg,
-                      pivot_ratio=_ratio(d), is_singular=False, _solve=lu.solve)
+                      pivot_ratio=_ratio(d), is_singular=False, _solve=lu.solve,
+                      determinant_sign=_lu_sign(lu, d))
     ratio = _ratio(d)
     if ratio <= SINGULAR_PIVOT:
         return _singular(M, "superlu", "symmetric", "zero pivot", ratio)
-    return Factor(matrix=M, backend="superlu", kind="symmetric", n=n,
-                  inertia=int(np.sum(d < 0)), pivot_ratio=ratio, is_singular=False,
-                  _solve=lu.solve)
+    neg = int(np.sum(d < 0))
+    return Factor(matrix=M, backend="superlu", kind="symmetric", n=n, inertia=neg,
+                  pivot_ratio=ratio, is_singular=False, _solve=lu.solve,
+                  determinant_sign=(-1) ** neg)
 
 
 def _pardiso(M: sp.csr_matrix, kind: str) -> Factor:
@@ -331,4 +375,5 @@ def _pardiso(M: sp.csr_matrix, kind: str) -> Factor:
     if perturbed > 0:
         return _singular(M, "pardiso", kind, f"{perturbed} perturbed pivot(s)", float("nan"))
     return Factor(matrix=M, backend="pardiso", kind=kind, n=M.shape[0], inertia=negative,
-                  pivot_ratio=float("nan"), is_singular=False, _solve=solve)
+                  pivot_ratio=float("nan"), is_singular=False, _solve=solve,
+                  determinant_sign=None if negative is None else (-1) ** negative)
