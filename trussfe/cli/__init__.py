@@ -14,6 +14,8 @@ import logging
 import os
 import pkgutil
 import sys
+from collections.abc import Iterator
+from contextlib import contextmanager
 
 from .. import __version__
 from ..errors import TrussfeError
@@ -48,13 +50,12 @@ def main(argv: list[str] | None = None) -> int:
     """Run the command line; returns the exit status."""
     parser = build_parser()
     args = parser.parse_args(argv)
-    logging.basicConfig(level=logging.INFO if args.verbose else logging.WARNING,
-                        format="trussfe: %(message)s", stream=sys.stderr)
     try:
         # the one place thread counts are set (trussfe.threads): workers from the
         # environment, one BLAS thread; large model files through the compiled TOML parser
-        # (trussfe.io.toml_text)
-        with compute_threads(workers=environment_workers(), blas=1), compiled_parser():
+        # (trussfe.io.toml_text); all of it, and the log output, only for this run
+        with _run_logging(args.verbose), \
+                compute_threads(workers=environment_workers(), blas=1), compiled_parser():
             return int(args.func(args) or 0)
     except TrussfeError as err:
         sys.stderr.write(f"trussfe: error: {err}\n")
@@ -68,6 +69,32 @@ def main(argv: list[str] | None = None) -> int:
         sys.stderr.write(f"trussfe: error: internal error ({type(exc).__name__}: {exc}); "
                          "rerun with TRUSSFE_DEBUG=1 for a traceback\n")
         return 3
+
+
+@contextmanager
+def _run_logging(verbose: bool) -> Iterator[None]:
+    """Log records to stderr as ``trussfe: message`` (INFO with ``--verbose``, else WARNING)
+    for the duration of one run.
+
+    As :func:`logging.basicConfig`, but undone at the end: a program that calls :func:`main`
+    keeps its logging as it was.  A program that has configured logging (a root handler)
+    keeps its own handlers and levels, as basicConfig would leave them.
+    """
+    root = logging.getLogger()
+    if root.handlers:
+        yield
+        return
+    handler = logging.StreamHandler(sys.stderr)
+    handler.setFormatter(logging.Formatter("trussfe: %(message)s"))
+    level = root.level
+    root.addHandler(handler)
+    root.setLevel(logging.INFO if verbose else logging.WARNING)
+    try:
+        yield
+    finally:
+        root.removeHandler(handler)
+        root.setLevel(level)
+        handler.close()
 
 
 def environment_workers() -> int | None:
