@@ -99,17 +99,18 @@ def test_analyses_and_plots_leave_process_state_unchanged():
 
 
 def test_command_line_restores_logging(capsys):
-    """The command line logs to stderr for its own run only: the root logger's handlers and
-    level are as before once :func:`trussfe.cli.main` returns."""
+    """The command line logs to stderr for its own run only: the root and ``trussfe``
+    loggers' handlers and levels are as before once :func:`trussfe.cli.main` returns."""
     import logging
 
-    root = logging.getLogger()
+    root, own = logging.getLogger(), logging.getLogger("trussfe")
     saved = root.handlers[:]
     root.handlers.clear()                   # as a program that has not configured logging
     try:
-        level = root.level
-        assert main(["static", str(_static_model())]) == 0
-        assert root.handlers == [] and root.level == level
+        before = (root.level, own.level, own.handlers[:])
+        assert main(["-v", "static", str(_static_model())]) == 0
+        assert "trussfe: " in capsys.readouterr().err          # it did log, during the run
+        assert root.handlers == [] and (root.level, own.level, own.handlers) == before
     finally:
         root.handlers[:] = saved
 

@@ -281,7 +281,7 @@ def test_cli_transient_json_plot_and_errors(tmp_path, capsys):
     assert main(["transient", model, "--motion", "triangular_truss_motion_3s.toml",
                  "--dt", "0"]) == 2
     err = capsys.readouterr().err.strip()
-    assert err.startswith("trussfe: error: dt:") and "\n" not in err
+    assert err.startswith("trussfe: error: --dt:") and "\n" not in err
 
 
 def test_cli_transient_vtk_series(tmp_path, capsys):

@@ -7,6 +7,35 @@ the command line prints it as ``trussfe: error: <item>: ...`` and exits with sta
 """
 from __future__ import annotations
 
+#: Longest message printed; a longer one is cut (a huge id or value must not flood a terminal).
+MAX_MESSAGE_CHARS = 2000
+
+
+def one_line(text: str, limit: int = MAX_MESSAGE_CHARS) -> str:
+    """``text`` with control characters escaped (``\\n``, ``\\t``, ``\\x1b``) and cut to
+    ``limit`` characters, so that a message is always one line of a terminal's log.
+
+    Examples
+    --------
+    >>> one_line("node 'A\\nB'")
+    "node 'A\\\\nB'"
+    """
+    if text.isprintable() and len(text) <= limit:
+        return text
+    out = []
+    for ch in text:
+        if ch.isprintable():
+            out.append(ch)
+        else:
+            esc = repr(ch)[1:-1]
+            out.append(esc if esc != ch else f"\\u{ord(ch):04x}")
+    s = "".join(out)
+    if len(s) > limit:              # keep both ends: the item and what is wrong with it
+        head = limit // 2
+        tail = limit - head - 40
+        s = f"{s[:head]} ... [{len(s) - head - tail} characters] ... {s[-tail:]}"
+    return s
+
 
 class TrussfeError(Exception):
     """Base class of every error that is reported to the user in one line.
@@ -24,7 +53,7 @@ class TrussfeError(Exception):
     def __init__(self, item: str, message: str):
         self.item = item
         self.message = message
-        super().__init__(f"{item}: {message}" if item else message)
+        super().__init__(one_line(f"{item}: {message}" if item else message))
 
     def with_file(self, filename: str) -> "TrussfeError":
         """Return a copy of the error whose item is prefixed with ``filename``."""
@@ -39,6 +68,10 @@ class TrussfeError(Exception):
 
 class InputError(TrussfeError):
     """A model file, motion file or option that is malformed or inconsistent."""
+
+
+class OutputError(TrussfeError):
+    """A result file or folder that cannot be written (full disk, removed folder, ...)."""
 
 
 class AnalysisError(TrussfeError):

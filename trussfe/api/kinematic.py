@@ -3,7 +3,7 @@
 :func:`trace` (finite-mechanism motion, Hortobágyi's algorithm)."""
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import ClassVar
 
@@ -39,7 +39,7 @@ def mechanism(model: ModelLike, *, tolerance: float | None = None) -> MechanismR
 
 def trace(model: ModelLike, *, drive: str | Sequence[str], step: float | Sequence[float],
           steps: int, branch: int = 0, tolerance: float = 1e-10,
-          frozen: bool = False) -> TraceResult:
+          frozen: bool = False, progress: Callable[[int], None] | None = None) -> TraceResult:
     """Follow the motion of an inextensional bar-and-joint mechanism (``trussfe trace``),
     with its bifurcation and limit points.
 
@@ -58,6 +58,9 @@ def trace(model: ModelLike, *, drive: str | Sequence[str], step: float | Sequenc
         Relative bar-length tolerance of the corrector.
     frozen : bool
         Keep B11 of the predicted state (the paper's iteration) instead of Newton's refresh.
+    progress : callable, optional
+        Called with the step number before every step (a progress bar; it may raise
+        ``KeyboardInterrupt`` to stop the trace).
 
     Returns
     -------
@@ -79,7 +82,8 @@ def trace(model: ModelLike, *, drive: str | Sequence[str], step: float | Sequenc
         raise InputError("--branch", f"must be 0 or more, got {branch}")
     structure = as_structure(model)
     r = trace_structure(structure, drives, steps_ if len(steps_) > 1 else steps_[0], steps,
-                        branch=branch, tolerance=tolerance, newton=not frozen)
+                        branch=branch, tolerance=tolerance, newton=not frozen,
+                        progress=progress)
     return TraceResult(structure, r, options={"drive": drives, "step": steps_,
                                               "steps": steps, "branch": branch})
 

@@ -9,25 +9,39 @@ no other file.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import importlib
 import logging
 import os
 import pkgutil
+import signal
 import sys
-from collections.abc import Iterator
-from contextlib import contextmanager
+import threading
+import warnings
+from typing import Iterator
+
+import numpy as np
 
 from .. import __version__
-from ..errors import TrussfeError
+from ..errors import TrussfeError, one_line
+from ..io.output import output_transaction
 from ..io.toml_text import compiled_parser
 from ..threads import compute_threads
+from .options import check_paths
+
+#: What a numerical overflow in a run usually means, appended to its message.
+UNITS_HINT = ("a value is out of the range of floating-point numbers; check the units "
+              "(SI: m, N, Pa, kg, s) and the magnitudes of loads, moduli and lengths")
 
 
 class _Parser(argparse.ArgumentParser):
     """argparse with the contract's one-line error format and exit status 2."""
 
     def error(self, message: str) -> None:  # pragma: no cover - exercised via CLI tests
-        sys.stderr.write(f"trussfe: error: {message}\n")
+        # "argument --json: ..." -> "--json: ...": the option is the item at fault
+        if message.startswith("argument "):
+            message = message[len("argument "):]
+        sys.stderr.write(f"trussfe: error: {one_line(message)}\n")
         raise SystemExit(2)
 
 
@@ -46,55 +60,122 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
-def main(argv: list[str] | None = None) -> int:
-    """Run the command line; returns the exit status."""
-    parser = build_parser()
-    args = parser.parse_args(argv)
-    try:
-        # the one place thread counts are set (trussfe.threads): workers from the
-        # environment, one BLAS thread; large model files through the compiled TOML parser
-        # (trussfe.io.toml_text); all of it, and the log output, only for this run
-        with _run_logging(args.verbose), \
-                compute_threads(workers=environment_workers(), blas=1), compiled_parser():
-            return int(args.func(args) or 0)
-    except TrussfeError as err:
-        sys.stderr.write(f"trussfe: error: {err}\n")
-        return err.exit_status
-    except KeyboardInterrupt:
-        sys.stderr.write("trussfe: error: interrupted\n")
-        return 130
-    except Exception as exc:  # an internal fault: one line, traceback only on request
-        if os.environ.get("TRUSSFE_DEBUG"):
-            raise
-        sys.stderr.write(f"trussfe: error: internal error ({type(exc).__name__}: {exc}); "
-                         "rerun with TRUSSFE_DEBUG=1 for a traceback\n")
-        return 3
+@contextlib.contextmanager
+def _numerics_checked() -> Iterator[list]:
+    """Floating-point overflow, division by zero and invalid operations raise instead of
+    printing a warning line; other library warnings are collected (logged with ``-v``).
 
-
-@contextmanager
-def _run_logging(verbose: bool) -> Iterator[None]:
-    """Log records to stderr as ``trussfe: message`` (INFO with ``--verbose``, else WARNING)
-    for the duration of one run.
-
-    As :func:`logging.basicConfig`, but undone at the end: a program that calls :func:`main`
-    keeps its logging as it was.  A program that has configured logging (a root handler)
-    keeps its own handlers and levels, as basicConfig would leave them.
+    This is the command line's own setting for the duration of one run, restored after it;
+    library code never changes warning filters.
     """
-    root = logging.getLogger()
-    if root.handlers:
+    with warnings.catch_warnings(record=True) as caught, \
+            np.errstate(over="raise", divide="raise", invalid="raise", under="ignore"):
+        warnings.simplefilter("always")
+        for quiet in (DeprecationWarning, PendingDeprecationWarning, FutureWarning,
+                      ImportWarning, ResourceWarning):
+            warnings.simplefilter("ignore", quiet)
+        warnings.simplefilter("error", RuntimeWarning)
+        yield caught
+
+
+@contextlib.contextmanager
+def _interrupts_held() -> Iterator[None]:
+    """Hold Ctrl-C back while the outputs are renamed into place (all or none)."""
+    if threading.current_thread() is not threading.main_thread():
         yield
         return
-    handler = logging.StreamHandler(sys.stderr)
-    handler.setFormatter(logging.Formatter("trussfe: %(message)s"))
-    level = root.level
-    root.addHandler(handler)
-    root.setLevel(logging.INFO if verbose else logging.WARNING)
+    old = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
     try:
         yield
     finally:
-        root.removeHandler(handler)
-        root.setLevel(level)
-        handler.close()
+        signal.pthread_sigmask(signal.SIG_SETMASK, old)
+
+
+def _error(item: str, message: str) -> None:
+    sys.stderr.write("trussfe: error: " + one_line(f"{item}: {message}" if item else message)
+                     + "\n")
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run the command line; returns the exit status.
+
+    Exit status: 0 success, 1 a validation check failed, 2 bad input or an analysis that
+    cannot be carried out (one line on stderr), 3 an internal fault, 130 interrupted (Ctrl-C).
+    """
+    try:
+        parser = build_parser()
+        args = parser.parse_args(argv)
+    except SystemExit as stop:      # --help, --version, or a bad option (message printed)
+        return stop.code if isinstance(stop.code, int) else 2
+    except KeyboardInterrupt:
+        _error("", "interrupted")
+        return 130
+    clash = check_paths(args)
+    if clash:
+        _error("", clash)
+        return 2
+    # the run's own log handler on the "trussfe" logger (messages as "trussfe: ..." on the
+    # stderr of this run), removed again afterwards: main() may run many times in a process
+    log = logging.getLogger("trussfe")
+    handler = logging.StreamHandler(sys.stderr)
+    handler.setFormatter(logging.Formatter("trussfe: %(message)s"))
+    old_level = log.level
+    log.setLevel(logging.INFO if args.verbose else logging.WARNING)
+    log.addHandler(handler)
+    try:
+        return _run_command(args)
+    finally:
+        log.removeHandler(handler)
+        log.setLevel(old_level)
+
+
+def _run_command(args: argparse.Namespace) -> int:
+    """Run the parsed command inside one output transaction; map failures to exit codes."""
+    where = getattr(args, "model", None) or ""
+    try:
+        # the one place thread counts are set (trussfe.threads): workers from the
+        # environment, one BLAS thread; large model files through the compiled TOML parser
+        # (trussfe.io.toml_text)
+        with _numerics_checked() as caught, output_transaction() as tx, \
+                compute_threads(workers=environment_workers(), blas=1), compiled_parser():
+            status = int(args.func(args) or 0)
+            sys.stdout.flush()          # a closed pipe is found here, before the commit
+            with _interrupts_held():
+                tx.commit()
+        for w in caught:
+            logging.getLogger("trussfe").info("note: %s", one_line(str(w.message)))
+        return status
+    except TrussfeError as err:
+        sys.stderr.write(f"trussfe: error: {one_line(str(err))}\n")
+        return err.exit_status
+    except KeyboardInterrupt:
+        _error("", "interrupted; no output written")
+        return 130
+    except (FloatingPointError, OverflowError, RuntimeWarning, np.linalg.LinAlgError) as exc:
+        _error(where, f"numerical failure ({one_line(str(exc), 200)}): {UNITS_HINT}")
+        return 2
+    except MemoryError:
+        _error(where, "out of memory: the analysis needs more memory than this machine has; "
+                      "use a coarser model or fewer steps")
+        return 2
+    except RecursionError:
+        _error(where, "the input nests too deeply to be processed")
+        return 2
+    except BrokenPipeError:
+        # the reader of stdout went away (`trussfe ... | head`): nothing left to tell it
+        with contextlib.suppress(OSError):
+            os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 128 + signal.SIGPIPE
+    except OSError as exc:
+        # the machine refused a file operation (permissions, a vanished folder, a full disk)
+        _error(str(exc.filename or where), exc.strerror or str(exc))
+        return 2
+    except Exception as exc:  # an internal fault: one line, traceback only on request
+        if os.environ.get("TRUSSFE_DEBUG"):
+            raise
+        _error("", f"internal error ({type(exc).__name__}: {one_line(str(exc), 300)}); "
+                   "rerun with TRUSSFE_DEBUG=1 for a traceback")
+        return 3
 
 
 def environment_workers() -> int | None:
@@ -109,4 +190,9 @@ def environment_workers() -> int | None:
 
 def run() -> None:
     """Console-script entry point."""
-    sys.exit(main())
+    try:
+        status = main()
+    except KeyboardInterrupt:       # Ctrl-C between two of main's own handlers
+        _error("", "interrupted; no output written")
+        status = 130
+    sys.exit(status)

@@ -13,6 +13,7 @@ import argparse
 
 from .. import api
 from ..io.output import write_json
+from . import options as opt
 
 
 def register(subparsers) -> None:
@@ -21,10 +22,10 @@ def register(subparsers) -> None:
         "actuators", help="leadscrew and motor demands of the actuators along a motion",
         description="Self-locking check, gains, peak actuator force, motor speed, torque, "
         "current and voltage (with and without friction) of every [actuators] entry.")
-    p.add_argument("model", help="model file (TOML) with [active_members] and [actuators]")
-    p.add_argument("--motion", help="motion file: TOML [motion] spec or CSV history")
-    p.add_argument("--steps", type=int, help="number of time steps of a generated motion")
-    p.add_argument("--json", metavar="OUT", help="write the summary as JSON")
+    p.add_argument("model", type=opt.input_file, help="model file (TOML) with [active_members] and [actuators]")
+    p.add_argument("--motion", type=opt.input_file, help="motion file: TOML [motion] spec or CSV history")
+    p.add_argument("--steps", type=opt.positive_int, help="number of time steps of a generated motion")
+    p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the summary as JSON")
     p.set_defaults(func=_run)
 
 

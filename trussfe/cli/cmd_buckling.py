@@ -15,6 +15,7 @@ from ..fem.buckling import BucklingResult
 from ..fem.discretisation import BAR_MODELS
 from ..io.output import write_json
 from ._modeshapes import write_modes_vtk
+from . import options as opt
 
 
 def register(subparsers) -> None:
@@ -23,16 +24,16 @@ def register(subparsers) -> None:
                               description="Linear buckling about the static state under the "
                               "model's loads and gravity: load factors (smallest magnitude "
                               "first, negative = reversed loads), modes, member Euler loads.")
-    p.add_argument("model", help="model file (TOML)")
-    p.add_argument("--count", type=int, default=4, metavar="N",
+    p.add_argument("model", type=opt.input_file, help="model file (TOML)")
+    p.add_argument("--count", type=opt.positive_int, default=4, metavar="N",
                    help="number of load factors (default 4)")
     p.add_argument("--bar-model", choices=BAR_MODELS, default="pinned-beam",
                    help="pinned beams (default: members buckle between joints) or "
                    "axial-only truss bars (joint instability only)")
-    p.add_argument("--subdivisions", type=int, default=None, metavar="K",
+    p.add_argument("--subdivisions", type=opt.positive_int, default=None, metavar="K",
                    help="elements per frame member (default 4)")
-    p.add_argument("--json", metavar="OUT", help="write the results as JSON")
-    p.add_argument("--vtk", metavar="DIR", help="write DIR/buckling.pvd, a step per mode")
+    p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the results as JSON")
+    p.add_argument("--vtk", metavar="DIR", type=opt.output_dir, help="write DIR/buckling.pvd, a step per mode")
     p.set_defaults(func=_main)
 
 

@@ -9,6 +9,7 @@ import numpy as np
 
 from .. import api
 from ..io.output import write_json
+from . import options as opt
 
 
 def register(subparsers) -> None:
@@ -19,17 +20,17 @@ def register(subparsers) -> None:
         "current configuration under gravity and the d'Alembert loads of the rigid-body "
         "motion: displacements, reactions, section forces and strains, compared with the "
         "rigid-body model's internal forces. Without --motion the model is analysed at rest.")
-    p.add_argument("model", help="model file (TOML), with [active_members] if it moves")
-    p.add_argument("--motion", help="motion file: TOML [motion] spec or CSV history")
-    p.add_argument("--steps", type=int, help="number of time steps of a generated motion")
+    p.add_argument("model", type=opt.input_file, help="model file (TOML), with [active_members] if it moves")
+    p.add_argument("--motion", type=opt.input_file, help="motion file: TOML [motion] spec or CSV history")
+    p.add_argument("--steps", type=opt.positive_int, help="number of time steps of a generated motion")
     p.add_argument("--scheme", choices=("exact", "thesis"), default="exact",
                    help="kinematics: exact (default) or Lacy's backward differences")
-    p.add_argument("--sections", type=int, default=7,
+    p.add_argument("--sections", type=opt.positive_int, default=7,
                    help="sections per member tube compared with the rigid model (default 7)")
-    p.add_argument("--subdivisions", type=int,
+    p.add_argument("--subdivisions", type=opt.positive_int,
                    help="elements per member (default sections - 1)")
-    p.add_argument("--json", metavar="OUT", help="write the results as JSON")
-    p.add_argument("--vtk", metavar="DIR", help="write a .pvd time series")
+    p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the results as JSON")
+    p.add_argument("--vtk", metavar="DIR", type=opt.output_dir, help="write a .pvd time series")
     p.set_defaults(func=_run)
 
 

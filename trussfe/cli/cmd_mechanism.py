@@ -11,16 +11,17 @@ import sys
 
 from .. import api
 from ..io.output import write_json
+from . import options as opt
 
 
 def register(subparsers) -> None:
     """Add the ``mechanism`` command."""
     p = subparsers.add_parser("mechanism", help="rank analysis: mechanisms and self-stress states",
                               description=__doc__.splitlines()[0].strip("`"))
-    p.add_argument("model", help="model file (TOML)")
-    p.add_argument("--json", metavar="OUT", help="write the results as JSON")
-    p.add_argument("--vtk", metavar="DIR", help="write mechanism shapes and self-stress states")
-    p.add_argument("--tolerance", type=float, default=None,
+    p.add_argument("model", type=opt.input_file, help="model file (TOML)")
+    p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the results as JSON")
+    p.add_argument("--vtk", metavar="DIR", type=opt.output_dir, help="write mechanism shapes and self-stress states")
+    p.add_argument("--tolerance", type=opt.relative_tolerance, default=None,
                    help="relative singular-value tolerance (default max(b, f)·1e3·eps)")
     p.set_defaults(func=_run)
 

@@ -13,6 +13,7 @@ from .. import api
 from ..fem.modal import DEFAULT_MODE_COUNT, MASS_KINDS, ModalResult
 from ..io.output import write_json
 from ._modeshapes import write_modes_vtk
+from . import options as opt
 
 
 def register(subparsers) -> None:
@@ -21,8 +22,8 @@ def register(subparsers) -> None:
                               description="Modal analysis: the lowest natural frequencies, "
                               "mass-normalised mode shapes, participation factors and "
                               "effective masses.")
-    p.add_argument("model", help="model file (TOML)")
-    p.add_argument("--count", type=int, default=None, metavar="N",
+    p.add_argument("model", type=opt.input_file, help="model file (TOML)")
+    p.add_argument("--count", type=opt.positive_int, default=None, metavar="N",
                    help="number of modes (default 6, or all there are when the model has "
                    "fewer free DOFs that carry mass)")
     p.add_argument("--mass", choices=MASS_KINDS, default="consistent",
@@ -30,10 +31,10 @@ def register(subparsers) -> None:
     p.add_argument("--bar-model", choices=BAR_MODELS, default="truss",
                    help="bars as axial-only truss elements (default) or as pinned beams, "
                    "which adds the members' own bending modes")
-    p.add_argument("--subdivisions", type=int, default=None, metavar="K",
+    p.add_argument("--subdivisions", type=opt.positive_int, default=None, metavar="K",
                    help="elements per frame member (default 4)")
-    p.add_argument("--json", metavar="OUT", help="write the results as JSON")
-    p.add_argument("--vtk", metavar="DIR", help="write DIR/modes.pvd, a step per mode")
+    p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the results as JSON")
+    p.add_argument("--vtk", metavar="DIR", type=opt.output_dir, help="write DIR/modes.pvd, a step per mode")
     p.set_defaults(func=_main)
 
 

@@ -20,6 +20,7 @@ from ..nonlinear.analysis import unmodelled_buckling
 from ..nonlinear.model import BAR_MODELS
 from ..nonlinear.path import CONTROLS, PathResult
 from ..nonlinear.plot import write_plot
+from . import options as opt
 
 
 def register(subparsers) -> None:
@@ -29,29 +30,29 @@ def register(subparsers) -> None:
         description="Follow the equilibrium path of the model under its [loads] scaled by a "
         "load factor: co-rotational elements, limit and bifurcation points, member buckling, "
         "yield and fracture, and the hand-over to mechanism motion.")
-    p.add_argument("model", help="model file (TOML)")
+    p.add_argument("model", type=opt.input_file, help="model file (TOML)")
     p.add_argument("--control", choices=CONTROLS, default=None,
                    help="path control (default arc-length, or the model's [postcritical])")
-    p.add_argument("--steps", type=int, default=None, metavar="N", help="number of steps")
-    p.add_argument("--step", type=float, default=None, metavar="S",
+    p.add_argument("--steps", type=opt.positive_int, default=None, metavar="N", help="number of steps")
+    p.add_argument("--step", type=opt.positive_real, default=None, metavar="S",
                    help="first increment: Δλ (load), Δu (displacement) or Δs (arc-length)")
-    p.add_argument("--max-load-factor", type=float, default=None, metavar="L",
+    p.add_argument("--max-load-factor", type=opt.positive_real, default=None, metavar="L",
                    help="stop when the load factor exceeds L")
-    p.add_argument("--max-displacement", type=float, default=None, metavar="D",
+    p.add_argument("--max-displacement", type=opt.positive_real, default=None, metavar="D",
                    help="stop when the monitored displacement exceeds D (m)")
     p.add_argument("--monitor", default=None, metavar="NODE:AXIS",
                    help="displacement plotted (and prescribed under displacement control)")
     p.add_argument("--bar-model", choices=BAR_MODELS, default=None,
                    help="bars as co-rotational truss elements or as pinned beams")
-    p.add_argument("--subdivisions", type=int, default=None, metavar="K",
+    p.add_argument("--subdivisions", type=opt.positive_int, default=None, metavar="K",
                    help="beam elements per beam member (default 8)")
-    p.add_argument("--imperfection", type=float, default=None, metavar="A",
+    p.add_argument("--imperfection", type=opt.nonneg_real, default=None, metavar="A",
                    help="amplitude (m) of the first buckling mode added to the geometry")
     p.add_argument("--branch", action="store_true", default=None,
                    help="at a bifurcation follow the secondary branch")
-    p.add_argument("--json", metavar="OUT", help="write the path and events as JSON")
-    p.add_argument("--vtk", metavar="DIR", help="write the path as a .pvd time series")
-    p.add_argument("--plot", metavar="PNG", help="plot the load-displacement curve")
+    p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the path and events as JSON")
+    p.add_argument("--vtk", metavar="DIR", type=opt.output_dir, help="write the path as a .pvd time series")
+    p.add_argument("--plot", metavar="PNG", type=opt.output_file, help="plot the load-displacement curve")
     p.set_defaults(func=_main)
 
 

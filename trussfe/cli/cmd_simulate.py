@@ -4,10 +4,12 @@ from __future__ import annotations
 
 import argparse
 import logging
+import sys
 from pathlib import Path
 
 from .. import api
 from ..io.output import write_json
+from . import options as opt
 
 log = logging.getLogger(__name__)
 
@@ -19,17 +21,17 @@ def register(subparsers) -> None:
         description="Forces, section forces, von Mises stresses, buckling margins and actuator "
         "loads of a pin-jointed truss along a prescribed motion of its active members. "
         "Without --motion the model is analysed at rest (one step).")
-    p.add_argument("model", help="model file (TOML) with [active_members]")
-    p.add_argument("--motion", help="motion file: TOML [motion] spec or CSV history")
-    p.add_argument("--steps", type=int, help="number of time steps of a generated motion")
+    p.add_argument("model", type=opt.input_file, help="model file (TOML) with [active_members]")
+    p.add_argument("--motion", type=opt.input_file, help="motion file: TOML [motion] spec or CSV history")
+    p.add_argument("--steps", type=opt.positive_int, help="number of time steps of a generated motion")
     p.add_argument("--scheme", choices=("exact", "thesis"), default="exact",
                    help="kinematics: exact (default) or Lacy's backward differences")
-    p.add_argument("--sections", type=int, default=7,
+    p.add_argument("--sections", type=opt.positive_int, default=7,
                    help="sections per member for internal forces (default 7)")
-    p.add_argument("--json", metavar="OUT", help="write the results as JSON")
-    p.add_argument("--npz", metavar="OUT", help="write all arrays as NumPy .npz")
-    p.add_argument("--vtk", metavar="DIR", help="write a .pvd time series")
-    p.add_argument("--plots", metavar="DIR", help="write thesis-style PNG figures")
+    p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the results as JSON")
+    p.add_argument("--npz", metavar="OUT", type=opt.output_file, help="write all arrays as NumPy .npz")
+    p.add_argument("--vtk", metavar="DIR", type=opt.output_dir, help="write a .pvd time series")
+    p.add_argument("--plots", metavar="DIR", type=opt.output_dir, help="write thesis-style PNG figures")
     p.set_defaults(func=_run)
 
 
@@ -37,7 +39,7 @@ def _run(args: argparse.Namespace) -> int:
     from ..rigid.output import write_npz, write_plots, write_vtk
 
     result = api.simulate(args.model, motion=args.motion, steps=args.steps, scheme=args.scheme,
-                          sections=args.sections, progress=True)
+                          sections=args.sections, progress=sys.stderr.isatty())
     res = result.solution
     if args.json:
         write_json(args.json, result.to_dict())

@@ -14,6 +14,7 @@ from ..fem.discretisation import BAR_MODELS
 from ..fem.static import StaticResult
 from ..io.output import write_json
 from ..io.vtk import write_vtu as _write_vtu
+from . import options as opt
 
 
 def register(subparsers) -> None:
@@ -21,16 +22,16 @@ def register(subparsers) -> None:
     p = subparsers.add_parser("static", help="linear static finite-element analysis",
                               description="Linear static finite-element analysis: "
                               "displacements, reactions, member forces and stresses.")
-    p.add_argument("model", help="model file (TOML)")
+    p.add_argument("model", type=opt.input_file, help="model file (TOML)")
     p.add_argument("--bar-model", choices=BAR_MODELS, default="truss",
                    help="bars as axial-only truss elements (default) or as pinned beams")
-    p.add_argument("--subdivisions", type=int, default=None, metavar="K",
+    p.add_argument("--subdivisions", type=opt.positive_int, default=None, metavar="K",
                    help="elements per frame member (default 4)")
     p.add_argument("--solver", choices=("auto", "superlu", "pardiso"), default="auto",
                    help="sparse linear solver (default: PARDISO for large models when "
                    "installed, else SuperLU)")
-    p.add_argument("--json", metavar="OUT", help="write the results as JSON")
-    p.add_argument("--vtk", metavar="OUT.vtu", help="write the deformed-shape fields as VTU")
+    p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the results as JSON")
+    p.add_argument("--vtk", metavar="OUT.vtu", type=opt.output_file, help="write the deformed-shape fields as VTU")
     p.set_defaults(func=_main)
 
 

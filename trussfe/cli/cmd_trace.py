@@ -7,34 +7,38 @@ reports every state, the bifurcation points and the limit points (docs/json.md, 
 from __future__ import annotations
 
 import argparse
+import contextlib
+import os
 import sys
+from typing import Callable, Iterator
 
 import numpy as np
 
 from .. import api
 from ..io.output import atomic_path, write_json
+from . import options as opt
 
 
 def register(subparsers) -> None:
     """Add the ``trace`` command."""
     p = subparsers.add_parser("trace", help="finite-mechanism motion",
                               description=__doc__.splitlines()[0].strip("`"))
-    p.add_argument("model", help="model file (TOML)")
+    p.add_argument("model", type=opt.input_file, help="model file (TOML)")
     p.add_argument("--drive", action="append", required=True, metavar="NODE:AXIS",
                    help="prescribed coordinate (repeat for several degrees of freedom)")
-    p.add_argument("--step", action="append", type=float, required=True, metavar="S",
+    p.add_argument("--step", action="append", type=opt.nonzero_real, required=True, metavar="S",
                    help="increment of the drive coordinate per step, m (one per --drive)")
-    p.add_argument("--steps", type=int, required=True, metavar="N", help="number of steps")
-    p.add_argument("--branch", type=int, default=0, metavar="K",
+    p.add_argument("--steps", type=opt.positive_int, required=True, metavar="N", help="number of steps")
+    p.add_argument("--branch", type=opt.nonneg_int, default=0, metavar="K",
                    help="branch taken at a bifurcation point (0 = prescribe the drive)")
-    p.add_argument("--tolerance", type=float, default=1e-10,
+    p.add_argument("--tolerance", type=opt.relative_tolerance, default=1e-10,
                    help="relative bar-length tolerance of the corrector (default 1e-10)")
     p.add_argument("--frozen", action="store_true",
                    help="keep B11 of the predicted state (the paper's iteration) instead of "
                         "Newton's refresh")
-    p.add_argument("--json", metavar="OUT", help="write the path as JSON")
-    p.add_argument("--vtk", metavar="DIR", help="write every state as .vtu and a .pvd")
-    p.add_argument("--plot", metavar="PNG", help="plot the node trajectories")
+    p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the path as JSON")
+    p.add_argument("--vtk", metavar="DIR", type=opt.output_dir, help="write every state as .vtu and a .pvd")
+    p.add_argument("--plot", metavar="PNG", type=opt.output_file, help="plot the node trajectories")
     p.set_defaults(func=_run)
 
 
@@ -68,15 +72,41 @@ def _plot(path: str, s, r) -> None:
         fig.savefig(tmp, dpi=120, format="png")
 
 
+#: Traces of at least this many steps show a progress bar (on a terminal).
+PROGRESS_STEPS = 1000
+
+
+@contextlib.contextmanager
+def _progress_bar(steps: int) -> Iterator[Callable[[int], None] | None]:
+    """A tqdm bar on stderr for a long trace, only when stderr is a terminal (a log file or
+    pipe gets no carriage-return noise); closed however the trace ends, Ctrl-C included."""
+    if steps < PROGRESS_STEPS or not sys.stderr.isatty():
+        yield None
+        return
+    from tqdm import tqdm
+
+    try:                    # a terminal that reports no width (a bare pty): 80 columns
+        width = os.get_terminal_size(sys.stderr.fileno()).columns or 80
+    except (OSError, ValueError, AttributeError):
+        width = 80
+    with tqdm(total=steps, desc="trace", unit="step", leave=False, file=sys.stderr,
+              mininterval=0.5, ncols=width) as bar:
+        def tick(k: int) -> None:
+            bar.update(k - bar.n)
+        yield tick
+
+
 def _run(args: argparse.Namespace) -> int:
-    result = api.trace(args.model, drive=args.drive, step=args.step, steps=args.steps,
-                       branch=args.branch, tolerance=args.tolerance, frozen=args.frozen)
-    doc = result.to_dict()
-    if args.vtk:
-        from ._mechanism_vtk import write_trace_vtk
-        write_trace_vtk(args.vtk, result.structure, result.solution)
-    if args.plot:
-        _plot(args.plot, result.structure, result.solution)
+    with _progress_bar(args.steps) as tick:
+        result = api.trace(args.model, drive=args.drive, step=args.step, steps=args.steps,
+                           branch=args.branch, tolerance=args.tolerance, frozen=args.frozen,
+                           progress=tick)
+        doc = result.to_dict()
+        if args.vtk:
+            from ._mechanism_vtk import write_trace_vtk
+            write_trace_vtk(args.vtk, result.structure, result.solution)
+        if args.plot:
+            _plot(args.plot, result.structure, result.solution)
     if args.json:
         write_json(args.json, doc)
     ev = ", ".join(f"{e['kind']} at state {e['step']}" for e in doc["events"]) or "none"

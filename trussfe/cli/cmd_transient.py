@@ -10,6 +10,7 @@ import numpy as np
 from .. import api
 from ..errors import InputError
 from ..io.output import atomic_path, write_json
+from . import options as opt
 
 
 def register(subparsers) -> None:
@@ -19,21 +20,21 @@ def register(subparsers) -> None:
         description="Linearised FE dynamics about the moving configuration (Newmark average "
         "acceleration): elastic member forces compared with the quasi-static FE and the "
         "rigid-body ones, and the energy balance.")
-    p.add_argument("model", help="model file (TOML) with [active_members]")
-    p.add_argument("--motion", required=True, help="motion file: TOML [motion] or CSV")
-    p.add_argument("--steps", type=int, help="number of time steps of a generated motion")
-    p.add_argument("--dt", type=float, help="time step, s (default: the motion's sampling)")
-    p.add_argument("--t-end", type=float, help="end time, s (holds a motion that ended at rest)")
+    p.add_argument("model", type=opt.input_file, help="model file (TOML) with [active_members]")
+    p.add_argument("--motion", required=True, type=opt.input_file, help="motion file: TOML [motion] or CSV")
+    p.add_argument("--steps", type=opt.positive_int, help="number of time steps of a generated motion")
+    p.add_argument("--dt", type=opt.positive_real, help="time step, s (default: the motion's sampling)")
+    p.add_argument("--t-end", type=opt.positive_real, help="end time, s (holds a motion that ended at rest)")
     p.add_argument("--bar-model", choices=("pinned-beam", "truss"), default="pinned-beam")
-    p.add_argument("--subdivisions", type=int, help="elements per pinned-beam member (4)")
+    p.add_argument("--subdivisions", type=opt.positive_int, help="elements per pinned-beam member (4)")
     p.add_argument("--update", choices=("per-step", "frozen"), default="per-step",
                    help="matrices of the current geometry (default) or the initial one")
-    p.add_argument("--damping", type=float, nargs=2, metavar=("ALPHA", "BETA"),
+    p.add_argument("--damping", type=opt.nonneg_real, nargs=2, metavar=("ALPHA", "BETA"),
                    help="Rayleigh damping C = ALPHA M + BETA K")
-    p.add_argument("--json", metavar="OUT", help="write the results as JSON")
-    p.add_argument("--plot", metavar="PNG", help="axial-force histories of every member")
-    p.add_argument("--vtk", metavar="DIR", help="write a .pvd time series for ParaView")
-    p.add_argument("--vtk-every", type=int, default=1, metavar="K",
+    p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the results as JSON")
+    p.add_argument("--plot", metavar="PNG", type=opt.output_file, help="axial-force histories of every member")
+    p.add_argument("--vtk", metavar="DIR", type=opt.output_dir, help="write a .pvd time series for ParaView")
+    p.add_argument("--vtk-every", type=opt.positive_int, default=1, metavar="K",
                    help="write every K-th time step to the VTK series (default 1: all)")
     p.set_defaults(func=_run)
 

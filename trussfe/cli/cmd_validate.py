@@ -13,6 +13,8 @@ from pathlib import Path
 
 from .. import api
 from ..api.validation import default_cases_dir
+from ..errors import InputError
+from . import options as opt
 
 
 def register(subparsers) -> None:
@@ -21,11 +23,11 @@ def register(subparsers) -> None:
         "validate", help="run the validation suite and write report.md / report.html",
         description="Run the validation cases (the thesis tables, analytic solutions, "
                     "cross-checks between solvers) and write a report.")
-    p.add_argument("--out", default="validation-report", metavar="DIR",
+    p.add_argument("--out", default="validation-report", metavar="DIR", type=opt.output_dir,
                    help="report folder (default: ./validation-report)")
     p.add_argument("--case", action="append", metavar="ID", dest="cases_selected",
                    help="run only this case (repeatable)")
-    p.add_argument("--cases", metavar="DIR", default=None,
+    p.add_argument("--cases", metavar="DIR", default=None, type=opt.input_dir,
                    help="folder of case files (default: the built-in validation/cases)")
     p.add_argument("--no-progress", action="store_true", help="no progress bar")
     p.set_defaults(func=_main)
@@ -33,7 +35,10 @@ def register(subparsers) -> None:
 
 def _main(args) -> int:
     run = api.validate(Path(args.cases) if args.cases else default_cases_dir(),
-                       case=args.cases_selected, progress=not args.no_progress)
+                       case=args.cases_selected,
+                       progress=not args.no_progress and sys.stderr.isatty())
+    if not run.cases:
+        raise InputError("--cases", f"no validation case files (*.toml) in '{args.cases}'")
     page = run.write_report(args.out)
     results, failed = run.cases, run.failed
     for r in results:

@@ -64,6 +64,7 @@ import numpy as np
 import scipy.linalg as sla
 import scipy.sparse.linalg as spla
 
+from ..budget import along_motion_bytes, require
 from ..errors import AnalysisError, InputError
 from ..fem.discretisation import BAR_MODELS, FEModel, discretise
 from ..fem.solver import factorise
@@ -257,7 +258,12 @@ def motion_on_grid(motion: Motion, dt: float | None = None, t_end: float | None 
     if dt > end - t[0]:
         raise InputError("dt", f"{dt:g} s is longer than the analysed time ({end - t[0]:g} s);"
                          " the motion is too short for this step: give a smaller dt")
-    n = int(np.floor((end - t[0]) / dt * (1 + 1e-12))) + 1
+    n_float = np.floor((end - t[0]) / dt * (1 + 1e-12)) + 1
+    # the FE response at every step dwarfs the motion itself: refuse what cannot fit
+    require(along_motion_bytes(n_float, 0, motion.length.shape[1]),
+            "--dt" if t_end is None else "--dt, --t-end",
+            f"{n_float:,.0f} time steps of {dt:g} s", "give a longer time step")
+    n = int(n_float)
     tq = t[0] + dt * np.arange(n)
     L, V, A = motion.length, motion.velocity, motion.acceleration
     if end > t[-1] * (1 + 1e-12) + 1e-12:

@@ -8,14 +8,17 @@ file and the item.  Reading a model imports the model layer only, none of the an
 """
 from __future__ import annotations
 
+import contextvars
 import difflib
+import logging
 import math
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from ..errors import InputError, TrussfeError
+from ..budget import check_input_file
+from ..errors import InputError, TrussfeError, one_line
 from . import toml_text
 from .extension_tables import TABLES as EXTENSION_TABLES
 from ..model.ids import IdIndex, IdRange, id_index
@@ -23,15 +26,49 @@ from ..model.sections import Material, Section
 from ..mechanics.releases import parse_end_release
 from ..model.structure import DOF_NAMES, Structure
 
+log = logging.getLogger(__name__)
+
+#: The file being read, as "path: " for warnings (errors get it from TrussfeError.with_file).
+_source: contextvars.ContextVar[str] = contextvars.ContextVar("trussfe_model_source",
+                                                              default="")
+
 #: Top-level tables of the core format.
 CORE_TABLES = ("model", "materials", "sections", "nodes", "members", "supports", "loads",
                "masses", "groups")
 
+#: Most valid names a message lists; a larger set is summarised by its nearest few and a count.
+MAX_LISTED = 8
+#: Above this many names the nearest are found by sorted order, not by string similarity
+#: (difflib on 300,000 ids takes seconds).
+MAX_DIFFLIB = 2000
+
+
 def _suggest(word: str, choices) -> str:
+    """The suggestion that ends a "not defined" message: the close match, all valid names
+    of a short list, or the nearest few of a long one and how many there are."""
     if isinstance(choices, IdIndex):            # a mesh model: nodes are the point indices
         return f"; the mesh's nodes are 0 … {len(choices) - 1}"
-    close = difflib.get_close_matches(str(word), list(choices), n=1, cutoff=0.5)
-    return f"; did you mean '{close[0]}'?" if close else f"; valid: {', '.join(choices)}"
+    names = [str(c) for c in choices]
+    word = str(word)
+    pool = names if len(names) <= MAX_DIFFLIB else _neighbours(word, names, 50)
+    close = difflib.get_close_matches(word, pool, n=1, cutoff=0.5)
+    if close:
+        return f"; did you mean '{close[0]}'?"
+    if len(names) <= MAX_LISTED:
+        return f"; valid: {', '.join(names)}"
+    near = (difflib.get_close_matches(word, pool, n=5, cutoff=0.0) if len(names) <= MAX_DIFFLIB
+            else _neighbours(word, names, 5))
+    return f"; nearest: {', '.join(near)} (of {len(names):,} defined)"
+
+
+def _neighbours(word: str, names: list[str], k: int) -> list[str]:
+    """The ``k`` names nearest to ``word`` in sorted order (cheap for any number of names)."""
+    import bisect
+
+    ordered = sorted(names)
+    i = bisect.bisect_left(ordered, word)
+    lo = max(0, min(i - k // 2, len(ordered) - k))
+    return ordered[lo:lo + k]
 
 
 def _check_keys(table: dict, allowed, item: str) -> None:
@@ -217,6 +254,14 @@ def parse_model(data: dict, base_dir: Path | str = ".", source: str = "") -> Str
         Naming the table and item at fault.
     """
     base_dir = Path(base_dir)
+    token = _source.set(f"{source}: " if source else "")
+    try:
+        return _parse_model(data, base_dir, source)
+    finally:
+        _source.reset(token)
+
+
+def _parse_model(data: dict, base_dir: Path, source: str) -> Structure:
     allowed = CORE_TABLES + tuple(EXTENSION_TABLES)
     for key in data:
         if key not in allowed:
@@ -370,19 +415,61 @@ def _check_geometry(coords, conn, member_ids, node_ids) -> None:
         same = np.flatnonzero(flat == dup)
         raise InputError(f"members.{member_ids[same[1]]}",
                          f"duplicates member '{member_ids[same[0]]}' (same two nodes)")
+    _warn_coincident(coords, node_ids, scale)
+
+
+def _warn_coincident(coords: np.ndarray, node_ids, scale: float) -> None:
+    """Warn, in one line, about nodes at the same place that no member joins.
+
+    Two nodes at one point are a common modelling slip (a joint typed twice, each half
+    carrying some members): the structure then falls apart there.  A member between them is
+    refused as zero-length before this check, so the pairs found here are unjoined.  Exact
+    positions are compared after rounding to 1e-9 of the model size (one sort, vectorised).
+    """
+    if len(coords) < 2:
+        return
+    unit = 1e9 / scale
+    if not math.isfinite(unit):
+        return
+    # positions from the lower corner in 1e-9 of the model size (below 1e9: no overflow)
+    q = ((coords - coords.min(axis=0)) * unit).astype(np.int64)
+    # one integer key per node (a wrapping hash of its coordinates): a 1-D sort finds equal
+    # keys; only then are nodes ordered and neighbours compared exactly
+    key = q[:, 0] * np.int64(0x9E3779B97F4A7C15 - (1 << 64))
+    for j in range(1, q.shape[1]):
+        key = (key ^ q[:, j]) * np.int64(0x100000001B3)
+    ks = np.sort(key)
+    if not np.any(ks[1:] == ks[:-1]):
+        return
+    order = np.argsort(key, kind="stable")
+    ks = key[order]
+    cand = np.flatnonzero(ks[1:] == ks[:-1])
+    if not cand.size:
+        return
+    same = cand[np.all(q[order[cand]] == q[order[cand + 1]], axis=1)]
+    if not same.size:
+        return
+    k = int(same[0])
+    a, b = sorted((int(order[k]), int(order[k + 1])))
+    more = int(same.size) - 1
+    where = ", ".join(f"{x:.6g}" for x in coords[a])
+    log.warning("warning: %s", one_line(
+        f"{_source.get()}nodes '{node_ids[a]}' and '{node_ids[b]}' coincide at ({where})"
+        + (f", and {more} more pair(s) of nodes" if more else "")
+        + "; no member joins them, so the structure is not connected there — merge them "
+          "into one node if they are meant to be one joint"))
 
 
 def _mesh_geometry(mesh_name, base_dir, dim, data, sections, materials):
     """Nodes and members from a meshio-readable line mesh (``[model] mesh``)."""
-    import meshio
-
     path = (base_dir / mesh_name)
-    if not path.is_file():
+    if not path.exists():
         raise InputError("model.mesh", f"mesh file '{path}' not found")
     try:
-        mesh = meshio.read(path)
-    except Exception as exc:  # meshio raises many types; the message is what matters
-        raise InputError("model.mesh", f"cannot read '{path}': {exc}") from None
+        check_input_file(str(path), "mesh file")
+    except InputError as err:
+        raise InputError("model.mesh", err.message.replace("is ", f"'{path}' is ", 1)) from None
+    mesh = _read_mesh(path)
     pts = np.asarray(mesh.points, dtype=float)
     if pts.ndim != 2 or pts.shape[0] == 0:
         raise InputError("model.mesh", "mesh has no points")
@@ -458,6 +545,42 @@ def _mesh_geometry(mesh_name, base_dir, dim, data, sections, materials):
             tuple(mat_obj[code].tolist()), beam_of[code], rel_of[code], orient_of[code], code)
 
 
+def _read_mesh(path: Path):
+    """``meshio.read`` without its console output.
+
+    When no reader accepts a file, ``meshio.read`` prints the reader's complaint on stdout and
+    an "Error:" line on stderr, then calls ``sys.exit(1)``.  The readers of the formats the
+    suffix allows are therefore called directly, and every failure becomes one InputError.
+    """
+    import meshio
+
+    try:
+        from meshio._helpers import _filetypes_from_path, reader_map
+    except ImportError:                                  # pragma: no cover - other meshio
+        readers = None
+    else:
+        readers = reader_map
+    try:
+        if readers is None:                              # pragma: no cover
+            return meshio.read(path)
+        formats = _filetypes_from_path(path)
+        last = None
+        for fmt in formats:
+            if fmt not in readers:
+                continue
+            try:
+                return readers[fmt](str(path))
+            except Exception as exc:   # readers raise many types; the message is what matters
+                last = exc
+        what = f" ({str(last) or type(last).__name__})" if last else ""
+        raise InputError("model.mesh", f"cannot read '{path}' as {' or '.join(formats)}{what}")
+    except InputError:
+        raise
+    except (Exception, SystemExit) as exc:
+        raise InputError("model.mesh", f"cannot read '{path}': {exc or type(exc).__name__}"
+                         ) from None
+
+
 def read_model(path: str | Path) -> Structure:
     """Read a model file.
 
@@ -476,6 +599,8 @@ def read_model(path: str | Path) -> Structure:
         One line naming the file and the item at fault.
     """
     path = Path(path)
+    # a folder, device or named pipe is refused before it is opened (a pipe would block)
+    check_input_file(str(path), "model file")
     try:
         text = path.read_bytes().decode("utf-8")
     except FileNotFoundError:
@@ -486,6 +611,8 @@ def read_model(path: str | Path) -> Structure:
         data = toml_text.loads(text)
     except toml_text.TOMLDecodeError as exc:
         raise InputError(str(path), f"malformed TOML: {exc}") from None
+    except RecursionError:
+        raise InputError(str(path), "arrays or tables nest too deeply") from None
     try:
         return parse_model(data, base_dir=path.parent, source=str(path))
     except TrussfeError as err:

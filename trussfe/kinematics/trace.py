@@ -48,12 +48,13 @@ from __future__ import annotations
 
 import logging
 from dataclasses import dataclass
-from typing import NamedTuple
+from typing import Callable, NamedTuple
 
 import numpy as np
 import scipy.linalg as sla
 import scipy.sparse as sp
 
+from ..budget import require
 from ..errors import AnalysisError, InputError
 from .compatibility import compatibility_matrix
 from .mechanism import (DENSE_LIMIT, DIVERGENCE_MESSAGE, StepResult, _augmented_tangent,
@@ -668,11 +669,16 @@ class _Trace:
                            independent=self.indeps)
 
 
+#: Memory per kept state and node of a trace (the coordinates and their JSON record).
+BYTES_PER_STATE_NODE = 512
+
+
 def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarray,
                     drives: list[int], step: float | list[float], steps: int, *,
                     branch: int = 0, tolerance: float = 1e-10, max_iterations: int = 30,
                     newton: bool = True, rank_tolerance: float | None = None,
-                    names: list[str] | None = None) -> TraceResult:
+                    names: list[str] | None = None,
+                    progress: Callable[[int], None] | None = None) -> TraceResult:
     """Follow the finite motion of a mechanism (Hortobágyi sections 3–6).
 
     Parameters
@@ -709,6 +715,9 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
         ``max(1e-8, 100·tolerance)`` — never tighter than the bar-length accuracy.
     names : list of str, optional
         Coordinate names ``"node:axis"`` for events and messages.
+    progress : callable, optional
+        Called with the step number before every step (a progress bar; it may raise
+        ``KeyboardInterrupt`` to stop the trace).
 
     Returns
     -------
@@ -744,8 +753,14 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
     """
     setup = _set_up(coords, connectivity, free, drives, step, steps, tolerance, rank_tolerance,
                     names)
+    # every state is kept (coordinates, and the per-state record of the JSON document)
+    n = np.shape(coords)[0]
+    require(float(steps) * (BYTES_PER_STATE_NODE * n + 2048), "--steps",
+            f"a trace of {steps:,} states of {n:,} nodes", "trace fewer steps")
     trace = _Trace(setup, branch, tolerance, max_iterations, newton)
     for k in range(1, steps + 1):
+        if progress is not None:
+            progress(k)
         trace.step(k)
     return trace.result()
 

@@ -24,6 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..budget import along_motion_bytes, require
 from ..errors import InputError
 from ..mechanics.conventions import PHYSICAL
 from ..model.structure import Structure
@@ -142,6 +143,11 @@ def third_order_response(t: np.ndarray, duration: float, *, damping_ratio: float
     if not (0.0 < z < 1.0):
         raise InputError("motion.damping_ratio", f"must lie in (0, 1), got {z}")
     wn = settling_constant / (z * settling_fraction * duration)
+    # the residues below take wn³: refuse time scales no actuator has (and floats cannot hold)
+    if not (1e-50 < wn < 1e50 and 1e-50 < real_root_factor * wn < 1e50):
+        raise InputError("motion.duration", f"{duration:g} s with these settling parameters "
+                         f"gives a natural frequency of {wn:g} rad/s, beyond any actuator; "
+                         "check the units (duration in s)")
     wd = wn * math.sqrt(1.0 - z * z)
     poles = np.array([-z * wn + 1j * wd, -z * wn - 1j * wd, -real_root_factor * wn])
     gain = real_root_factor * wn ** 3            # num = den(4): unit static gain
@@ -179,10 +185,22 @@ def third_order_motion(structure: Structure, start: dict | np.ndarray, end: dict
     acts = active_members(structure)
     if not acts:
         raise InputError("motion", "the model has no [active_members]; nothing can move")
-    if not (isinstance(steps, (int, np.integer)) and steps >= 1):
+    if isinstance(steps, bool) or not (isinstance(steps, (int, np.integer)) and steps >= 1):
         raise InputError("motion.steps", f"must be a positive integer, got {steps!r}")
     if not (duration > 0 and math.isfinite(duration)):
         raise InputError("motion.duration", f"must be positive, got {duration!r}")
+    if isinstance(first_sample, bool) or not isinstance(first_sample, (int, np.integer)) \
+            or first_sample < 0:
+        raise InputError("motion.first_sample", "must be an integer sample index (0 or more), "
+                         f"got {first_sample!r}")
+    if first_sample > 1_000_000_000:
+        raise InputError("motion.first_sample", f"{first_sample} is beyond any motion; the "
+                         "first sample is 0 or 1 (Lacy's Appendix A uses 0)")
+    if not isinstance(include_end, (bool, np.bool_)):
+        raise InputError("motion.include_end", f"must be true or false, got {include_end!r}")
+    require(along_motion_bytes(steps, structure.n_nodes, structure.n_members),
+            "motion.steps", f"a motion of {steps:,} time steps",
+            "use fewer steps (--steps)")
     members = np.array([a.member for a in acts])
     L0 = structure.lengths()[members]
 
@@ -217,3 +235,30 @@ def rest_motion(structure: Structure) -> Motion:
     z = np.zeros_like(L)
     return Motion(time=np.zeros(1), members=members, length=L, velocity=z, acceleration=z,
                   source="at rest")
+
+
+def spec_int(spec: dict, key: str, item: str, default: int, lo: int = 0,
+             hi: int = 1_000_000_000) -> int:
+    """An integer entry of a motion table (``first_sample``, ``grid``), checked."""
+    v = spec.get(key, default)
+    if isinstance(v, bool) or not isinstance(v, int) or not lo <= v <= hi:
+        raise InputError(f"{item}.{key}", f"must be an integer from {lo} to {hi:,}, got {v!r}")
+    return int(v)
+
+
+def spec_bool(spec: dict, key: str, item: str, default: bool = False) -> bool:
+    """A true/false entry of a motion table (``include_end``): a string "no" is refused,
+    not read as true."""
+    v = spec.get(key, default)
+    if not isinstance(v, bool):
+        raise InputError(f"{item}.{key}", f"must be true or false, got {v!r}")
+    return v
+
+
+def spec_positive(spec: dict, key: str, item: str) -> float:
+    """A positive finite number of a motion table (the response-model parameters)."""
+    v = spec[key]
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or not (
+            math.isfinite(float(v)) and v > 0):
+        raise InputError(f"{item}.{key}", f"must be a positive number, got {v!r}")
+    return float(v)

@@ -32,6 +32,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..budget import check_input_file
 from ..errors import InputError
 from ..model.structure import Structure
 from .active import active_indices
@@ -39,6 +40,11 @@ from .motion import Motion
 from .smoothing import smooth_derivative
 
 _QUANTITIES = ("length", "velocity", "acceleration")
+
+
+#: Largest magnitude of a value in a motion history: beyond it the smoothing splines'
+#: squares overflow, and no length (m), rate or time (s) of a truss comes near it.
+MAX_VALUE = 1e100
 
 
 def _read_rows(path: Path) -> tuple[list[str], list[tuple[int, list[str]]]]:
@@ -93,6 +99,7 @@ def read_motion_csv(path: str | Path, structure: Structure, *,
     """
     path = Path(path)
     name = path.name
+    check_input_file(str(path), "motion file")
     header, rows = _read_rows(path)
     if "time" not in header:
         raise InputError(f"{name}: header", "has no 'time' column")
@@ -147,6 +154,9 @@ def read_motion_csv(path: str | Path, structure: Structure, *,
                 raise InputError(where, f"'{cell}' is not a number") from None
             if not math.isfinite(x):
                 raise InputError(where, f"is {cell}; values must be finite numbers")
+            if abs(x) > MAX_VALUE:
+                raise InputError(where, f"{cell} is beyond any length, rate or time in SI "
+                                        "units (m, m/s, m/s², s); check the units")
             data[i, c] = x
     lines = [ln for ln, _ in rows]
     t = data[:, header.index("time")]

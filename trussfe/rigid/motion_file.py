@@ -9,13 +9,15 @@ them imports another's reader.
 """
 from __future__ import annotations
 
+import math
 import tomllib
 from pathlib import Path
 from typing import Any
 
+from ..budget import check_input_file
 from ..errors import InputError
 from ..model.structure import Structure
-from .motion import Motion, third_order_motion
+from .motion import Motion, spec_bool, spec_int, spec_positive, third_order_motion
 from .motion_csv import read_motion_csv
 from .slew import rotation_motion
 
@@ -50,23 +52,28 @@ def motion_from_spec(spec: dict, structure: Structure, base_dir: Path, source: s
     opts: dict[str, Any] = {}
     for key in ("damping_ratio", "settling_fraction", "settling_constant", "real_root_factor"):
         if key in spec:
-            v = spec[key]
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or not v > 0:
-                raise InputError(f"{item}.{key}", f"must be a positive number, got {v!r}")
-            opts[key] = float(v)
+            opts[key] = spec_positive(spec, key, item)
     for key in ("start", "end"):
         v = spec[key]
         if not isinstance(v, dict):
             raise InputError(f"{item}.{key}", "expected a table member id = length (m)")
         for k, x in v.items():
-            if isinstance(x, bool) or not isinstance(x, (int, float)) or not x > 0:
+            if isinstance(x, bool) or not isinstance(x, (int, float)) or not (
+                    x > 0 and math.isfinite(x)):
                 raise InputError(f"{item}.{key}.{k}", f"must be a positive length, got {x!r}")
     dur = spec["duration"]
     if isinstance(dur, bool) or not isinstance(dur, (int, float)):
         raise InputError(f"{item}.duration", f"expected a number of seconds, got {dur!r}")
-    m = third_order_motion(structure, spec["start"], spec["end"], float(dur), n,
-                           first_sample=int(spec.get("first_sample", 0)),
-                           include_end=bool(spec.get("include_end", False)), **opts)
+    if not (math.isfinite(dur) and dur > 0):
+        raise InputError(f"{item}.duration", f"must be a positive number of seconds, got {dur!r}")
+    try:
+        m = third_order_motion(structure, spec["start"], spec["end"], float(dur), n,
+                               first_sample=spec_int(spec, "first_sample", item, 0),
+                               include_end=spec_bool(spec, "include_end", item), **opts)
+    except InputError as err:
+        if not source or err.item.startswith((source, "--")):
+            raise
+        raise err.with_file(source) from None
     m.source = source or m.source
     return m
 
@@ -97,8 +104,8 @@ def load_motion(path: str | Path, structure: Structure, steps: int | None = None
         Unreadable file, unknown keys or members, non-monotonic time, NaN values.
     """
     path = Path(path)
-    if not path.is_file():
-        raise InputError(str(path), "motion file not found")
+    # a folder, device or named pipe is refused before it is opened (a pipe would block)
+    check_input_file(str(path), "motion file")
     if path.suffix.lower() == ".csv":
         _no_steps(steps, "a CSV motion history")
         return read_motion_csv(path, structure)
@@ -106,6 +113,8 @@ def load_motion(path: str | Path, structure: Structure, steps: int | None = None
         data = tomllib.loads(path.read_text(encoding="utf-8"))
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
         raise InputError(path.name, f"not a valid TOML motion file ({exc})") from None
+    except RecursionError:
+        raise InputError(path.name, "arrays or tables nest too deeply") from None
     if "motion" not in data:
         raise InputError(path.name, "no [motion] table")
     return motion_from_spec(data["motion"], structure, path.parent, path.name, steps)

@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..budget import along_motion_bytes, require
 from ..errors import AnalysisError, InputError
 from ..mechanics.conventions import PHYSICAL, Conventions
 from ..model.structure import Structure
@@ -167,6 +168,9 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
     opts = dict(n_sections=n_sections, full_length_inertia=conventions.full_length_inertia,
                 shear_factor=conventions.shear_factor)
     nt, m = motion.n_steps, structure.n_members
+    require(along_motion_bytes(nt, structure.n_nodes, m), "motion",
+            f"an analysis of {nt:,} time steps", "use fewer steps (--steps) or a longer "
+            "time step")
     step = max(1, CHUNK_ENTRIES // max(m, 1))
     if scheme == "exact" and nt > step:
         # Positions for the whole motion (warm starts link the steps), then the forces one

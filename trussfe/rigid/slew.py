@@ -54,12 +54,13 @@ from typing import Any
 import numpy as np
 from scipy.interpolate import make_interp_spline
 
+from ..budget import along_motion_bytes, require
 from ..errors import AnalysisError, InputError
 from ..kinematics.assembly import solve_positions
 from ..kinematics.compatibility import compatibility_matrix
 from ..model.structure import Structure
 from .active import active_indices
-from .motion import Motion, third_order_response
+from .motion import Motion, spec_bool, spec_int, spec_positive, third_order_response
 from .smoothing import smooth_derivative
 
 log = logging.getLogger(__name__)
@@ -277,6 +278,12 @@ def _number(spec: dict, key: str, item: str, *, positive=False) -> float:
     return float(v)
 
 
+def _steps_fit(n: int, structure: Structure, item: str) -> None:
+    """Refuse a step count whose analysis cannot fit in memory (before sampling it)."""
+    require(along_motion_bytes(n, structure.n_nodes, structure.n_members), f"{item}.steps",
+            f"a motion of {n:,} time steps", "use fewer steps (--steps)")
+
+
 def rotation_motion(spec: dict, structure: Structure, *, steps: int | None = None) -> Motion:
     """Active-member motion realising a top-plane rotation (``[motion] type = "rotation"``).
 
@@ -356,7 +363,8 @@ def rotation_motion(spec: dict, structure: Structure, *, steps: int | None = Non
         n = steps if steps is not None else spec.get("steps", 50)
         if isinstance(n, bool) or not isinstance(n, int) or n < 1:
             raise InputError(f"{item}.steps", f"must be a positive integer, got {n!r}")
-        last = n + (1 if spec.get("include_end", False) else 0)
+        _steps_fit(n, structure, item)
+        last = n + (1 if spec_bool(spec, "include_end", item) else 0)
         t = np.arange(last) * (T / n)
         y, dy, ddy = constant_velocity_profile(t, T, ramp)
         ang, dang, ddang = a0 + (a1 - a0) * y, (a1 - a0) * dy, (a1 - a0) * ddy
@@ -370,11 +378,12 @@ def rotation_motion(spec: dict, structure: Structure, *, steps: int | None = Non
         n = steps if steps is not None else spec.get("steps", 50)
         if isinstance(n, bool) or not isinstance(n, int) or n < 1:
             raise InputError(f"{item}.steps", f"must be a positive integer, got {n!r}")
-        opts = {k: float(spec[k]) for k in ("damping_ratio", "settling_fraction",
-                                            "settling_constant", "real_root_factor")
+        _steps_fit(n, structure, item)
+        opts = {k: spec_positive(spec, k, item) for k in (
+            "damping_ratio", "settling_fraction", "settling_constant", "real_root_factor")
                 if k in spec}
-        first = int(spec.get("first_sample", 0))
-        last = first + n + (1 if spec.get("include_end", False) else 0)
+        first = spec_int(spec, "first_sample", item, 0)
+        last = first + n + (1 if spec_bool(spec, "include_end", item) else 0)
         t = np.arange(first, last) * (T / n)
         y, dy, ddy = third_order_response(t, T, **opts)
         ang, dang, ddang = a0 + (a1 - a0) * y, (a1 - a0) * dy, (a1 - a0) * ddy
@@ -383,7 +392,7 @@ def rotation_motion(spec: dict, structure: Structure, *, steps: int | None = Non
     # Grid over the swept range; the quintic spline of q(θ) is accurate to round-off for the
     # smooth inverse map of a bay well inside its workspace.
     lo, hi = float(ang.min()), float(ang.max())
-    ngrid = int(spec.get("grid", 41))
+    ngrid = spec_int(spec, "grid", item, 41, lo=6, hi=100_000)
     if hi - lo < 1e-12:
         q = np.repeat(inv.lengths_along(np.array([lo])), t.size, axis=0)
         dq = np.zeros_like(q)
