@@ -11,7 +11,7 @@ import time
 
 import numpy as np
 
-from trussfe.elastic.along_motion import compare_with_rigid, elastic_along_motion
+from trussfe.response.along_motion import compare_with_rigid, elastic_along_motion
 from trussfe.studies.lacy_elastic import slew2_motion
 from trussfe.studies.lacy_actuators import slew1_motion, slew1_structure
 from trussfe.rigid.simulate import simulate

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Speed of the transient elastic response (trussfe.elastic.transient): steps per second.
+"""Speed of the transient elastic response (trussfe.response.transient): steps per second.
 
 Runs the triangular truss (Lacy's Base Simulation model, pinned-beam FE with k sub-elements)
 along its 1.2 m slew, with updated and frozen matrices, and prints a table.  Usage::

@@ -14,7 +14,8 @@ import pytest
 from numpy.testing import assert_allclose
 
 from trussfe.errors import AnalysisError, InputError
-from trussfe.fem.buckling import buckling_json, euler_load, solve_buckling
+from trussfe.fem.buckling import buckling_json, solve_buckling
+from trussfe.mechanics.euler import member_euler_loads
 from trussfe.model.sections import Material, Section
 from trussfe.model.structure import build_structure
 
@@ -106,7 +107,7 @@ def test_thesis_allowables(name, section, L, printed, rtol):
     """Eq. 2.26 reproduces the printed allowable; the FE buckling of the same member as a
     pinned-beam column (k = 8) agrees with eq. 2.26 to 4e-5 (discretisation error)."""
     s = column(L, section=section)
-    pe = euler_load(s)[0]
+    pe = member_euler_loads(s)[0]
     assert_allclose(pe, printed, rtol=rtol)
     fe = solve_buckling(s, count=1, subdivisions=8).load_factors[0]
     assert_allclose(fe, pe, rtol=4e-5)
@@ -115,6 +116,6 @@ def test_thesis_allowables(name, section, L, printed, rtol):
 def test_top_plane_real_length_unconservative():
     """The top-plane members are 1.2192 m long (the base-triangle side): their Euler
     load is 1624.4 N, so the thesis' 3055.2 N over-states the allowable by 1.88×."""
-    pe = euler_load(column(1.2192, section=FIXED_TUBE))[0]
+    pe = member_euler_loads(column(1.2192, section=FIXED_TUBE))[0]
     assert_allclose(pe, 1624.4, rtol=5e-5)
     assert_allclose(3055.2 / pe, 1.88, rtol=2e-3)

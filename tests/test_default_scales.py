@@ -14,7 +14,7 @@ from numpy.testing import assert_allclose
 
 from trussfe._resources import mesh_path
 from trussfe.cli import main
-from trussfe.fem.buckling import euler_load
+from trussfe.mechanics.euler import member_euler_loads
 from trussfe.fem.static import solve_static
 from trussfe.io.model_file import read_model
 from trussfe.nonlinear.analysis import run_postcritical, unmodelled_buckling
@@ -68,7 +68,7 @@ def test_member_passing_its_euler_load_is_named_once_on_stderr(capsys):
     s = read_model(path)
     res = run_postcritical(s)
     mem, lam, pe = unmodelled_buckling(res)
-    assert_allclose(pe, euler_load(s)[mem], rtol=1e-12)
+    assert_allclose(pe, member_euler_loads(s)[mem], rtol=1e-12)
     assert f"member {s.member_ids[mem]} exceeds its Euler load" in err[0]
     k = [p.load_factor for p in res.path].index(lam)
     assert -res.path[k].forces[mem] > pe and -res.path[k - 1].forces[mem] <= pe

@@ -5,7 +5,7 @@ one-line error."""
 import numpy as np
 import pytest
 
-from trussfe.elastic.along_motion import compare_with_rigid, simulate_elastic
+from trussfe.response.along_motion import compare_with_rigid, simulate_elastic
 from trussfe.studies.lacy_elastic import base_simulation, slew
 from trussfe.errors import AnalysisError, InputError, MechanismError, TrussfeError
 from trussfe.rigid.motion import third_order_motion

@@ -5,8 +5,8 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from trussfe.elastic.along_motion import elastic_along_motion, stacked_structure
-from trussfe.elastic.loads import element_load_components, motion_loads, rotations3
+from trussfe.response.along_motion import elastic_along_motion, stacked_structure
+from trussfe.response.loads import element_load_components, motion_loads, rotations3
 from trussfe.fem.discretisation import discretise
 from trussfe.model.sections import Material, Section
 from trussfe.model.structure import build_structure
@@ -141,7 +141,7 @@ def test_load_vectors_at_rest_equal_fe_load_vector():
     """At rest, the motion loads on one discretisation equal the FE model's own load vector
     (self-weight by scikit-fem's distributed-load form, nodal loads, weight of nodal masses):
     triangular truss without its active base, 1e-12."""
-    from trussfe.elastic.loads import load_vectors
+    from trussfe.response.loads import load_vectors
     from trussfe.rigid.kinematics import compute_kinematics
     from trussfe.rigid.motion import rest_motion
     s = triangular_truss(load=-98.1)

@@ -3,9 +3,9 @@
 import numpy as np
 from numpy.testing import assert_allclose
 
-from trussfe.elastic.along_motion import elastic_along_motion
+from trussfe.response.along_motion import elastic_along_motion
 from trussfe.studies.lacy_elastic import TABLE_5_5, slew, table_5_5
-from trussfe.elastic.strains import gauge_strains, static_strain, zeroed_strain
+from trussfe.response.strains import gauge_strains, static_strain, zeroed_strain
 from trussfe.studies.lacy_rigid import double_octahedron
 
 from trussfe.model.sections import Material, Section

@@ -173,7 +173,9 @@ def test_no_mass():
 
 def test_active_member_rigid_body_mass():
     """Active base + leadscrew tube (Lacy §2.1): total mass for a transverse or axial rigid
-    translation, moment of inertia I_b + I_t about the start node for a rotation about it."""
+    translation, moment of inertia I_b + I_t about the start node for a rotation about it,
+    I_t with the rotary inertia m_t I/A of the tube's sections (rigid tube; Lacy Appendix A
+    ``m (3 OD² + 3 ID² + 4 L²)/48`` about its centre)."""
     L = 3.0
     s = build_structure([[0, 0], [L, 0]], [(0, 1)], section=TUBE, material=STEEL)
     act = ActiveMember(member=0, base_mass=2.4, base_length=2.1, base_cg=1.05,
@@ -183,7 +185,7 @@ def test_active_member_rigid_body_mass():
     Ma = active_member_mass(fe).toarray()
     rhoA = STEEL.density * TUBE.area
     mt = rhoA * 2.0
-    It = rhoA * (L**3 - (L - 2.0) ** 3) / 3
+    It = rhoA * (L**3 - (L - 2.0) ** 3) / 3 + mt * TUBE.Iy / TUBE.area
     ux = np.array([1.0, 0, 1.0, 0])                      # axial rigid translation
     uy = np.array([0, 1.0, 0, 1.0])                      # transverse translation
     rot = np.array([0, 0, 0, L])                          # unit rotation about node 0
@@ -201,7 +203,7 @@ def test_active_member_rigid_body_mass():
 def test_active_member_pendulum_frequencies():
     """An active member pinned at a fixed node A, its end B held transversely by a massless
     spring bar: B's transverse mode is a pendulum with effective mass I_A/L² (I_A = base +
-    tube moments about A), ω² = k_spring L² / I_A; its axial mode moves the tube only (the base
+    tube moments about A, the tube's with its rotary inertia), ω² = k_spring L² / I_A; its axial mode moves the tube only (the base
     rides on A), ω² = (EA/L) / m_tube.  Closed form, rtol 1e-10."""
     L, h = 3.0, 1.0
     s = build_structure([[0, 0], [L, 0], [L, -h]], [(0, 1), (1, 2)], section=TUBE,
@@ -213,7 +215,8 @@ def test_active_member_pendulum_frequencies():
     r = solve_modes(s, count=2)
     rhoA = STEEL.density * TUBE.area
     mt = rhoA * 0.254
-    I_A = act.base_inertia + rhoA * (L**3 - (L - 0.254) ** 3) / 3
+    # the tube's moment about A: its line plus its sections' rotary inertia m_t I/A
+    I_A = act.base_inertia + rhoA * (L**3 - (L - 0.254) ** 3) / 3 + mt * TUBE.Iy / TUBE.area
     k_spring = spring.E * TUBE.area / h
     k_axial = STEEL.E * TUBE.area / L
     expected = np.sort([np.sqrt(k_spring * L**2 / I_A), np.sqrt(k_axial / mt)]) / (2 * np.pi)

@@ -113,7 +113,8 @@ def test_composite_cg_and_inertia_match_appendix_c():
 def test_two_shears_and_two_moments():
     """Local components (eqs. 4.68–4.74) recombine to the shear and moment magnitudes, and the
     frame is orthonormal and perpendicular to every member."""
-    from trussfe.rigid.sections import local_components, member_frames
+    from trussfe.mechanics.geometry import transverse_frames as member_frames
+    from trussfe.rigid.sections import local_components
     s = double_octahedron((1.2289, 1.1079, 1.1079), gravity=9.81, top_load=46.0)
     r = simulate(s)
     V, M = local_components(r.sections)

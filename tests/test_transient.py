@@ -1,4 +1,4 @@
-"""Transient elastic response along a prescribed motion (trussfe.elastic.transient).
+"""Transient elastic response along a prescribed motion (trussfe.response.transient).
 
 Sources of the expected values: closed forms (rigid-body fields, the single-DOF Duhamel
 solution, polynomial interpolation), the discrete energy identity of Newmark's average
@@ -13,9 +13,9 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from trussfe.elastic import transient as tr
-from trussfe.elastic.transient import motion_on_grid, rayleigh, transient_response
-from trussfe.elastic.transient_fe import assemble_block, massless_active, rigid_field
+from trussfe.response import transient as tr
+from trussfe.response.transient import motion_on_grid, rayleigh, transient_response
+from trussfe.response.transient_fe import assemble_block, massless_active, rigid_field
 from trussfe.studies.transient_slews import (
     cycloidal_motion,
     sdof_bar,

@@ -1,4 +1,4 @@
-"""Validation engine (trussfe.validate) and ``trussfe validate``: cases, report, exit status.
+"""Validation engine (trussfe.validation) and ``trussfe validate``: cases, report, exit status.
 
 The report is checked by parsing the HTML with :mod:`html.parser`.
 """
@@ -11,7 +11,7 @@ import pytest
 from trussfe.cli import main
 from trussfe.cli.cmd_validate import default_cases_dir
 from trussfe.errors import InputError
-from trussfe.validate import load_case, load_cases, lookup, run_cases, write_report
+from trussfe.validation import load_case, load_cases, lookup, run_cases, write_report
 
 
 class ReportParser(HTMLParser):
@@ -251,7 +251,7 @@ _values = st.recursive(
 @given(st.dictionaries(st.sampled_from(_CASE_KEYS), _values, max_size=4))
 def test_fuzz_case_reader(data):
     """Any TOML-shaped case document: a Case or an InputError, never another exception."""
-    from trussfe.validate.cases import _parse
+    from trussfe.validation.cases import _parse
 
     try:
         case = _parse(data, Path("fuzz.toml"))
@@ -263,8 +263,8 @@ def test_fuzz_case_reader(data):
 
 def test_compare_semantics():
     """|v − r| ≤ atol + rtol·|r|; documented deviations are never failures."""
-    from trussfe.validate.cases import Quantity
-    from trussfe.validate.engine import compare
+    from trussfe.validation.cases import Quantity
+    from trussfe.validation.engine import compare
 
     q = Quantity(name="q", path="x", reference=100.0, rtol=1e-3)
     assert compare(q, np.float64(100.1)).status == "pass"        # exactly at the bound

@@ -11,9 +11,8 @@ has one function per analysis, available here::
     result = trussfe.static(model)          # result.axial_force, result.to_dict(), ...
 
 ``static``, ``modes``, ``buckling``, ``simulate``, ``actuators``, ``elastic``, ``transient``,
-``mechanism``, ``trace``, ``postcritical`` and ``validate`` are imported on first use, so that
-``import trussfe`` stays light.  ``trussfe.elastic`` and ``trussfe.validate`` are also the
-subpackages of those names; calling them runs the analysis.
+``mechanism``, ``trace``, ``postcritical`` and ``validate`` (:mod:`trussfe.validation`) are
+imported on first use, so that ``import trussfe`` stays light.
 """
 from importlib.metadata import PackageNotFoundError, version as _version
 
@@ -28,23 +27,21 @@ from .model.sections import Material, Section  # noqa: E402
 from .model.structure import Structure, build_structure  # noqa: E402
 
 #: Analyses of the Python API, imported from :mod:`trussfe.api` on first use.
-_API = ("static", "modes", "buckling", "simulate", "actuators", "transient", "mechanism",
-        "trace", "postcritical", "model_from_dict")
-#: Subpackages that are callable as the analysis of the same name.
-_CALLABLE_PACKAGES = ("elastic", "validate")
+_API = ("static", "modes", "buckling", "simulate", "actuators", "elastic", "transient",
+        "mechanism", "trace", "postcritical", "model_from_dict")
 
 __all__ = ["AnalysisError", "InputError", "MechanismError", "TrussfeError", "Material",
            "Section", "Structure", "build_structure", "read_model", "__version__",
-           *_API, *_CALLABLE_PACKAGES]
+           *_API, "validate"]
 
 
 def __getattr__(name: str):
     if name in _API:
         from . import api
         return getattr(api, name)
-    if name in _CALLABLE_PACKAGES:
-        import importlib
-        return importlib.import_module(f"{__name__}.{name}")
+    if name == "validate":
+        from .validation.run import validate
+        return validate
     raise AttributeError(f"module 'trussfe' has no attribute '{name}'")
 
 

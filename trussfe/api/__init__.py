@@ -22,7 +22,6 @@ from .model import ModelLike, as_structure, model_from_dict, read_model
 from .nonlinear_path import PostcriticalResult, postcritical
 from .results import Result
 from .rigid_body import ActuatorsResult, SimulateResult, actuators, simulate
-from .validation import ValidationResult, validate
 
 #: The analyses that take a model, by command name (the validation suite's ``analysis``).
 ANALYSES = MappingProxyType({
@@ -54,6 +53,6 @@ def check_options(analysis: str, options) -> None:
 __all__ = ["ANALYSES", "ActuatorsResult", "BucklingResult", "ElasticResult",
            "MechanismResult", "ModelLike", "ModesResult", "PostcriticalResult", "Result",
            "SimulateResult", "StaticResult", "TraceResult", "TransientResult",
-           "ValidationResult", "actuators", "as_structure", "buckling", "check_options", "elastic",
+           "actuators", "as_structure", "buckling", "check_options", "elastic",
            "mechanism", "model_from_dict", "modes", "option_names", "postcritical", "read_model", "simulate",
-           "static", "trace", "transient", "validate"]
+           "static", "trace", "transient"]

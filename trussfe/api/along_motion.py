@@ -46,7 +46,7 @@ def elastic(model: ModelLike, *, motion=None, steps: int | None = None,
         ``displacement`` (step, node, dim), ``axial_force`` and ``axial_force_rigid``
         (step, member), ``section_forces`` (step, member, station, 6), …
     """
-    from ..elastic.along_motion import simulate_elastic
+    from ..response.along_motion import simulate_elastic
     from ..mechanics.conventions import Conventions
 
     choice("--scheme", scheme, SCHEMES)
@@ -91,7 +91,7 @@ def transient(model: ModelLike, *, motion, steps: int | None = None, dt: float |
         ``axial_force``, ``axial_force_quasi_static``, ``axial_force_rigid`` (step, member),
         ``displacement`` (step, node, dim), ``energy``, …
     """
-    from ..elastic.transient import transient_response
+    from ..response.transient import transient_response
 
     choice("--bar-model", bar_model, TRANSIENT_BAR_MODELS)
     choice("--update", update, UPDATES)
@@ -106,10 +106,10 @@ def transient(model: ModelLike, *, motion, steps: int | None = None, dt: float |
 class ElasticResult(Result):
     """Finite-element response along a rigid-body motion (:func:`trussfe.elastic`).
 
-    ``solution`` is the :class:`trussfe.elastic.along_motion.ElasticResponse`; ``rigid`` the
+    ``solution`` is the :class:`trussfe.response.along_motion.ElasticResponse`; ``rigid`` the
     rigid-body :class:`~trussfe.rigid.simulate.SimulationResult` of the same motion and
     ``comparison`` the largest scaled FE − rigid differences
-    (:func:`trussfe.elastic.along_motion.compare_with_rigid`).
+    (:func:`trussfe.response.along_motion.compare_with_rigid`).
     """
 
     command: ClassVar[str] = "elastic"
@@ -185,7 +185,7 @@ class ElasticResult(Result):
 @dataclass(frozen=True, eq=False, repr=False)
 class TransientResult(Result):
     """Elastic vibration superposed on a prescribed motion (:func:`trussfe.transient`);
-    ``solution`` is a :class:`trussfe.elastic.transient.TransientResult`, whose attributes
+    ``solution`` is a :class:`trussfe.response.transient.TransientResult`, whose attributes
     hold the same arrays with ``_qs`` for ``_quasi_static``."""
 
     command: ClassVar[str] = "transient"

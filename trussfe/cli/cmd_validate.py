@@ -11,8 +11,7 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from .. import api
-from ..api.validation import default_cases_dir
+from ..validation.run import default_cases_dir, validate
 from ..errors import InputError
 from . import options as opt
 
@@ -34,7 +33,7 @@ def register(subparsers) -> None:
 
 
 def _main(args) -> int:
-    run = api.validate(Path(args.cases) if args.cases else default_cases_dir(),
+    run = validate(Path(args.cases) if args.cases else default_cases_dir(),
                        case=args.cases_selected,
                        progress=not args.no_progress and sys.stderr.isatty())
     if not run.cases:

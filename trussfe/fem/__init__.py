@@ -6,8 +6,6 @@
 from .discretisation import DEFAULT_FRAME_SUBDIVISIONS, FEModel, discretise, local_axes
 from .solver import factorise, solve_free
 from .static import StaticResult, section_forces, solve_static, static_json
-from .stress import von_mises
 
 __all__ = ["DEFAULT_FRAME_SUBDIVISIONS", "FEModel", "discretise", "local_axes", "factorise",
-           "solve_free", "StaticResult", "section_forces", "solve_static", "static_json",
-           "von_mises"]
+           "solve_free", "StaticResult", "section_forces", "solve_static", "static_json"]

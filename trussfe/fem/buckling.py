@@ -17,14 +17,8 @@ never as a buckling factor of the given loads.
 stiffness of their axial force); ``"pinned-beam"`` (default here) subdivides every bar into
 beam elements so that each member's own Euler buckling between its joints appears.
 
-Member Euler load (Lacy eq. 2.26 / 4.77)::
-
-    P_cr = C π² E A / (l / k)²  =  C π² E I / l²,     k = sqrt(I / A)
-
-with ``C = 1`` for pinned ends (Lacy section 2.8 also uses ``C = 1`` for the
-cantilever–pinned leadscrew tube, "conservative").  The thesis prints ``k = sqrt(A/I)``
-(an OCR or typing slip: that is the inverse of a radius of gyration); the code
-(Appendix A: ``Pcr1 = pi^2*E*ina/l1^2``) uses ``k = sqrt(I/A)``, as here.
+Member Euler loads (Lacy eq. 2.26 / 4.77, pinned ends) are those of
+:func:`trussfe.mechanics.euler.member_euler_loads`.
 """
 from __future__ import annotations
 
@@ -36,6 +30,7 @@ import scipy.linalg as sla
 import scipy.sparse.linalg as spla
 
 from ..errors import AnalysisError, InputError
+from ..mechanics.euler import member_euler_loads
 from ..model.structure import Structure
 from .discretisation import FEModel
 from .solver import factorise
@@ -48,43 +43,6 @@ DENSE_BUCKLING_LIMIT = 600
 
 #: Axial forces below this fraction of the largest applied load count as "unloaded".
 UNLOADED_TOLERANCE = 1e-12
-
-
-def euler_load(structure: Structure, end_coefficient: float | np.ndarray = 1.0,
-               lengths: np.ndarray | None = None) -> np.ndarray:
-    """Euler critical load of every member (Lacy eq. 2.26 / 4.77).
-
-    Parameters
-    ----------
-    structure : Structure
-    end_coefficient : float or ndarray, shape (m,)
-        End-condition constant C (1 for pinned–pinned).
-    lengths : ndarray, shape (m,), optional
-        Buckling lengths (default the member lengths).
-
-    Returns
-    -------
-    ndarray, shape (m,)
-        ``C π² E A / (l/k)²`` with ``k = sqrt(I_min / A)``, N.
-
-    Examples
-    --------
-    The follower of Lacy's triangular truss (OD 1 in, ID 7/8 in, l = 2 m, E = 71 GPa),
-    Table 3.3's allowable load 1481.2 N:
-
-    >>> from trussfe.model.structure import build_structure
-    >>> from trussfe.model.sections import Section, Material
-    >>> s = build_structure([[0, 0], [2, 0]], [(0, 1)],
-    ...                     section=Section.tube("t", 0.0254, 0.022225),
-    ...                     material=Material("al", E=71e9, G=26.2e9, density=2711.5))
-    >>> round(float(euler_load(s)[0]), 1)
-    1481.2
-    """
-    L = structure.lengths() if lengths is None else np.asarray(lengths, dtype=float)
-    area = structure.area
-    inertia = np.fmin(structure.Iy, structure.Iz)
-    k = np.sqrt(inertia / area)                        # radius of gyration
-    return np.asarray(end_coefficient) * np.pi**2 * structure.E * area / (L / k) ** 2
 
 
 @dataclass
@@ -228,7 +186,7 @@ def solve_buckling(structure: Structure, count: int = 4, bar_model: str = "pinne
     V = V / V[np.argmax(np.abs(V), axis=0), np.arange(V.shape[1])]
     shapes = np.zeros((fe.n_dof, V.shape[1]))
     shapes[free] = V
-    pe = euler_load(structure)
+    pe = member_euler_loads(structure)
     util = np.maximum(-static.axial_force, 0.0) / pe
     log.info("buckling: λ1 = %.6g (%d free DOFs)", lam[0], n)
     return BucklingResult(static=static, load_factors=lam, shapes=shapes, euler_load=pe,

@@ -36,10 +36,9 @@ in bending.  Members of type ``beam`` are frames in both models.
 
 Local axes
 ----------
-x runs from the start to the end node.  2-D: y = x rotated by +90°.  3-D: y is the member's
-``orientation`` vector made orthogonal to x when given; otherwise the global Z axis made
-orthogonal to x (so local y points "up" for non-vertical members) or, for a vertical member,
-the global X axis.  z = x × y.
+Those of :mod:`trussfe.mechanics.geometry`: x runs from the start to the end node; 2-D: y = x
+rotated by +90°; 3-D: y from the member's ``orientation`` vector, else the global Z axis (the
+global X axis for a vertical member) made orthogonal to x; z = x × y.
 """
 from __future__ import annotations
 
@@ -54,6 +53,8 @@ from skfem import Basis, ElementLineHermite, ElementLineP1, MeshLine1, asm
 
 from ..budget import require
 from ..errors import InputError
+from ..mechanics.geometry import local_axes, member_vectors, unit_vectors
+from ..mechanics.mass import mass_per_length, twist_inertia_per_length
 from ..mechanics.releases import JOINT, OWN, end_rotations
 from ..model.structure import Structure
 from . import forms
@@ -69,66 +70,6 @@ BAR_MODELS = ("truss", "pinned-beam")
 
 #: Quadrature order: exact for the Hermite consistent mass (degree 6).
 _INTORDER = 6
-
-
-def _unit_rows(d: np.ndarray) -> np.ndarray:
-    """Rows of ``d`` scaled to unit length (the members' axes from their end-to-end
-    vectors; one arithmetic for :func:`local_axes` and :attr:`FEModel.axis`)."""
-    return d / np.sqrt(np.einsum("ij,ij->i", d, d))[:, None]
-
-
-def local_axes(structure: Structure, coords: np.ndarray | None = None) -> np.ndarray:
-    """Rotation matrices from global to member axes.
-
-    Parameters
-    ----------
-    structure : Structure
-    coords : ndarray, optional
-        Node positions (default ``structure.coords``).
-
-    Returns
-    -------
-    ndarray, shape (m, dim, dim)
-        ``R[i]`` has the member's local axes as rows, so ``x_local = R[i] @ x_global``.
-
-    Examples
-    --------
-    >>> from trussfe.model.structure import build_structure
-    >>> from trussfe.model.sections import Section, Material
-    >>> s = build_structure([[0, 0, 0], [1, 0, 0]], [(0, 1)], section=Section.tube("t", .02),
-    ...                     material=Material("al", 7e10, 2.6e10))
-    >>> local_axes(s)[0]
-    array([[ 1.,  0.,  0.],
-           [ 0.,  0.,  1.],
-           [ 0., -1.,  0.]])
-    """
-    ex = _unit_rows(structure.member_vectors(coords))        # (member, dim)
-    m, dim = ex.shape
-    R = np.empty((m, dim, dim))
-    R[:, 0] = ex
-    if dim == 2:
-        R[:, 1, 0], R[:, 1, 1] = -ex[:, 1], ex[:, 0]
-        return R
-    ref = np.array(structure.orientation, dtype=float).reshape(m, 3)
-    missing = ~np.all(np.isfinite(ref), axis=1)
-    vertical = np.abs(ex[:, 2]) > 1.0 - 1e-9
-    ref[missing & ~vertical] = (0.0, 0.0, 1.0)
-    ref[missing & vertical] = (1.0, 0.0, 0.0)
-    ey = ref - np.einsum("ij,ij->i", ref, ex)[:, None] * ex
-    norm = np.sqrt(np.einsum("ij,ij->i", ey, ey))
-    bad = norm < 1e-9
-    if np.any(bad):
-        i = int(np.flatnonzero(bad)[0])
-        raise InputError(f"members.{structure.member_ids[i]}",
-                         "orientation vector is parallel to the member; give a vector "
-                         "in the local x-y plane that is not along the member")
-    ey /= norm[:, None]
-    R[:, 1] = ey
-    # ez = ex × ey, component by component into its row (no temporaries of np.cross)
-    R[:, 2, 0] = ex[:, 1] * ey[:, 2] - ex[:, 2] * ey[:, 1]
-    R[:, 2, 1] = ex[:, 2] * ey[:, 0] - ex[:, 0] * ey[:, 2]
-    R[:, 2, 2] = ex[:, 0] * ey[:, 1] - ex[:, 1] * ey[:, 0]
-    return R
 
 
 #: Peak memory of a linear solve per finite element, bytes (measured 5.6–6 KiB per 3-D
@@ -410,12 +351,9 @@ class FEModel:
         self.nrot = nrot
         n, m = s.n_nodes, s.n_members
         conn = s.connectivity
-        # one pass over the member vectors for the lengths (as Structure.lengths) and the
-        # unit vectors (as local_axes' first row)
-        d = s.member_vectors()
-        L = np.linalg.norm(d, axis=1)
-        self._axis = _unit_rows(d)
-        del d
+        # one pass over the member vectors for the lengths and the unit vectors (local_axes'
+        # first row, by the same arithmetic)
+        self._axis, L = unit_vectors(member_vectors(s.coords, conn))
         self._rotation = None
         is_frame = s.is_beam.copy() if self.bar_model == "truss" else np.ones(m, dtype=bool)
         if np.any(is_frame) or np.any(np.isfinite(s.orientation)):
@@ -732,9 +670,10 @@ class FEModel:
 
         def spec(f, mem):
             if f.name == "theta":
-                rhoJ = np.where(self.twist_member, s.density * np.nan_to_num(s.J), 0.0)
+                rhoJ = np.where(self.twist_member, twist_inertia_per_length(s.density, s.J),
+                                0.0)
                 return forms.mass, {"rhoA": rhoJ[mem]}
-            return forms.mass, {"rhoA": (s.density * s.area)[mem]}
+            return forms.mass, {"rhoA": mass_per_length(s.density, s.area)[mem]}
         return self._block_local(g, spec)
 
     def local_geometric_stiffness(self, g: _Group, N: np.ndarray) -> sp.csr_matrix:
@@ -751,7 +690,7 @@ class FEModel:
         """Local load vector of the member self-weight ρA·g (field DOF space)."""
         s = self.structure
         mem = self.element_member[g.elements]
-        q = (s.density * s.area)[mem, None] * np.asarray(gravity, dtype=float)[None, :]
+        q = mass_per_length(s.density, s.area)[mem, None] * np.asarray(gravity, dtype=float)[None, :]
         q_local = np.einsum("eij,ej->ei", self.rotation[mem], q)  # (el, dim)
         out = np.zeros(g.n_local)
         for f in g.fields:
@@ -862,7 +801,7 @@ class FEModel:
         if kind == "consistent":
             def bar(g):
                 mem, _, _, L = self._bar_geometry(g)
-                return self._bar_matrix(g, "mass", (s.density * s.area)[mem] * L, full=True)
+                return self._bar_matrix(g, "mass", mass_per_length(s.density, s.area)[mem] * L, full=True)
             M = self._sum_groups(bar, self.local_mass)
         elif kind == "lumped":
             diag = np.zeros(self.n_dof)
@@ -870,12 +809,12 @@ class FEModel:
                 mem = self.element_member[g.elements]
                 if g.kind == "bar":                  # half ρAL on each end's translations
                     ends = self.structure.connectivity[mem]
-                    half = 0.5 * (s.density * s.area)[mem] * self.element_length[g.elements]
+                    half = 0.5 * mass_per_length(s.density, s.area)[mem] * self.element_length[g.elements]
                     w = np.bincount(ends.ravel(), np.repeat(half, 2),
                                     minlength=s.n_nodes)
                     diag[self.node_dofs[:, : self.ndim]] += w[:, None]
                     continue
-                half = 0.5 * (s.density * s.area)[mem] * self.element_length[g.elements]
+                half = 0.5 * mass_per_length(s.density, s.area)[mem] * self.element_length[g.elements]
                 # translation components of both ends, weighted through G (rotation-free)
                 ne, nc2 = g.elements.size, 2 * g.ncomp
                 w = np.zeros((ne, nc2))
@@ -933,7 +872,7 @@ class FEModel:
                 if g.kind == "bar":      # P1 load form: ∫ v = h/2 at each end (reference_bar)
                     mem, ends, _, L = self._bar_geometry(g)
                     ref = reference_bar()["load"]
-                    w = (s.density * s.area)[mem] * L
+                    w = mass_per_length(s.density, s.area)[mem] * L
                     per_node = (ref[0] * np.bincount(ends[:, 0], w, minlength=s.n_nodes)
                                 + ref[1] * np.bincount(ends[:, 1], w, minlength=s.n_nodes))
                     f[self.node_dofs[:, : self.ndim]] += per_node[:, None] * grav[None, :]

@@ -24,8 +24,10 @@ Mass
   .. math:: M_\\perp = \\begin{bmatrix} m - 2S/L + I/L^2 & S/L - I/L^2 \\\\
             S/L - I/L^2 & I/L^2 \\end{bmatrix} \\otimes (\\mathbf 1 - e e^T)
 
-  with ``m, S, I`` the total mass and first and second moments about the start node; axially
-  the base moves with the start node and the tube with the end node (the member telescopes).
+  with ``m, S, I`` the total mass and first and second moments about the start node (the
+  tube's with the rotary inertia of its sections, as in the rigid-body force model); axially
+  the base moves with the start node and the tube with the end node (the member telescopes;
+  :func:`trussfe.mechanics.mass.rigid_line_mass`).
   The member's own distributed FE mass is then left out so the tube is not counted twice.
 
 Rigid-body and mechanism modes
@@ -48,6 +50,8 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from ..errors import AnalysisError, InputError
+from ..mechanics.geometry import member_vectors, unit_vectors
+from ..mechanics.mass import gyration_squared, mass_per_length, rigid_line_mass, tube_moments
 from ..model.structure import Structure
 from .discretisation import FEModel, discretise
 from .. import linalg
@@ -88,24 +92,15 @@ def active_member_mass(fe: FEModel) -> sp.csr_matrix:
     if not acts:
         return sp.csr_matrix((fe.n_dof, fe.n_dof))
     idx = np.array([a.member for a in acts], dtype=np.int64)
-    L = s.lengths()[idx]
-    e = s.unit_vectors()[idx]                                    # (act, dim)
+    e, L = unit_vectors(member_vectors(s.coords, s.connectivity[idx]))   # (act, dim), (act,)
     mb = np.array([a.base_mass for a in acts])
     Sb = mb * np.array([a.base_cg for a in acts])
     Ib = np.array([a.base_inertia for a in acts])
     lt = np.array([a.tube_length for a in acts])
-    mt = (s.density * s.area)[idx] * lt
-    a0 = L - lt                                                  # tube from a0 to L
-    St = mt * (L + a0) / 2.0
-    It = (s.density * s.area)[idx] * (L**3 - a0**3) / 3.0
-    m, S, inertia = mb + mt, Sb + St, Ib + It
-    tr = np.array([[m - 2 * S / L + inertia / L**2, S / L - inertia / L**2],
-                   [S / L - inertia / L**2, inertia / L**2]])    # (2, 2, act)
-    ax = np.array([[mb, 0 * mb], [0 * mb, mt]])                  # (2, 2, act)
-    P = np.einsum("ai,aj->aij", e, e)                            # (act, dim, dim)
-    Q = np.eye(dim)[None] - P
-    # (act, end, dim, end, dim) element blocks
-    blk = (np.einsum("rsa,aij->arisj", tr, Q) + np.einsum("rsa,aij->arisj", ax, P))
+    # the leadscrew tube, from L − l_t to L, with its sections' rotary inertia
+    mt, St, It = tube_moments(mass_per_length(s.density, s.area)[idx], L - lt, L,
+                              gyration_squared(s.Iy, s.Iz, s.area)[idx])
+    blk = rigid_line_mass(L, e, mb + mt, Sb + St, Ib + It, mb, mt)   # (act, end, dim, end, dim)
     nodes = s.connectivity[idx]                                  # (act, 2)
     dofs = fe.node_dofs[nodes][:, :, :dim]                       # (act, end, dim)
     rows = np.broadcast_to(dofs[:, :, :, None, None], blk.shape)

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
 """Linear static analysis: ``K u = f`` on the free DOFs, then reactions, member forces and
-stresses (Lacy eqs. 2.23–2.25, 4.75/4.76; see :mod:`trussfe.fem.stress`).
+stresses (Lacy eqs. 2.23–2.25, 4.75/4.76; see :mod:`trussfe.mechanics.stress`).
 
 Sign conventions
 ----------------
@@ -21,12 +21,12 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import AnalysisError, InputError
+from ..mechanics.stress import round_sections, von_mises
 from ..model.structure import DOF_NAMES, Structure
 from ..linalg import SingularMatrixError
 from .discretisation import FEModel, discretise
 from .solver import factorise, factorise_truss, raise_mechanism, solve_free
 from .truss_band import internal_forces
-from .stress import von_mises
 
 log = logging.getLogger(__name__)
 
@@ -240,10 +240,14 @@ def solve_static(structure: Structure, bar_model: str = "truss",
             raise InputError(f"sections.{s.sections[i].name}",
                              f"c (outer-fibre distance) is missing (member {s.member_ids[i]}); "
                              "the bending stress of a beam needs it: give c")
-        s1, s2 = von_mises(F, s.area, s.Iy, s.Iz, s.c)
+        col = lambda a: a[:, None]       # member properties against (member, station)
+        vm = von_mises(F[..., 0], F[..., 1], F[..., 2], F[..., 4], F[..., 5], col(s.area),
+                       col(s.Iy), col(s.Iz), col(s.c), col(s.c),
+                       col(round_sections(s.sections)))
+        s1, s2 = vm.s1, vm.s2
     else:
         # truss bars only: section forces are axial, so von Mises is |N|/A at S1 and S2
-        # (von_mises with V = M = 0), computed directly for large pin-jointed models
+        # (von_mises with V = M = 0), taken directly for large pin-jointed models
         s1 = np.abs(F[..., 0]) / s.area[:, None]
         s2 = s1.copy()
     # largest over the stations; fmax skips the NaN padding past a member's own stations

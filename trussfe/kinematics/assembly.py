@@ -20,6 +20,7 @@ import scipy.sparse.linalg as spla
 
 from ..errors import AnalysisError
 from ..linalg import factor
+from ..mechanics.geometry import member_vectors
 from .compatibility import compatibility_matrix
 
 
@@ -108,7 +109,7 @@ def solve_positions(
     tol = tolerance * scale
     nb, nf = conn.shape[0], free_flat.size
     for it in range(max_iterations + 1):
-        vec = x[conn[:, 1]] - x[conn[:, 0]]
+        vec = member_vectors(x, conn)
         cur = np.linalg.norm(vec, axis=1)
         r = cur - L
         res = float(np.max(np.abs(r))) if nb else 0.0
@@ -129,7 +130,7 @@ def solve_positions(
         xf = x.ravel()
         xf[free_flat] += dx
         x = xf.reshape(x.shape)
-    vec = x[conn[:, 1]] - x[conn[:, 0]]
+    vec = member_vectors(x, conn)
     r = np.linalg.norm(vec, axis=1) - L
     worst = np.argsort(-np.abs(r))[:3]
     names = ", ".join(f"'{member_ids[i] if member_ids else i}'" for i in worst

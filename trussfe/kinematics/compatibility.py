@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 import scipy.sparse as sp
+from ..mechanics.geometry import member_vectors
 
 
 def compatibility_matrix(coords: np.ndarray, connectivity: np.ndarray,
@@ -45,7 +46,7 @@ def compatibility_matrix(coords: np.ndarray, connectivity: np.ndarray,
     conn = np.asarray(connectivity, dtype=np.int64).reshape(-1, 2)
     n, dim = coords.shape
     b = conn.shape[0]
-    vec = coords[conn[:, 1]] - coords[conn[:, 0]]          # (bar, dim)
+    vec = member_vectors(coords, conn)          # (bar, dim)
     unit = vec / np.linalg.norm(vec, axis=1)[:, None]
     rows = np.repeat(np.arange(b), 2 * dim)
     cols = (conn[:, :, None] * dim + np.arange(dim)[None, None, :]).reshape(b, -1)  # (bar, 2*dim)

@@ -34,6 +34,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from ..linalg import factor
+from ..mechanics.geometry import member_vectors
 from .compatibility import compatibility_matrix
 
 log = logging.getLogger(__name__)
@@ -80,14 +81,14 @@ def compatibility_error(coords: np.ndarray, connectivity: np.ndarray, lengths: n
     """
     x = np.asarray(coords, float) + np.asarray(increments, float)
     conn = np.asarray(connectivity, dtype=np.int64).reshape(-1, 2)
-    vec = x[conn[:, 1]] - x[conn[:, 0]]
+    vec = member_vectors(x, conn)
     L = np.asarray(lengths, float)
     return (np.einsum("ij,ij->i", vec, vec) - L * L) / (2.0 * L)
 
 
 def _jacobian(x: np.ndarray, conn: np.ndarray, lengths: np.ndarray, free: np.ndarray):
     """∂t/∂δ of the exact error at positions x: row i = (x_k − x_h)/l_i at the free columns."""
-    vec = x[conn[:, 1]] - x[conn[:, 0]]                    # (bar, dim)
+    vec = member_vectors(x, conn)                    # (bar, dim)
     n, dim = x.shape
     b = conn.shape[0]
     g = vec / lengths[:, None]

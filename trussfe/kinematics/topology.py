@@ -31,6 +31,7 @@ import scipy.sparse.csgraph as csg
 
 from ..errors import AnalysisError, InputError
 from ..linalg import factor
+from ..mechanics.geometry import member_vectors
 
 
 def incidence_matrix(n_nodes: int, connectivity: np.ndarray) -> sp.csr_matrix:
@@ -138,7 +139,7 @@ def compatibility_from_incidence(coords: np.ndarray, connectivity: np.ndarray) -
     n, dim = x.shape
     conn = np.asarray(connectivity, dtype=np.int64).reshape(-1, 2)
     Aa = incidence_matrix(n, conn).T.tocsr().astype(float)  # (s, n)
-    vec = x[conn[:, 1]] - x[conn[:, 0]]
+    vec = member_vectors(x, conn)
     e = vec / np.linalg.norm(vec, axis=1)[:, None]
     blocks = [(-sp.diags(e[:, k]) @ Aa) for k in range(dim)]  # (s, n) per axis
     B = sp.hstack(blocks).tocsr()                           # columns ordered (axis, node)
@@ -337,7 +338,7 @@ def cycle_kinematics(eq: EquivalentAssembly, drive_edge: int, omega: float,
     conn = eq.connectivity
     topo = eq.topology
     C = topo.cycle_matrix.astype(float)                    # (cycle, edge)
-    u = x[conn[:, 1]] - x[conn[:, 0]]
+    u = member_vectors(x, conn)
     L = np.linalg.norm(u, axis=1)
     e = u / L[:, None]
     ep = np.column_stack([-e[:, 1], e[:, 0]])

@@ -56,6 +56,7 @@ import scipy.sparse as sp
 
 from ..budget import require
 from ..errors import AnalysisError, InputError
+from ..mechanics.geometry import member_lengths
 from .compatibility import compatibility_matrix
 from .mechanism import (DENSE_LIMIT, DIVERGENCE_MESSAGE, StepResult, _augmented_tangent,
                         _check_double_crossing, _chord_corrector, _dense_null,
@@ -196,7 +197,7 @@ def _set_up(coords, connectivity, free, drives, step, steps, tolerance, rank_tol
         raise InputError("step", f"must be finite and non-zero, got {step}")
     if steps < 1:
         raise InputError("steps", f"must be at least 1, got {steps}")
-    L = np.linalg.norm(x[conn[:, 1]] - x[conn[:, 0]], axis=1)
+    L = member_lengths(x, conn)
     Lmax = float(L.max())
     rtol = max(1e-8, 100 * tolerance) if rank_tolerance is None else float(rank_tolerance)
     h_full = float(np.max(np.abs(S)))
@@ -746,8 +747,8 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
     >>> conn = np.array([[0, 1], [1, 2], [2, 3]])
     >>> free = np.array([[0, 0], [1, 1], [1, 1], [0, 0]], bool)
     >>> r = trace_mechanism(x, conn, free, drives=[2], step=0.05, steps=4)
-    >>> L0 = np.linalg.norm(x[conn[:, 1]] - x[conn[:, 0]], axis=1)
-    >>> L4 = np.linalg.norm(r.coords[-1][conn[:, 1]] - r.coords[-1][conn[:, 0]], axis=1)
+    >>> L0 = member_lengths(x, conn)
+    >>> L4 = member_lengths(r.coords[-1], conn)
     >>> bool(np.allclose(L4, L0, rtol=1e-9)), round(float(r.coords[-1][1, 0]), 6)
     (True, 0.2)
     """

@@ -30,6 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import AnalysisError
+from ..mechanics.geometry import member_lengths, member_vectors
 from .compatibility import compatibility_matrix
 
 
@@ -70,7 +71,7 @@ def _quadric_terms(coords, conn, free, N, a):
     Nf = np.zeros((n * dim, N.shape[1]))
     Nf[fidx] = N
     Nf = Nf.reshape(n, dim, -1)
-    L = np.linalg.norm(coords[conn[:, 1]] - coords[conn[:, 0]], axis=1)
+    L = member_lengths(coords, conn)
     dN = Nf[conn[:, 1]] - Nf[conn[:, 0]]                   # (b, dim, m)
     dv = dN @ a                                            # (b, dim)
     q = np.einsum("bd,bd->b", dv, dv) / L
@@ -125,7 +126,7 @@ def tangent_cone(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarray,
     Nf = np.zeros((n * dim, m))
     Nf[fidx] = N
     Nf = Nf.reshape(n, dim, m)
-    L = np.linalg.norm(x[conn[:, 1]] - x[conn[:, 0]], axis=1)
+    L = member_lengths(x, conn)
     dN = Nf[conn[:, 1]] - Nf[conn[:, 0]]                   # (b, dim, m)
     W = np.einsum("bs,bdm->sbdm", Om / L[:, None], dN)      # stress-weighted, (s, b, dim, m)
     # ωᵀq(N a) = aᵀ M a with M_k = Σ_b ω_kb/l_b ΔN_bᵀ ΔN_b: the quadrics, shape (s, m, m)
@@ -222,8 +223,8 @@ def second_order_prediction(coords: np.ndarray, connectivity: np.ndarray, free: 
     u = np.zeros(n * dim)
     u[fidx] = v
     u = u.reshape(n, dim)
-    dv = u[conn[:, 1]] - u[conn[:, 0]]
-    L = np.linalg.norm(x[conn[:, 1]] - x[conn[:, 0]], axis=1)
+    dv = member_vectors(u, conn)
+    L = member_lengths(x, conn)
     q = np.einsum("bd,bd->b", dv, dv) / L
     A = np.vstack([B, np.eye(B.shape[1])[keep]])
     w = np.linalg.lstsq(A, np.concatenate([-0.5 * q, [0.0]]), rcond=None)[0]

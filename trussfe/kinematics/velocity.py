@@ -19,6 +19,7 @@ import scipy.sparse as sp
 
 from ..errors import AnalysisError
 from ..linalg import factor
+from ..mechanics.geometry import member_vectors
 from .compatibility import compatibility_matrix
 
 
@@ -123,9 +124,9 @@ def mechanism_acceleration(coords: np.ndarray, connectivity: np.ndarray, free: n
     col = -np.ones(x.size, dtype=np.int64)
     col[fidx] = np.arange(fidx.size)
     v = np.asarray(velocity, float).reshape(x.shape)
-    vec = x[conn[:, 1]] - x[conn[:, 0]]
+    vec = member_vectors(x, conn)
     L = np.linalg.norm(vec, axis=1)
-    vrel = v[conn[:, 1]] - v[conn[:, 0]]
+    vrel = member_vectors(v, conn)
     b = conn.shape[0]
     ldot = np.zeros(b) if length_rates is None else np.asarray(length_rates, float)
     lddot = np.zeros(b) if length_accelerations is None else np.asarray(length_accelerations,
@@ -147,6 +148,6 @@ def bar_angular_velocity(coords: np.ndarray, connectivity: np.ndarray,
     """Angular velocity of each bar of a planar assembly, ``ω = (e × v_rel)/L``, rad/s."""
     x = np.asarray(coords, float)
     conn = np.asarray(connectivity, dtype=np.int64).reshape(-1, 2)
-    vec = x[conn[:, 1]] - x[conn[:, 0]]
-    vrel = velocity[conn[:, 1]] - velocity[conn[:, 0]]
+    vec = member_vectors(x, conn)
+    vrel = member_vectors(velocity, conn)
     return (vec[:, 0] * vrel[:, 1] - vec[:, 1] * vrel[:, 0]) / np.einsum("ij,ij->i", vec, vec)

@@ -28,6 +28,7 @@ import numpy as np
 from ..errors import AnalysisError
 from ..io.extension_tables import AXES, parse_monitor
 from ..io.model_file import read_model
+from ..mechanics.euler import member_euler_loads
 from ..model.structure import Structure
 from .buckling import apply_imperfection, linear_buckling
 from .failure import FailureLaws
@@ -78,7 +79,7 @@ def unmodelled_buckling(result: PathResult) -> tuple[int, float, float] | None:
     Without a ``[failure]`` table a bar modelled as a truss element stays straight in
     compression whatever the force; this finds, along the path, the first state where a
     live bar's compression exceeds its pinned–pinned Euler load
-    (:func:`~trussfe.fem.buckling.euler_load`, Lacy eq. 2.26).
+    (:func:`~trussfe.mechanics.euler.member_euler_loads`, Lacy eq. 2.26).
 
     Returns
     -------
@@ -86,13 +87,12 @@ def unmodelled_buckling(result: PathResult) -> tuple[int, float, float] | None:
         ``(member, load factor, Euler load N)``, or None when no bar passes it, when the model
         has failure laws, or when its bars have no second moment of area.
     """
-    from ..fem.buckling import euler_load
     m = result.model
     s = m.structure
     if "failure" in s.extensions or m.t_member.size == 0 or not result.path:
         return None
     with np.errstate(invalid="ignore"):
-        Pe = euler_load(s)[m.t_member]
+        Pe = member_euler_loads(s)[m.t_member]
     ok = np.isfinite(Pe) & (Pe > 0)
     if not ok.any():
         return None

@@ -31,6 +31,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..mechanics.geometry import frame_rotations, member_vectors, unit_vectors
+
 _EYE = np.eye(3)
 
 
@@ -245,7 +247,7 @@ def reference_frames(X: np.ndarray, conn: np.ndarray, orientation: np.ndarray) -
     """Reference axes of the elements as columns ``[e1 e2 e3]``, shape (element, 3, 3).
 
     ``e1`` along the chord; ``e2`` from the member's orientation vector, else global z (or
-    global x for an element along z) — the same rule as :func:`trussfe.fem.local_axes`, so
+    global x for an element along z) — :func:`trussfe.mechanics.geometry.frame_rotations`, so
     that ``Iy``/``Iz`` refer to the same axes in the linear and the nonlinear analysis.
 
     Parameters
@@ -255,16 +257,8 @@ def reference_frames(X: np.ndarray, conn: np.ndarray, orientation: np.ndarray) -
     orientation : ndarray, shape (element, 3)
         A vector in the local x–y plane; ``nan`` rows take the default.
     """
-    d = X[conn[:, 1]] - X[conn[:, 0]]
-    e1 = d / np.linalg.norm(d, axis=1)[:, None]
-    ref = np.array(orientation, dtype=float).reshape(len(conn), 3)
-    missing = ~np.all(np.isfinite(ref), axis=1)
-    vertical = np.abs(e1[:, 2]) > 1.0 - 1e-9
-    ref[missing & ~vertical] = (0.0, 0.0, 1.0)
-    ref[missing & vertical] = (1.0, 0.0, 0.0)
-    e2 = ref - np.sum(ref * e1, axis=1)[:, None] * e1
-    e2 /= np.linalg.norm(e2, axis=1)[:, None]
-    return np.stack([e1, e2, np.cross(e1, e2)], axis=2)
+    e1, _ = unit_vectors(member_vectors(X, conn))
+    return np.swapaxes(frame_rotations(e1, orientation), -1, -2)
 
 
 # ----------------------------------------------------------------------------- element
@@ -329,9 +323,7 @@ def beam3d_matrices(x: np.ndarray, conn: np.ndarray, Ra: np.ndarray, Rb: np.ndar
     ne = len(conn)
     EA, GJ, EIy, EIz = (np.broadcast_to(np.asarray(v, dtype=float), (ne,))
                         for v in (EA, GJ, EIy, EIz))
-    d = x[conn[:, 1]] - x[conn[:, 0]]                               # (el, 3)
-    l = np.linalg.norm(d, axis=1)                                   # (el,)
-    r1 = d / l[:, None]
+    r1, l = unit_vectors(member_vectors(x, conn))                   # (el, 3), (el,)
     Ta = Ra @ R0                                                    # (el, 3, 3) end triads
     Tb = Rb @ R0
     qa, qb = Ta[:, :, 1], Tb[:, :, 1]

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 import scipy.sparse as sp
+from ..mechanics.geometry import member_vectors, unit_vectors
 
 
 # ----------------------------------------------------------------------------------- bars
@@ -43,9 +44,7 @@ def truss_kinematics(x: np.ndarray, conn: np.ndarray, L0: np.ndarray):
     strain : ndarray, shape (element,)
         ``(l - L0) / L0``.
     """
-    vec = x[conn[:, 1]] - x[conn[:, 0]]                    # (element, dim)
-    l = np.linalg.norm(vec, axis=1)                         # (element,)
-    e = vec / l[:, None]
+    e, l = unit_vectors(member_vectors(x, conn))            # (element, dim), (element,)
     return l, e, (l - L0) / L0
 
 
@@ -119,8 +118,8 @@ def beam2d_local(x: np.ndarray, conn: np.ndarray, rot: np.ndarray, X: np.ndarray
     th : ndarray, shape (element, 2)
         Local end rotations relative to the chord, ``θᵢ - α``.
     """
-    d = x[conn[:, 1]] - x[conn[:, 0]]                     # (element, 2)
-    D = X[conn[:, 1]] - X[conn[:, 0]]
+    d = member_vectors(x, conn)                     # (element, 2)
+    D = member_vectors(X, conn)
     l = np.hypot(d[:, 0], d[:, 1])
     L0 = np.hypot(D[:, 0], D[:, 1])
     c, s = d[:, 0] / l, d[:, 1] / l

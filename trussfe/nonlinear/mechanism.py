@@ -23,6 +23,7 @@ import numpy as np
 
 from ..kinematics.compatibility import compatibility_matrix
 from ..linalg import RankError, matrix_rank
+from ..mechanics.geometry import member_lengths, member_vectors, unit_vectors
 
 log = logging.getLogger(__name__)
 
@@ -127,9 +128,7 @@ def _correct_lengths(x, conn, lengths, free, iters=30, tol=1e-12):
     fi = np.flatnonzero(free.ravel())
     scale = lengths.max()
     for _ in range(iters):
-        vec = x[conn[:, 1]] - x[conn[:, 0]]
-        l = np.linalg.norm(vec, axis=1)
-        err = lengths - l
+        err = lengths - member_lengths(x, conn)
         if np.abs(err).max() <= tol * scale:
             return x, True
         B = compatibility_matrix(x, conn, free).toarray()
@@ -143,9 +142,7 @@ def _correct_lengths(x, conn, lengths, free, iters=30, tol=1e-12):
 def _geometric_stiffness(x, conn, t, free):
     dim = x.shape[1]
     n = x.shape[0]
-    vec = x[conn[:, 1]] - x[conn[:, 0]]
-    l = np.linalg.norm(vec, axis=1)
-    e = vec / l[:, None]
+    e, l = unit_vectors(member_vectors(x, conn))
     k0 = (t / l)[:, None, None] * (np.eye(dim)[None] - e[:, :, None] * e[:, None, :])
     K = np.zeros((n * dim, n * dim))
     for a_sign, b_sign, ca, cb in ((1, 1, 0, 0), (1, 1, 1, 1), (-1, -1, 0, 1), (-1, -1, 1, 0)):
@@ -198,7 +195,7 @@ def equilibrium_form(coords: np.ndarray, connectivity: np.ndarray, free: np.ndar
     fi = np.flatnonzero(free.ravel())
     f = fvec.ravel()[fi]
     fn = np.linalg.norm(f)
-    lengths = np.linalg.norm(x[conn[:, 1]] - x[conn[:, 0]], axis=1)
+    lengths = member_lengths(x, conn)
     size = float(np.ptp(x, axis=0).max())
     h = step if step is not None else size / 20.0
     out = MechanismMotion(mechanisms=mechanism_count(x, conn, free)[0])
@@ -250,7 +247,7 @@ def equilibrium_form(coords: np.ndarray, connectivity: np.ndarray, free: np.ndar
     for _ in range(50):
         B = compatibility_matrix(x, conn, free).toarray()
         r = f - B.T @ t
-        err = lengths - np.linalg.norm(x[conn[:, 1]] - x[conn[:, 0]], axis=1)
+        err = lengths - member_lengths(x, conn)
         if np.linalg.norm(r) <= tolerance * fn and np.abs(err).max() <= 1e-12 * size:
             break
         Kg = _geometric_stiffness(x, conn, t, free)

@@ -43,6 +43,7 @@ import logging
 import numpy as np
 
 from ..errors import InputError
+from ..mechanics.geometry import member_lengths, member_vectors
 from ..model.postcritical import BAR_MODELS
 from ..model.structure import Structure
 from ..mechanics.releases import HELD, JOINT, OWN, end_rotations
@@ -430,7 +431,7 @@ class NonlinearModel:
             R[rel] = R[par] @ R[rel]
         conn = self.b_conn
         R0 = reference_frames(self.X, conn, self.b_orientation)
-        L0 = np.linalg.norm(self.X[conn[:, 1]] - self.X[conn[:, 0]], axis=1)
+        L0 = member_lengths(self.X, conn)
         f, k, N, M = beam3d_matrices(x, conn, R[self.b_slot[:, 0]], R[self.b_slot[:, 1]], R0,
                                      L0, self.b_EA, self.b_GJ, self.b_EI, self.b_EIz,
                                      N_override=N_override, tangent=tangent)
@@ -481,7 +482,7 @@ class NonlinearModel:
         """:meth:`_beam3d` of a model without relative slots (12 DOFs per element)."""
         conn = self.b_conn
         R0 = reference_frames(self.X, conn, self.b_orientation)
-        L0 = np.linalg.norm(self.X[conn[:, 1]] - self.X[conn[:, 0]], axis=1)
+        L0 = member_lengths(self.X, conn)
         f, k, N, M = beam3d_matrices(x, conn, R[self.b_slot[:, 0]], R[self.b_slot[:, 1]], R0,
                                      L0, self.b_EA, self.b_GJ, self.b_EI, self.b_EIz,
                                      N_override=N_override, tangent=tangent)
@@ -509,8 +510,7 @@ class NonlinearModel:
     def t_len0(self) -> np.ndarray:
         """Reference lengths of the truss elements, shape (truss element,)."""
         if not hasattr(self, "_t_len0"):
-            self._t_len0 = np.linalg.norm(self.X[self.t_conn[:, 1]] - self.X[self.t_conn[:, 0]],
-                                          axis=1)
+            self._t_len0 = member_lengths(self.X, self.t_conn)
         return self._t_len0
 
     def margins(self, res: dict) -> np.ndarray:
@@ -575,15 +575,15 @@ class NonlinearModel:
         """Element axial forces of the linearised kinematics, ``EA/L0 · eᵀ(u_b − u_a)``."""
         d = self.dim
         U = u[: self.n_points * d].reshape(-1, d)
-        e = (self.X[self.t_conn[:, 1]] - self.X[self.t_conn[:, 0]]) / self.t_len0[:, None]
-        Nt = self.t_EA / self.t_len0 * np.einsum("ij,ij->i", e, U[self.t_conn[:, 1]]
-                                                 - U[self.t_conn[:, 0]])
+        e = member_vectors(self.X, self.t_conn) / self.t_len0[:, None]
+        Nt = self.t_EA / self.t_len0 * np.einsum("ij,ij->i", e,
+                                                 member_vectors(U, self.t_conn))
         Nb = None
         if len(self.b_conn):
-            D = self.X[self.b_conn[:, 1]] - self.X[self.b_conn[:, 0]]
+            D = member_vectors(self.X, self.b_conn)
             L0 = np.linalg.norm(D, axis=1)
             Nb = self.b_EA / L0 * np.einsum("ij,ij->i", D / L0[:, None],
-                                            U[self.b_conn[:, 1]] - U[self.b_conn[:, 0]])
+                                            member_vectors(U, self.b_conn))
         return Nt, Nb
 
 

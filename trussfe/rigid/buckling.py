@@ -1,11 +1,9 @@
 # SPDX-License-Identifier: MIT
 """Euler buckling check of every member along a motion (Lacy eqs. 2.26 and 4.77).
 
-.. math:: P_{cr} = \\frac{C \\pi^2 E A}{(l/k)^2} = \\frac{C \\pi^2 E I}{l^2},
-          \\qquad k = \\sqrt{I/A},
-
-with C the end-condition constant (Shigley): 1 for a pinned–pinned member, and — as Lacy
-chooses conservatively — 1 for the cantilever–pinned leadscrew tube.  The column length l is the
+The allowable load is the Euler load π² E I / (K l)² of :mod:`trussfe.mechanics.euler`
+(Lacy's C π² E I / l² with C = 1/K²): K = 1 for a pinned–pinned member, and — as Lacy chooses
+conservatively — 1 for the cantilever–pinned leadscrew tube.  The column length l is the
 member length for a passive member and the leadscrew-tube length for an active one (Lacy
 Appendix A: ``Pcr2 = pi^2*E*ina/l2^2``).  The largest compression is the most negative axial
 force over all sections and time steps (Appendix A: ``max(abs(min(tension)))``).
@@ -17,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import AnalysisError
+from ..mechanics.euler import euler_load, weak_axis_inertia
 from ..model.structure import Structure
 
 
@@ -27,7 +26,7 @@ class BucklingCheck:
     Attributes
     ----------
     allowable : ndarray, shape (m,)
-        Euler load C π² E I / l², N.
+        Euler load π² E I / (K l)², N.
     column_length : ndarray, shape (m,)
         l, m.
     max_compression : ndarray, shape (m,)
@@ -45,26 +44,8 @@ class BucklingCheck:
     margin: np.ndarray
 
 
-def euler_load(E: np.ndarray, inertia: np.ndarray, length: np.ndarray,
-               constant: np.ndarray | float = 1.0) -> np.ndarray:
-    """Euler critical load C π² E I / l² (Lacy eq. 2.26).
-
-    Examples
-    --------
-    Lacy Table 3.3: the 2 m follower tube (OD 0.0254 m, ID 0.022225 m, E = 71 GPa) carries
-    1481.2 N.
-
-    >>> from trussfe.model.sections import Section
-    >>> s = Section.tube("t", 0.0254, 0.022225)
-    >>> round(float(euler_load(71.0e9, s.Iy, 2.0)), 1)
-    1481.2
-    """
-    return np.asarray(constant) * np.pi ** 2 * np.asarray(E) * np.asarray(inertia) / \
-        np.square(length)
-
-
 def buckling_check(structure: Structure, tension: np.ndarray, column_length: np.ndarray,
-                   constants: np.ndarray | float = 1.0) -> BucklingCheck:
+                   effective_length_factor: np.ndarray | float = 1.0) -> BucklingCheck:
     """Allowable load, largest compression and margin of every member.
 
     Parameters
@@ -73,15 +54,15 @@ def buckling_check(structure: Structure, tension: np.ndarray, column_length: np.
     tension : ndarray, shape (nt, m, k)
         Axial force at the sections along the motion.
     column_length : ndarray, shape (m,)
-    constants : float or ndarray, shape (m,)
-        End-condition constants C.
+    effective_length_factor : float or ndarray, shape (m,)
+        K of every member (1: pinned ends, Lacy's C = 1).
     """
-    inertia = np.fmin(structure.Iy, structure.Iz)
+    inertia = weak_axis_inertia(structure.Iy, structure.Iz)
     if np.any(~np.isfinite(inertia)):
         k = int(np.flatnonzero(~np.isfinite(inertia))[0])
         raise AnalysisError(f"members.{structure.member_ids[k]}", "its section has no moment of "
                             "inertia (give Iy or tube diameters) for the buckling check")
-    allow = euler_load(structure.E, inertia, column_length, constants)
+    allow = euler_load(structure.E, inertia, column_length, effective_length_factor)
     comp = -tension.min(axis=2)                         # (time, member)
     step = comp.argmax(axis=0)
     cmax = np.maximum(comp.max(axis=0), 0.0)

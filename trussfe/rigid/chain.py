@@ -37,6 +37,7 @@ import numpy as np
 
 from ..errors import AnalysisError
 from ..kinematics.assembly import solve_positions
+from ..mechanics.geometry import lengths, member_vectors, unit_vectors
 from ..model.structure import Structure, build_structure
 from .active import ActiveMember, active_members
 from .linalg import cross
@@ -216,8 +217,8 @@ def _batched_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, *,
     if pattern.m != pattern.nfree or N == 0:
         return X, bad
     for _ in range(iterations):
-        d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
-        dn = np.linalg.norm(d, axis=2)
+        d = member_vectors(X, conn)
+        dn = lengths(d)
         r = dn[:, pattern.loaded_idx] - Lk
         if np.abs(r).max() <= tolerance * scale:
             break
@@ -230,8 +231,8 @@ def _batched_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, *,
         if not np.all(np.isfinite(dx)):
             return X, bad
         flat[:, pattern.free_flat] += dx
-    d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
-    res = np.abs(np.linalg.norm(d, axis=2) - L).max(axis=1)
+    d = member_vectors(X, conn)
+    res = np.abs(lengths(d) - L).max(axis=1)
     moved = np.abs(X - x0).reshape(N, -1).max(axis=1)
     return X, (res <= tolerance * scale) & (moved < 0.1 * scale)
 
@@ -250,8 +251,7 @@ def _bay_rates(bay: Structure, L: np.ndarray, rates: np.ndarray, accs: np.ndarra
     Ld[:, acts] = rates
     Ldd = np.zeros((nt, m))
     Ldd[:, acts] = accs
-    d = X[:, conn[:, 1]] - X[:, conn[:, 0]]                       # (nt, m, 3)
-    e = d / np.linalg.norm(d, axis=2, keepdims=True)
+    e, _ = unit_vectors(member_vectors(X, conn))                  # (nt, m, 3)
     # Dense B on all coordinates, (nt, m, n*3), then the free columns.
     B = np.zeros((nt, m, n, 3))
     rows = np.arange(m)
@@ -270,7 +270,7 @@ def _bay_rates(bay: Structure, L: np.ndarray, rates: np.ndarray, accs: np.ndarra
     V = np.zeros((nt, n * 3))
     V[:, cols] = np.linalg.solve(Bf, Ld[..., None])[..., 0]
     V = V.reshape(nt, n, 3)
-    vrel = V[:, conn[:, 1]] - V[:, conn[:, 0]]
+    vrel = member_vectors(V, conn)
     rhs = Ldd - (np.einsum("tmk,tmk->tm", vrel, vrel) - Ld ** 2) / L
     A = np.zeros((nt, n * 3))
     A[:, cols] = np.linalg.solve(Bf, rhs[..., None])[..., 0]
@@ -411,11 +411,9 @@ def kinematics_from_nodes(structure: Structure, time: np.ndarray, X: np.ndarray,
     from .kinematics import Kinematics
 
     conn = structure.connectivity
-    d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
-    L = np.linalg.norm(d, axis=2)
-    e = d / L[..., None]
-    vrel = V[:, conn[:, 1]] - V[:, conn[:, 0]]
-    arel = A[:, conn[:, 1]] - A[:, conn[:, 0]]
+    e, L = unit_vectors(member_vectors(X, conn))
+    vrel = member_vectors(V, conn)
+    arel = member_vectors(A, conn)
     Ld, Ldd = length_rate[..., None], length_acc[..., None]
     ed = (vrel - Ld * e) / L[..., None]
     edd = (arel - Ldd * e) / L[..., None] - 2 * Ld * ed / L[..., None]

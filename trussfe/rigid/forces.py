@@ -35,6 +35,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import AnalysisError
+from ..mechanics.mass import centroidal_inertia, gyration_squared, member_mass
 from ..model.structure import Structure
 from .active import active_members
 from .kinematics import Kinematics, _count_message, _Pattern, pad3
@@ -73,7 +74,7 @@ class MemberBodies:
         does for the section equations (``iz``, ``is``).
         """
         ell = self.tube_length if full_length else seg_length
-        return seg_mass * (self.tube_radius2 + np.square(ell) / 12.0)
+        return centroidal_inertia(seg_mass, ell, self.tube_radius2)
 
 
 def member_bodies(structure: Structure) -> MemberBodies:
@@ -85,7 +86,6 @@ def member_bodies(structure: Structure) -> MemberBodies:
     """
     L = structure.lengths()
     A = structure.area
-    Isec = 0.5 * (np.nan_to_num(structure.Iy) + np.nan_to_num(structure.Iz))
     m = structure.n_members
     tl = L.copy()
     mb = np.zeros(m)
@@ -97,8 +97,9 @@ def member_bodies(structure: Structure) -> MemberBodies:
         tl[k] = a.tube_length
         mb[k], cg[k], ib[k] = a.base_mass, a.base_cg, a.base_inertia_cg
         act[k] = True
-    return MemberBodies(tube_mass=structure.density * A * tl, tube_length=tl,
-                        tube_radius2=Isec / A, base_mass=mb, base_cg=cg, base_inertia_cg=ib,
+    return MemberBodies(tube_mass=member_mass(structure.density, A, tl), tube_length=tl,
+                        tube_radius2=gyration_squared(structure.Iy, structure.Iz, A),
+                        base_mass=mb, base_cg=cg, base_inertia_cg=ib,
                         active=act)
 
 
@@ -200,22 +201,32 @@ def _check_model(structure: Structure) -> _Pattern:
     return pattern
 
 
-def _member_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies, rest: bool):
-    """Member resultants and the right-hand side of ``Bᵀ t = rhs`` (Lacy eqs. 2.9–2.11).
+def member_resultants(kin: Kinematics, bodies: MemberBodies, gravity: np.ndarray,
+                      conn: np.ndarray, rest: bool = False) -> tuple[np.ndarray, ...]:
+    """Inertia-and-weight loads of every member's bodies (Lacy eqs. 2.9–2.11, 4.20).
 
-    ``rest``: the kinematics' rates and accelerations are zero (the static case); the terms
-    that vanish are not computed (adding an exact zero changes no bit of the result).
+    Parameters
+    ----------
+    gravity : ndarray, shape (3,)
+    rest : bool
+        The kinematics' rates and accelerations taken as zero (the terms that vanish are not
+        computed: adding an exact zero changes no bit of the result).
+
+    Returns
+    -------
+    f_tube, f_base : ndarray, shape (nt, m, 3)
+        m_k (a_k − g) of the tube and of the base.
+    R : ndarray, shape (nt, m, 3)
+        f_tube + f_base, the force the nodes exert on the member in all.
+    Ma : ndarray, shape (nt, m, 3)
+        Σ [s_k e × m_k (a_k − g) + I_k α] about the start node, I_k about each body's centre.
     """
-    conn = structure.connectivity
-    dim = structure.dim
-    nt, m = kin.length.shape
-    g = pad3(np.asarray(structure.gravity, dtype=float))
+    g = gravity
     e = kin.unit
-    L = kin.length[..., None]
     mt = bodies.tube_mass[None, :, None]
     mb = bodies.base_mass[None, :, None]
-    s_t = L - bodies.tube_length[None, :, None] / 2.0
     if rest:
+        s_t = kin.length[..., None] - bodies.tube_length[None, :, None] / 2.0
         f_tube = mt * -g                                         # a_tube = 0
         f_base = mb * -g
     else:
@@ -228,6 +239,22 @@ def _member_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies, r
         inertia = (bodies.tube_inertia(bodies.tube_length, bodies.tube_mass)
                    + bodies.base_inertia_cg)[None, :, None]
         Ma += inertia * kin.alpha
+    return f_tube, f_base, R, Ma
+
+
+def _member_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies, rest: bool):
+    """Member resultants and the right-hand side of ``Bᵀ t = rhs`` (Lacy eqs. 2.9–2.11).
+
+    ``rest``: the kinematics' rates and accelerations are zero (the static case); the terms
+    that vanish are not computed (adding an exact zero changes no bit of the result).
+    """
+    conn = structure.connectivity
+    dim = structure.dim
+    nt, m = kin.length.shape
+    g = pad3(np.asarray(structure.gravity, dtype=float))
+    e = kin.unit
+    L = kin.length[..., None]
+    _, _, R, Ma = member_resultants(kin, bodies, g, conn, rest)
     Fb_perp = cross(Ma, e) / L
     Re = np.einsum("tmi,tmi->tm", R, e)
     Fa_perp = R - Re[..., None] * e - Fb_perp

@@ -34,9 +34,10 @@ import numpy as np
 
 from ..errors import AnalysisError
 from ..kinematics.assembly import solve_positions
+from ..mechanics.geometry import lengths, member_vectors
 from ..model.structure import Structure
 from ..threads import parallel_map, worker_count
-from .linalg import ANCHOR_SPACING, CompatSolver, SingularStep, cross, norm
+from .linalg import ANCHOR_SPACING, CompatSolver, SingularStep, cross
 from .motion import Motion
 
 log = logging.getLogger(__name__)
@@ -237,8 +238,8 @@ def _batched_newton_chunk(structure, pattern, L, X, tolerance=1e-12, iterations=
     scale = float(L.max()) if scale is None else scale
     Lk = L[:, pattern.loaded_idx]
     flat = X.reshape(nt, -1)
-    d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
-    vals = pattern.values(d / norm(d)[..., None])
+    d = member_vectors(X, conn)
+    vals = pattern.values(d / lengths(d)[..., None])
     # The chord Jacobian is the guess's compatibility matrix at anchor steps (every 8th);
     # each step uses its nearest anchor (large systems do the same inside CompatSolver).
     anchors = np.unique(np.r_[np.arange(0, nt, ANCHOR_SPACING), nt - 1])
@@ -250,8 +251,8 @@ def _batched_newton_chunk(structure, pattern, L, X, tolerance=1e-12, iterations=
     except SingularStep:
         return X, np.zeros(nt, dtype=bool)
     for _ in range(iterations):
-        d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
-        r = norm(d)[:, pattern.loaded_idx] - Lk
+        d = member_vectors(X, conn)
+        r = lengths(d)[:, pattern.loaded_idx] - Lk
         if np.abs(r).max() <= tolerance * scale:
             break
         if owner is not None:
@@ -261,8 +262,8 @@ def _batched_newton_chunk(structure, pattern, L, X, tolerance=1e-12, iterations=
         if not np.all(np.isfinite(dx)):
             return X, np.zeros(nt, dtype=bool)
         flat[:, pattern.free_flat] += dx
-    d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
-    res = np.abs(norm(d) - L).max(axis=1)
+    d = member_vectors(X, conn)
+    res = np.abs(lengths(d) - L).max(axis=1)
     moved = np.abs(X - X0).reshape(nt, -1).max(axis=1)
     return X, (res <= tolerance * scale) & (moved < 0.1 * scale)
 
@@ -321,8 +322,8 @@ def _factorise(structure: Structure, pattern: _Pattern, X: np.ndarray, motion: M
     transpose).  ``e``: the member unit vectors, if known."""
     if e is None:
         conn = structure.connectivity
-        d = X[:, conn[:, 1]] - X[:, conn[:, 0]]
-        e = d / norm(d)[..., None]
+        d = member_vectors(X, conn)
+        e = d / lengths(d)[..., None]
     try:
         return CompatSolver(pattern.rows, pattern.cols, pattern.values(e), pattern.m)
     except SingularStep as s:
@@ -373,8 +374,8 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
          else coords)
     nt = X.shape[0]
     conn = structure.connectivity
-    d = X[:, conn[:, 1]] - X[:, conn[:, 0]]                      # (time, member, dim)
-    L = norm(d)
+    d = member_vectors(X, conn)                      # (time, member, dim)
+    L = lengths(d)
     e = d / L[..., None]
     solver = _factorise(structure, pattern, X, motion, e)
     Ld = np.zeros_like(L)
@@ -384,10 +385,10 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     e3 = pad3(e)
     if scheme == "exact":
         V = _solve_compat(structure, pattern, solver, Ld)
-        vrel = V[:, conn[:, 1]] - V[:, conn[:, 0]]
+        vrel = member_vectors(V, conn)
         quad = (np.einsum("tmi,tmi->tm", vrel, vrel) - Ld ** 2) / L
         A = _solve_compat(structure, pattern, solver, Ldd - quad)
-        arel = A[:, conn[:, 1]] - A[:, conn[:, 0]]
+        arel = member_vectors(A, conn)
         ed = pad3((vrel - Ld[..., None] * e) / L[..., None])
         edd = pad3((arel - Ldd[..., None] * e) / L[..., None]) - 2 * Ld[..., None] * ed / \
             L[..., None]

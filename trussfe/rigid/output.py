@@ -65,7 +65,7 @@ def write_npz(path: str | Path, res: SimulationResult) -> None:
     """All arrays of the result in one NumPy ``.npz`` file.
 
     ``shear_local`` and ``moment_local`` (nt, m, k, 2) are the two shears and two bending
-    moments in the member frames of :func:`trussfe.rigid.sections.member_frames`.
+    moments in the member frames of :func:`trussfe.mechanics.geometry.transverse_frames`.
     """
     from .sections import local_components
     shear_local, moment_local = local_components(res.sections)

@@ -3,7 +3,10 @@
 
 A member is cut at ``k`` equidistant sections along its tube (the whole member if passive,
 the leadscrew tube if active), measured from the member's end node: ``u_j = j L_t/(k−1)``,
-j = 0…k−1 (Lacy cuts the follower and the leadscrew tube from point B at seven points).  The
+j = 0…k−1 (Lacy cuts the follower and the leadscrew tube from point B at seven points; the
+tube's sections ride with the end node as an active member telescopes, so u, not the distance
+x = L − u from the start node of :func:`trussfe.mechanics.geometry.from_end_node`, labels
+them).  The
 piece between the cut and the end node, of mass ``m u/L_t`` and centre of gravity at u/2 from
 the end node, obeys (Lacy eqs. 2.16–2.18, 4.68–4.74)
 
@@ -15,9 +18,9 @@ the end node, obeys (Lacy eqs. 2.16–2.18, 4.68–4.74)
 with N and M the force and moment the rest of the member exerts on the piece at the cut.
 Tension T = −N·e, shear V = N − (N·e)e (two components in 3-D), bending moment M.
 
-Stresses (Lacy eqs. 2.19–2.25, 4.75–4.76) of a thin round tube: σ_T = T/A,
-τ = 2|V|/A, σ_M = |M| c/I, and von Mises at the neutral axis S1 = √(σ_T² + 3τ²) and at the
-outer fibre S2 = |σ_T| + σ_M; the member's stress is the larger.  Lacy's code uses
+Stresses (Lacy eqs. 2.19–2.25, 4.75–4.76; :mod:`trussfe.mechanics.stress`) of a thin round
+tube: σ_T = T/A, τ = 2|V|/A, σ_M = |M| c/I, and von Mises at the neutral axis
+S1 = √(σ_T² + 3τ²) and at the outer fibre S2 = |σ_T| + σ_M; the member's stress is the larger.  Lacy's code uses
 √(σ_T² + τ²) at S1 (and 3V/2A for the static shear); S2 governs every published number, so the
 difference does not show there.
 
@@ -32,6 +35,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..mechanics.geometry import frame_rotations, stations, transverse_frames
+from ..mechanics.mass import centroidal_inertia
+from ..mechanics.stress import SectionStresses, round_sections, von_mises
 from ..model.structure import Structure
 from .forces import MemberBodies, NodalForces
 from .kinematics import Kinematics, pad3
@@ -112,8 +118,7 @@ def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
     sel = slice(None) if members is None else np.asarray(members, dtype=np.int64)
     tube_length = bodies.tube_length[sel]
     if positions is None:
-        frac = np.array([0.5]) if n_sections == 1 else np.linspace(0.0, 1.0, n_sections)
-        positions = tube_length[:, None] * frac[None, :]                 # (member, section)
+        positions = stations(tube_length, n_sections)                     # (member, section)
     u = positions[None, :, :]                                             # (1, m, k)
     g = pad3(np.asarray(structure.gravity, dtype=float))
     conn = structure.connectivity[sel]
@@ -129,8 +134,8 @@ def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
     mu = (bodies.tube_mass[sel] / tube_length)[None, :, None]
     mseg = mu * u                                                         # (1, m, k)
     ell = tube_length[:, None] if full_length_inertia else positions
-    Iseg = (mu[0] * positions * (bodies.tube_radius2[sel][:, None]
-                                 + np.square(ell) / 12.0))[None]          # (1, m, k)
+    Iseg = centroidal_inertia(mu[0] * positions, ell,
+                              bodies.tube_radius2[sel][:, None])[None]    # (1, m, k)
     pe = np.einsum("tmi,tmi->tm", p, e)[..., None]
     fe = np.einsum("tmi,tmi->tm", Fb, e)[..., None]
     p_perp = p - pe * e
@@ -156,54 +161,47 @@ def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
     return SectionForces(position=positions, tension=tension, shear=V, moment=M, unit=e)
 
 
-@dataclass
-class SectionStresses:
-    """Stresses at the sections, arrays (nt, m, k), Pa."""
-
-    axial: np.ndarray
-    shear: np.ndarray
-    bending: np.ndarray
-    s1: np.ndarray
-    s2: np.ndarray
-
-    @property
-    def von_mises(self) -> np.ndarray:
-        """max(S1, S2)."""
-        return np.maximum(self.s1, self.s2)
-
-
 def section_stresses(structure: Structure, sf: SectionForces, *,
-                     shear_factor: float = 3.0) -> SectionStresses:
+                     shear_factor: float = 3.0, convention: str = "combined") -> SectionStresses:
     """von Mises stresses at S1 (neutral axis) and S2 (outer fibre), Lacy eqs. 2.19–2.25.
+
+    The stresses are those of :func:`trussfe.mechanics.stress.von_mises`.  A round section
+    needs only the magnitudes |V| and |M| (its stresses do not depend on the direction of
+    bending); the shears and moments of any other section, and of the per-axis convention,
+    are taken in the member axes of :func:`trussfe.mechanics.geometry.frame_rotations`.
 
     Parameters
     ----------
     shear_factor : float
         Factor of τ² under the root at S1: 3 (eq. 2.24, von Mises); Lacy's code uses 1.
+    convention : {"combined", "lacy-per-axis"}
+        See :mod:`trussfe.mechanics.stress`.
     """
-    A = structure.area[None, :, None]
-    inertia = np.fmin(structure.Iy, structure.Iz)[None, :, None]
-    c = structure.c[None, :, None]
-    sig_t = sf.tension / A
-    tau = 2.0 * sf.shear_magnitude / A
-    sig_m = sf.moment_magnitude * c / inertia
-    s1 = np.sqrt(sig_t ** 2 + shear_factor * tau ** 2)
-    s2 = np.abs(sig_t) + np.abs(sig_m)
-    return SectionStresses(axial=sig_t, shear=tau, bending=sig_m, s1=s1, s2=s2)
-
-
-def member_frames(unit: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Two unit vectors perpendicular to each member, (…, 3) each (Lacy's b1, b2).
-
-    b1 = e × k / |e × k| with k the global z axis (the global x axis for a member within 25°
-    of z), b2 = e × b1.  In 2-D (e in the x–y plane) b1 is the in-plane normal and b2 = −z:
-    the planar shear is the b1 component and the planar moment minus the b2 component.
-    """
-    helper = np.where(np.abs(unit[..., 2:3]) < 0.9, [0.0, 0.0, 1.0], [1.0, 0.0, 0.0])
-    b1 = cross(unit, helper)
-    b1 /= np.linalg.norm(b1, axis=-1, keepdims=True)
-    b2 = cross(unit, b1)
-    return b1, b2
+    col = lambda a: a[None, :, None]     # member properties against (time, member, section)
+    rnd = round_sections(structure.sections)
+    if convention == "combined" and np.all(rnd):
+        V, M, zero = sf.shear_magnitude, sf.moment_magnitude, 0.0
+        vm = von_mises(sf.tension, V, zero, M, zero, col(structure.area), col(structure.Iy),
+                       col(structure.Iy), col(structure.c), col(structure.c), True,
+                       shear_weight=shear_factor)
+    else:
+        # components in member axes; in 2-D local y is the in-plane normal and z the global z
+        dim = structure.dim
+        R = frame_rotations(sf.unit[..., :dim], structure.orientation if dim == 3 else None)
+        y = R[:, :, None, 1]                                            # (t, m, 1, dim)
+        Vy = np.einsum("tmkj,tmkj->tmk", np.broadcast_to(y, sf.shear.shape[:3] + (dim,)),
+                       sf.shear[..., :dim])
+        if dim == 2:
+            Vz, My, Mz = 0.0, 0.0, sf.moment[..., 2]
+        else:
+            z = np.broadcast_to(R[:, :, None, 2], sf.shear.shape)
+            Vz = np.einsum("tmkj,tmkj->tmk", z, sf.shear)
+            My = np.einsum("tmkj,tmkj->tmk", np.broadcast_to(y, sf.moment.shape), sf.moment)
+            Mz = np.einsum("tmkj,tmkj->tmk", z, sf.moment)
+        vm = von_mises(sf.tension, Vy, Vz, My, Mz, col(structure.area), col(structure.Iy),
+                       col(structure.Iz), col(structure.c), col(structure.c), col(rnd),
+                       convention=convention, shear_weight=shear_factor)
+    return vm
 
 
 def local_components(sf: SectionForces) -> tuple[np.ndarray, np.ndarray]:
@@ -212,9 +210,10 @@ def local_components(sf: SectionForces) -> tuple[np.ndarray, np.ndarray]:
     Returns
     -------
     shear, moment : ndarray, shape (nt, m, k, 2)
-        Components along / about the member frame (b1, b2) of :func:`member_frames`.
+        Components along / about Lacy's member frame (b1, b2) of
+        :func:`trussfe.mechanics.geometry.transverse_frames`.
     """
-    b1, b2 = member_frames(sf.unit)
+    b1, b2 = transverse_frames(sf.unit)
     frames = np.stack([b1, b2], axis=-2)[:, :, None]               # (t, m, 1, 2, 3)
     shear = np.einsum("tmkj,tmkcj->tmkc", sf.shear, np.broadcast_to(
         frames, sf.shear.shape[:3] + (2, 3)))

@@ -118,7 +118,7 @@ class SimulationResult:
 
 def simulate(structure: Structure, motion: Motion | None = None, *,
              conventions: Conventions = PHYSICAL, n_sections: int = 7,
-             buckling_constants: np.ndarray | float = 1.0, actuators: bool = True,
+             effective_length_factor: np.ndarray | float = 1.0, actuators: bool = True,
              progress: bool = False) -> SimulationResult:
     """Rigid-body dynamic force analysis of a truss along a motion (Lacy chapters 2–4).
 
@@ -135,8 +135,8 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
         rates, whole-length inertia), or any other combination.
     n_sections : int
         Sections per member (Lacy: 7 in the triangular truss).
-    buckling_constants : float or array (m,)
-        End-condition constants C of eq. 2.26.
+    effective_length_factor : float or array (m,)
+        K of the Euler load π² E I / (K l)² (eq. 2.26 with C = 1/K²; 1 as Lacy).
     actuators : bool
         Run the actuator and motor model when ``[actuators]`` data exist.
     progress : bool
@@ -234,7 +234,8 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
          cmoment) = _steps(structure, compute_kinematics(structure, motion, scheme=scheme,
                                                          coords=X),
                            bodies, act_idx, **opts)
-    buck = buckling_check(structure, sf.tension, bodies.tube_length, buckling_constants)
+    buck = buckling_check(structure, sf.tension, bodies.tube_length,
+                          effective_length_factor)
     res = SimulationResult(structure=structure, motion=motion, kinematics=kin, bodies=bodies,
                            forces=f, static_forces=fs, sections=sf, static_sections=ss,
                            stresses=st, static_stresses=sts, midpoint_axial_force=mid,

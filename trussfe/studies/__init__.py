@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 """Computations that follow a source's own conventions: the thesis and paper reproductions.
 
-The solver packages (:mod:`trussfe.rigid`, :mod:`trussfe.elastic`, :mod:`trussfe.fem`,
+The solver packages (:mod:`trussfe.rigid`, :mod:`trussfe.response`, :mod:`trussfe.fem`,
 :mod:`trussfe.kinematics`, :mod:`trussfe.nonlinear`) compute what a structural engineer
 expects; the modules here reproduce published numbers, and where a table needs the source's
 own choices (finite-difference rates, whole-length inertia, a node order or load of its own)

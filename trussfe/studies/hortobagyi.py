@@ -17,6 +17,7 @@ from ..kinematics.mechanism import _jacobian, compatibility_error
 from ..kinematics.rank import rank_analysis
 from ..kinematics.trace import trace_mechanism
 from ..kinematics.unfolding import tangent_cone
+from ..mechanics.geometry import member_lengths
 from ..models.mechanisms import CATALOGUE, section6_foldable
 
 # --------------------------------------------------------------------------- Hortobágyi sec. 4
@@ -121,7 +122,7 @@ def hortobagyi_section4(tolerance: float = 1e-14) -> dict:
         }
         fifth = it["iterates"][4] if len(it["iterates"]) > 4 else it["iterates"][-1]
         p["fifth_iterate_x2"] = float(x[1, 0] + fifth[2])
-        bars = np.linalg.norm(xf[conn[:, 1]] - xf[conn[:, 0]], axis=1)
+        bars = member_lengths(xf, conn)
         p["max_bar_misfit"] = float(np.max(np.abs(bars - 1.0)))
         out[name] = p
     tr = {}
@@ -177,8 +178,8 @@ def hortobagyi_constructions() -> dict:
         crank_angle_start=float(ang[0]), crank_angle_end=float(ang[-1]))
     e = CATALOGUE["mech_bricard"]
     t = trace_mechanism(e.coords, e.bars, e.free, [e.drive_index()], e.step, 60)
-    L0 = np.linalg.norm(e.coords[e.bars[:, 1]] - e.coords[e.bars[:, 0]], axis=1)
-    L = np.linalg.norm(t.coords[:, e.bars[:, 1]] - t.coords[:, e.bars[:, 0]], axis=2)
+    L0 = member_lengths(e.coords, e.bars)
+    L = member_lengths(t.coords, e.bars)
     out["mech_bricard"].update(misfit=float(np.max(np.abs(L - L0))),
                                rank_min=int(t.rank.min()), rank_max=int(t.rank.max()))
     return out
@@ -277,7 +278,7 @@ def hortobagyi_section6(figures: bool = True) -> dict:
         e, cone, traces = section6_unfolding_traces(remove)
         results[remove] = (e, cone, traces)
         r = rank_analysis(e.coords, e.bars, e.free)
-        L0 = np.linalg.norm(e.coords[e.bars[:, 1]] - e.coords[e.bars[:, 0]], axis=1)
+        L0 = member_lengths(e.coords, e.bars)
         misfit = max(float(np.abs(np.linalg.norm(t.coords[:, e.bars[:, 1]]
                                                  - t.coords[:, e.bars[:, 0]], axis=2)
                                   - L0).max()) for _, t in traces)

@@ -36,8 +36,8 @@ from .lacy_rigid import (DO_POSITIONS, EQUILIBRIUM_LENGTH, L2, L3MIN,
 from ..rigid.sections import section_stresses
 from ..rigid.simulate import SimulationResult, simulate
 from ..rigid.slew import TopPlaneInverse
-from ..elastic.along_motion import ElasticResponse, compare_with_rigid, elastic_along_motion
-from ..elastic.strains import gauge_strains, static_strain, zeroed_strain
+from ..response.along_motion import ElasticResponse, compare_with_rigid, elastic_along_motion
+from ..response.strains import gauge_strains, static_strain, zeroed_strain
 
 log = logging.getLogger(__name__)
 

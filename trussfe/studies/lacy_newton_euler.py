@@ -17,6 +17,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..mechanics.geometry import transverse_frames
 from .lacy_rigid import ID, L1, L2, L3MAX, L3MIN, L4, OD, TUBE, ALUMINIUM
 
 G = 9.81
@@ -125,7 +126,7 @@ def newton_euler_system(structure, kin, bodies=None):
         ``"end_force"``: index array (m, 2, dim) of the force unknowns; ``"reaction"``: list of
         (node, component, column).
     """
-    from ..rigid.forces import element_accelerations, member_bodies
+    from ..rigid.forces import member_bodies, member_resultants
     from ..rigid.kinematics import pad3
 
     bodies = member_bodies(structure) if bodies is None else bodies
@@ -135,23 +136,13 @@ def newton_euler_system(structure, kin, bodies=None):
     nt = kin.n_steps
     e = kin.unit
     g = pad3(np.asarray(structure.gravity, dtype=float))
-    a_t, s_t, a_b = element_accelerations(kin, bodies, conn)
-    f_t = bodies.tube_mass[None, :, None] * (a_t - g)
-    f_b = bodies.base_mass[None, :, None] * (a_b - g)
-    R = f_t + f_b
-    inertia = (bodies.tube_inertia(bodies.tube_length, bodies.tube_mass)
-               + bodies.base_inertia_cg)[None, :, None]
-    Ma = (np.cross(s_t * e, f_t) + np.cross(bodies.base_cg[None, :, None] * e, f_b)
-          + inertia * kin.alpha)
+    _, _, R, Ma = member_resultants(kin, bodies, g, conn)
     # Directions of the moment equations: perpendicular to the member (Lacy's b1, b2).
     if dim == 2:
         dirs = np.zeros((nt, m, 1, 3))
         dirs[..., 0, 2] = 1.0
     else:
-        helper = np.where(np.abs(e[..., 2:3]) < 0.9, [0.0, 0.0, 1.0], [1.0, 0.0, 0.0])
-        b1 = np.cross(e, helper)
-        b1 /= np.linalg.norm(b1, axis=2)[..., None]
-        b2 = np.cross(e, b1)
+        b1, b2 = transverse_frames(e)
         dirs = np.stack([b1, b2], axis=2)                     # (t, m, 2, 3)
     nmom = dirs.shape[2]
     fcol = np.arange(m * 2 * dim).reshape(m, 2, dim)

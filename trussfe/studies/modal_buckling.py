@@ -16,8 +16,9 @@ from .. import models
 from ..kinematics.compatibility import compatibility_matrix
 from ..model.sections import Material, Section
 from ..model.structure import Structure, build_structure
-from ..fem.buckling import euler_load, solve_buckling
+from ..fem.buckling import solve_buckling
 from ..fem.modal import solve_modes
+from ..mechanics.euler import member_euler_loads
 
 #: Lacy, Appendix A/C code: ``E = 71.0e9``, ``ro = 2711.5``, ``G = 26.2e9``.
 ALUMINIUM = Material("aluminium", E=71.0e9, G=26.2e9, density=2711.5)
@@ -65,7 +66,7 @@ def lacy_buckling_allowables(subdivisions: int = 8) -> dict:
     out = {}
     for key, (L, sec) in cases.items():
         s = column(L, sec)
-        out[f"{key}_euler"] = float(euler_load(s)[0])
+        out[f"{key}_euler"] = float(member_euler_loads(s)[0])
         out[f"{key}_fe"] = float(solve_buckling(s, count=1, subdivisions=subdivisions)
                                  .load_factors[0])
     out["top_plane_overstatement"] = 3055.2 / out["top_plane_real_length_euler"]

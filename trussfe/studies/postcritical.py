@@ -21,6 +21,7 @@ from scipy.special import ellipe, ellipk
 
 from .._resources import mesh_path
 from ..io.model_file import read_model
+from ..mechanics.euler import euler_load, member_euler_loads
 from ..nonlinear.analysis import run_postcritical
 from ..nonlinear.buckling import linear_buckling
 from ..nonlinear.model import NonlinearModel
@@ -153,7 +154,7 @@ def euler_column(subdivisions: int = 16) -> dict:
     """
     s = read_model(mesh_path("postcritical_euler_column.toml"))
     L = float(s.lengths()[0])
-    Pe = math.pi ** 2 * float(s.E[0] * s.Iz[0]) / L ** 2
+    Pe = float(euler_load(s.E[0], s.Iz[0], L))
     ratio_ref = -float(s.loads[1, 1]) / Pe              # reference load / P_E (= 1)
     out = {"reference_over_euler": ratio_ref}
     k = subdivisions
@@ -201,7 +202,7 @@ def euler_column_3d(subdivisions: int = 16) -> dict:
     s = read_model(mesh_path("postcritical_euler_column_3d.toml"))
     L = float(s.lengths()[0])
     a = (s.coords[1] - s.coords[0]) / L
-    Pe = math.pi ** 2 * float(s.E[0] * min(s.Iy[0], s.Iz[0])) / L ** 2
+    Pe = float(member_euler_loads(s)[0])
     ratio_ref = float(-s.loads[1, :3] @ a) / Pe          # reference load / P_E (= 1)
     out = {"reference_over_euler": ratio_ref}
     k = subdivisions
@@ -299,7 +300,7 @@ def linear_buckling_agreement(subdivisions: int = 16) -> dict:
     """
     s = read_model(mesh_path("postcritical_euler_column.toml"))
     L = float(s.lengths()[0])
-    Pe = math.pi ** 2 * float(s.E[0] * s.Iz[0]) / L ** 2
+    Pe = float(euler_load(s.E[0], s.Iz[0], L))
     P = -float(s.loads[1, 1])
     m = NonlinearModel(s, bar_model="pinned-beam", subdivisions=subdivisions)
     lf, _ = linear_buckling(m, count=2)
@@ -368,6 +369,5 @@ def double_layer_grid(n: int, spacing: float = 1.0, depth: float = 0.7,
     L = s.lengths()
     laws = dataclasses.replace(
         FailureLaws.none(m), buckling=np.full(m, BUCKLING.index(law)),
-        critical_load=(math.pi ** 2 * s.E * s.Iy / L ** 2
-                       * (1.0 + spread * (2 * rng.random(m) - 1))))
+        critical_load=(euler_load(s.E, s.Iy, L) * (1.0 + spread * (2 * rng.random(m) - 1))))
     return s, laws

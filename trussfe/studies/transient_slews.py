@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Evidence and studies for :mod:`trussfe.elastic.transient` (validation suite, docs, tests).
+"""Evidence and studies for :mod:`trussfe.response.transient` (validation suite, docs, tests).
 
 * :func:`sdof_bar` / :func:`sdof_closed_form`: one active bar pushing a lumped mass along its
   axis with a cycloidal stroke — a single-DOF system ``m ü + k u = −m L̈(t)`` whose Duhamel
@@ -25,7 +25,7 @@ from ..model.structure import Structure, build_structure
 from ..rigid.active import ActiveMember
 from ..rigid.motion import Motion, third_order_motion
 from .lacy_rigid import L2, L3MIN, triangular_truss
-from ..elastic.transient import TransientResult, transient_response
+from ..response.transient import TransientResult, transient_response
 
 log = logging.getLogger(__name__)
 

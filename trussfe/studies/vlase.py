@@ -15,6 +15,7 @@ import numpy as np
 from ..kinematics.trace import trace_mechanism
 from ..kinematics.topology import cycle_kinematics, equivalent_assembly
 from ..kinematics.velocity import bar_angular_velocity, mechanism_acceleration, mechanism_velocity
+from ..mechanics.geometry import member_lengths
 from ..models.mechanisms import FOURBAR, fourbar_position
 
 __all__ = ["FOURBAR", "SLIDER_CRANK", "fourbar_closed_form", "fourbar_position",
@@ -83,8 +84,8 @@ def fourbar_closed_form(samples: int = 12, omega: float = 2.0, alpha: float = 0.
     r = trace_mechanism(x, conn, free, drives=[3], step=step, steps=steps)
     th = np.unwrap(np.arctan2(r.coords[:, 1, 1], r.coords[:, 1, 0]))
     _, Cref = fourbar_position(th, a, b, c, d)
-    L0 = np.linalg.norm(x[conn[:, 1]] - x[conn[:, 0]], axis=1)
-    Ls = np.linalg.norm(r.coords[:, conn[:, 1]] - r.coords[:, conn[:, 0]], axis=2)
+    L0 = member_lengths(x, conn)
+    Ls = member_lengths(r.coords, conn)
     out = {"position_max_error": float(np.max(np.abs(r.coords[:, 2] - Cref))),
            "crank_turn": float(th.max() - th.min()),
            "bar_length_misfit": float(np.max(np.abs(Ls - L0))),

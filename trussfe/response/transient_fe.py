@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 """Finite-element matrices and driving loads of a truss at many instants of a motion at once.
 
-The elastic model of :mod:`trussfe.elastic.transient` needs, at every time step ``n``, the
+The elastic model of :mod:`trussfe.response.transient` needs, at every time step ``n``, the
 stiffness ``K_n`` and mass ``M_n`` of the structure in its current (rigid-motion) geometry and
 the driving load ``f_n = f_g − M_n a_r,n`` (gravity and d'Alembert inertia of the prescribed
 motion).  Assembling one model per step would cost one scikit-fem assembly per step, so a
@@ -49,9 +49,10 @@ import scipy.sparse as sp
 
 from ..fem.discretisation import FEModel, discretise
 from ..fem.modal import active_member_mass
+from ..mechanics.geometry import member_vectors
 from ..model.structure import Structure
 from ..rigid.active import active_members
-from ..rigid.forces import MemberBodies, element_accelerations
+from ..rigid.forces import MemberBodies, member_resultants
 from ..rigid.kinematics import Kinematics, pad3
 
 log = logging.getLogger(__name__)
@@ -164,7 +165,7 @@ def rigid_field(fe: FEModel, node_vectors: np.ndarray) -> np.ndarray:
     conn = s.connectivity
     L = s.lengths()
     R = fe.rotation                                          # (member, local, global)
-    slope = np.einsum("mij,mj->mi", R, a[conn[:, 1]] - a[conn[:, 0]]) / L[:, None]
+    slope = np.einsum("mij,mj->mi", R, member_vectors(a, conn)) / L[:, None]
     rot = np.zeros((s.n_members, fe.nrot))                   # bending rotations, member axes
     if dim == 2:
         rot[:, 0] = slope[:, 1]
@@ -216,20 +217,10 @@ def active_member_loads(structure: Structure, kin: Kinematics, bodies: MemberBod
     if idx.size == 0:
         return out[..., :structure.dim]
     g = pad3(np.asarray(structure.gravity, dtype=float))
-    a_tube, s_t, a_base = element_accelerations(kin, bodies, conn)
+    f_tube, f_base, R, Ma = (a[:, idx] for a in member_resultants(kin, bodies, g, conn))
     e = kin.unit[:, idx]
     L = kin.length[:, idx, None]
-    mt = bodies.tube_mass[idx][None, :, None]
-    mb = bodies.base_mass[idx][None, :, None]
-    cg = bodies.base_cg[idx][None, :, None]
-    f_tube = mt * (a_tube[:, idx] - g)
-    f_base = mb * (a_base[:, idx] - g)
-    inertia = (bodies.tube_inertia(bodies.tube_length, bodies.tube_mass)
-               + bodies.base_inertia_cg)[idx][None, :, None]
-    Ma = (np.cross(s_t[:, idx] * e, f_tube) + np.cross(cg * e, f_base)
-          + inertia * kin.alpha[:, idx])
     Fb_perp = np.cross(Ma, e) / L
-    R = f_tube + f_base
     R_perp = R - np.einsum("tmi,tmi->tm", R, e)[..., None] * e
     Fa = R_perp - Fb_perp + np.einsum("tmi,tmi->tm", f_base, e)[..., None] * e
     Fb = Fb_perp + np.einsum("tmi,tmi->tm", f_tube, e)[..., None] * e

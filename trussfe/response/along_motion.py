@@ -4,7 +4,7 @@
 At every time step of a maneuver the finite-element model (:mod:`trussfe.fem`, pinned-beam
 bar model: every bar a subdivided Hermite beam with both end moments released) is assembled
 in the current configuration — the rigid-body positions ``kin.coords[step]`` — and loaded with
-gravity and the d'Alembert loads of the motion (:mod:`trussfe.elastic.loads`).  Its linear
+gravity and the d'Alembert loads of the motion (:mod:`trussfe.response.loads`).  Its linear
 static solution gives displacements, reactions and member section forces.
 
 **All steps in one solve.**  The steps are independent, so a block of steps is discretised
@@ -44,6 +44,7 @@ from ..fem.discretisation import FEModel, discretise
 from ..fem.solver import factorise, solve_free
 from ..linalg import SingularMatrixError
 from ..mechanics.conventions import PHYSICAL, Conventions
+from ..mechanics.geometry import from_end_node, stations
 from ..model.structure import Structure
 from ..rigid.forces import MemberBodies, member_bodies
 from ..rigid.kinematics import Kinematics
@@ -170,7 +171,9 @@ def _solve_block(structure: Structure, coords: np.ndarray, ml: MotionLoads,
     sx = np.concatenate([ex[..., 0], ex[..., -1:, 1]], axis=-1)       # (t, m, k+1)
     st = np.concatenate([-fel[:, :, :, 0], fel[:, :, -1:, 1]], axis=2)
     L = ml.length[..., None]
-    sections = _recover_sections(ml, ex, fel, R, np.clip(L - positions[None], 0.0, L))
+    # the FE stations count from the start node, the rigid model's sections from the end node
+    sections = _recover_sections(ml, ex, fel, R,
+                                 np.clip(from_end_node(positions[None], ml.length), 0.0, L))
     tube_mid = L - 0.5 * (L - ml.tube_start[..., None])
     mid = _recover_sections(ml, ex, fel, R, tube_mid)[0][..., 0]
     return disp, react, sections, sx, st, mid
@@ -250,8 +253,7 @@ def elastic_along_motion(structure: Structure, kin: Kinematics, *,
     if positions is None:
         if n_sections < 1 or int(n_sections) != n_sections:
             raise InputError("sections", f"need a positive integer, got {n_sections!r}")
-        frac = np.array([0.5]) if n_sections == 1 else np.linspace(0.0, 1.0, int(n_sections))
-        positions = bodies.tube_length[:, None] * frac[None, :]
+        positions = stations(bodies.tube_length, int(n_sections))       # from the end node
     positions = np.asarray(positions, dtype=float)
     ml = motion_loads(structure, kin, bodies, gravity=gravity, loads=loads)
     nt, m, n, dim = kin.n_steps, structure.n_members, structure.n_nodes, structure.dim

@@ -301,7 +301,7 @@ def load_vectors(fe, ml: MotionLoads) -> tuple[np.ndarray, list[np.ndarray]]:
     The loads of :func:`motion_loads` (global axes) are taken onto the members of ``fe`` in its
     own configuration: the stations and member axes of ``fe``, the loads' values of each step.
     This is the load of a linearised analysis about that configuration (e.g. transient
-    dynamics); :func:`trussfe.elastic.along_motion.elastic_along_motion` instead moves the
+    dynamics); :func:`trussfe.response.along_motion.elastic_along_motion` instead moves the
     model with the motion.
 
     Parameters

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""The validation suite from Python: :func:`validate`."""
+"""The validation suite from Python: :func:`validate` (``trussfe.validate``)."""
 from __future__ import annotations
 
 import os
@@ -14,7 +14,7 @@ class ValidationResult:
 
     Attributes
     ----------
-    cases : list of trussfe.validate.CaseResult
+    cases : list of trussfe.validation.CaseResult
         One per case run, in the order run: ``case.id``, ``status`` (``pass``, ``fail``,
         ``error``), ``quantities`` (value, reference, errors, status of each).
     """
@@ -35,7 +35,7 @@ class ValidationResult:
     def write_report(self, directory: str | os.PathLike = "validation-report") -> Path:
         """Write ``report.md`` and ``report.html`` into ``directory``; returns the HTML
         page's path."""
-        from ..validate import write_report
+        from .report import write_report
         return write_report(self.cases, directory)[1]
 
     def to_dict(self) -> dict:
@@ -88,7 +88,8 @@ def validate(cases: str | os.PathLike | None = None, *, case: Sequence[str] | No
     InputError
         A malformed case file or an unknown case id.
     """
-    from ..validate import load_cases, run_cases
+    from .cases import load_cases
+    from .engine import run_cases
 
     if isinstance(case, str):
         case = [case]

@@ -32,7 +32,8 @@ import numpy as np
 from ..model.structure import Structure
 from ..rigid.kinematics import Kinematics, compute_kinematics
 from ..rigid.motion import rest_motion
-from ..rigid.sections import SectionForces, member_frames
+from ..mechanics.geometry import transverse_frames
+from ..rigid.sections import SectionForces
 from .along_motion import ElasticResponse, elastic_along_motion
 
 
@@ -49,7 +50,7 @@ def gauge_strains(structure: Structure, sections: SectionForces, member: int, se
         Member index and section index (into ``sections.position``).
     angles_deg : sequence of float
         Gauge angles about the member axis from its frame vector b1
-        (:func:`trussfe.rigid.sections.member_frames`).
+        (:func:`trussfe.mechanics.geometry.transverse_frames`).
 
     Returns
     -------
@@ -59,7 +60,7 @@ def gauge_strains(structure: Structure, sections: SectionForces, member: int, se
     T = sections.tension[:, member, section]
     M = sections.moment[:, member, section]                     # (t, 3)
     e = sections.unit[:, member]
-    b1, b2 = member_frames(e)
+    b1, b2 = transverse_frames(e)
     phi = np.radians(np.asarray(angles_deg, dtype=float))
     c = structure.c[member]
     r = c * (np.cos(phi)[None, :, None] * b1[:, None] + np.sin(phi)[None, :, None] * b2[:, None])

@@ -7,32 +7,12 @@ Python API, :mod:`trussfe.api`, or a ``python = "module:function"``), and quanti
 path into the result with a reference value, its source and a tolerance.  :func:`run_cases` evaluates
 them; :func:`write_report` writes ``report.md`` and a self-contained ``report.html``.
 """
-import sys as _sys
-import types as _types
 
 from .cases import Case, Quantity, load_case, load_cases
 from .engine import CaseResult, QuantityResult, lookup, run_case, run_cases
 from .report import write_report
+from .run import ValidationResult, default_cases_dir, validate
 
 __all__ = ["Case", "CaseResult", "Quantity", "QuantityResult", "load_case", "load_cases",
-           "lookup", "run_case", "run_cases", "write_report"]
-
-
-class _CallablePackage(_types.ModuleType):
-    """This package, callable as the analysis of the same name: ``trussfe.validate(...)`` is
-    :func:`trussfe.api.validate`, while ``trussfe.validate.<module>`` stays the package's."""
-
-    def __call__(self, *args, **kwargs):
-        from ..api import validate as analysis
-        return analysis(*args, **kwargs)
-
-    @property
-    def __signature__(self):
-        """The analysis's signature (for ``inspect.signature`` and ``help``)."""
-        import inspect
-
-        from ..api import validate as analysis
-        return inspect.signature(analysis)
-
-
-_sys.modules[__name__].__class__ = _CallablePackage
+           "lookup", "run_case", "run_cases", "write_report", "ValidationResult",
+           "default_cases_dir", "validate"]

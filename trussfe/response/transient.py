@@ -20,7 +20,7 @@ locked at their instantaneous length in the FE model (their prescribed motion en
 
 with ``K``, ``M`` the pinned-beam (or truss) FE stiffness and mass in the current geometry
 (:mod:`trussfe.fem`), ``f_g`` gravity and nodal loads, and ``M ẍ_r`` the d'Alembert load of the
-rigid acceleration field (:mod:`trussfe.elastic.transient_fe`; exact Newton–Euler loads for
+rigid acceleration field (:mod:`trussfe.response.transient_fe`; exact Newton–Euler loads for
 the telescoping active members, Lacy eqs. 2.9–2.11, 4.20).  Terms of order ``u·Ω`` (Coriolis
 and centrifugal coupling of the elastic field with the member rotation rate Ω), the geometric
 stiffness of the member forces and the change of the interior DOFs' member axes within a step
