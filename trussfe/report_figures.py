@@ -126,16 +126,15 @@ def _pv_render(path: Path, panels: list[dict], structure, window: tuple[int, int
 
 # ---------------------------------------------------------------------- matplotlib
 def _mpl_render(path: Path, panels: list[dict], structure, window: tuple[int, int]) -> None:
-    import matplotlib
-    matplotlib.use("Agg", force=False)
-    import matplotlib.pyplot as plt
     from matplotlib import cm, colors
+
+    from .io.figures import new_figure
 
     n = len(panels)
     cols = min(n, 3)
     rows = -(-n // cols)
     three = structure.dim == 3
-    fig = plt.figure(figsize=(window[0] * cols / 100, window[1] * rows / 100), dpi=100)
+    fig = new_figure(figsize=(window[0] * cols / 100, window[1] * rows / 100), dpi=100)
     conn = structure.connectivity
     for k, pan in enumerate(panels):
         ax = fig.add_subplot(rows, cols, k + 1, projection="3d" if three else None)
@@ -165,7 +164,6 @@ def _mpl_render(path: Path, panels: list[dict], structure, window: tuple[int, in
     fig.tight_layout()
     with atomic_path(path) as tmp:
         fig.savefig(tmp, format="png")
-    plt.close(fig)
 
 
 def _render(path, panels, structure, window, backend) -> Path:

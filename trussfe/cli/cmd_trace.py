@@ -44,9 +44,7 @@ def register(subparsers) -> None:
 
 def _plot(path: str, s, r) -> None:
     """Node trajectories (as Hortobágyi's Fig. 11), start and end states drawn as bars."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from ..io.figures import subplots
 
     X = r.coords                                            # (state, node, dim)
     moving = np.flatnonzero(np.ptp(X, axis=0).max(axis=1) > 1e-12)
@@ -55,7 +53,7 @@ def _plot(path: str, s, r) -> None:
     else:                                                   # the plane the joints move most in
         spread = np.ptp(X[:, moving], axis=0).max(axis=0) if moving.size else np.ones(3)
         ax2 = tuple(sorted(np.argsort(-spread)[:2].tolist()))
-    fig, ax = plt.subplots(figsize=(6, 5))
+    fig, ax = subplots(figsize=(6, 5))
     for x, style in ((X[0], "k-"), (X[-1], "k:")):
         for a, b in s.connectivity:
             ax.plot(x[[a, b], ax2[0]], x[[a, b], ax2[1]], style, lw=0.8)
@@ -72,7 +70,6 @@ def _plot(path: str, s, r) -> None:
         ax.legend(fontsize=7)
     with atomic_path(path) as tmp:
         fig.savefig(tmp, dpi=120, format="png")
-    plt.close(fig)
 
 
 #: Traces of at least this many steps show a progress bar (on a terminal).

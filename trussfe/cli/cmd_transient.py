@@ -69,12 +69,10 @@ def write_vtk(directory, res, stem: str = "transient", every: int = 1) -> Path:
 
 
 def _plot(path, res) -> None:
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from ..io.figures import subplots
 
     m = res.structure.n_members
-    fig, axes = plt.subplots(m, 1, figsize=(7.0, 2.2 * m), squeeze=False)
+    fig, axes = subplots(m, 1, figsize=(7.0, 2.2 * m), squeeze=False)
     for j, ax in enumerate(axes[:, 0]):
         ax.plot(res.time, res.axial_force_rigid[:, j], color="0.6", lw=3, label="rigid body")
         ax.plot(res.time, res.axial_force_qs[:, j], "k--", lw=1.2, label="FE quasi-static")
@@ -86,7 +84,6 @@ def _plot(path, res) -> None:
     fig.tight_layout()
     with atomic_path(path) as tmp:
         fig.savefig(tmp, dpi=110, format="png")
-    plt.close(fig)
 
 
 def _run(args: argparse.Namespace) -> int:

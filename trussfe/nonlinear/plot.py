@@ -12,16 +12,14 @@ from .path import PathResult
 
 def write_plot(path: str | Path, result: PathResult) -> None:
     """Load factor against the monitored displacement, events marked; written atomically."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from ..io.figures import subplots
     from .analysis import monitor_label
     s = result.model.structure
     label = monitor_label(result.model, result.monitor)
     lam = result.load_factors
     u = result.displacement()
     eq = np.array([p.stage == "equilibrium" for p in result.path])
-    fig, ax = plt.subplots(figsize=(6.4, 4.4))
+    fig, ax = subplots(figsize=(6.4, 4.4))
     ax.plot(u[eq], lam[eq], ".-", lw=1.2, ms=3, label="equilibrium path")
     if (~eq).any():
         j = np.flatnonzero(~eq)
@@ -46,4 +44,3 @@ def write_plot(path: str | Path, result: PathResult) -> None:
     fig.tight_layout()
     with atomic_path(path) as tmp:
         fig.savefig(tmp, dpi=120, format="png")
-    plt.close(fig)

@@ -138,15 +138,13 @@ def write_plots(directory: str | Path, res: SimulationResult) -> list[Path]:
     ``von_mises.png`` (maximum von Mises over time, total versus static, per member),
     ``actuator_force.png`` and, with motor data, ``motor.png`` (torque, voltage, current).
     """
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from ..io.figures import subplots
 
     s = res.structure
     t = res.time
     names = []
     with atomic_dir(directory) as tmp:
-        fig, ax = plt.subplots(3, 1, sharex=True, figsize=(6, 7))
+        fig, ax = subplots(3, 1, sharex=True, figsize=(6, 7))
         for j, k in enumerate(res.motion.members):
             lab = s.member_ids[k]
             ax[0].plot(t, res.motion.length[:, j], label=lab)
@@ -159,13 +157,12 @@ def write_plots(directory: str | Path, res: SimulationResult) -> list[Path]:
         ax[2].set_xlabel("time (s)")
         fig.tight_layout()
         fig.savefig(tmp / "active_motion.png", dpi=120)
-        plt.close(fig)
         names.append("active_motion.png")
 
         vm = res.stresses.von_mises.max(axis=2)
         vs = res.static_stresses.von_mises.max(axis=2)
         worst = np.argsort(-vm.max(axis=0))[:6]
-        fig, ax = plt.subplots(figsize=(7, 4.5))
+        fig, ax = subplots(figsize=(7, 4.5))
         for k in worst:
             line, = ax.plot(t, vm[:, k], label=f"{s.member_ids[k]} total")
             ax.plot(t, vs[:, k], "--", color=line.get_color(), label=f"{s.member_ids[k]} static")
@@ -175,11 +172,10 @@ def write_plots(directory: str | Path, res: SimulationResult) -> list[Path]:
         ax.legend(fontsize="small", ncol=2)
         fig.tight_layout()
         fig.savefig(tmp / "von_mises.png", dpi=120)
-        plt.close(fig)
         names.append("von_mises.png")
 
         if res.actuator_force.size:
-            fig, ax = plt.subplots(figsize=(7, 4))
+            fig, ax = subplots(figsize=(7, 4))
             for j, a in enumerate(active_members(s)):
                 line, = ax.plot(t, res.actuator_force[:, j], label=s.member_ids[a.member])
                 ax.plot(t, res.static_actuator_force[:, j], "--", color=line.get_color(),
@@ -190,13 +186,12 @@ def write_plots(directory: str | Path, res: SimulationResult) -> list[Path]:
             ax.legend(fontsize="small")
             fig.tight_layout()
             fig.savefig(tmp / "actuator_force.png", dpi=120)
-            plt.close(fig)
             names.append("actuator_force.png")
 
         keys = [("motor_torque", "motor torque (N·m)"), ("motor_voltage", "motor voltage (V)"),
                 ("motor_current", "motor current (A)")]
         if res.actuators and any(k in v for v in res.actuators.values() for k, _ in keys):
-            fig, ax = plt.subplots(3, 1, sharex=True, figsize=(6, 7))
+            fig, ax = subplots(3, 1, sharex=True, figsize=(6, 7))
             for aid, h in res.actuators.items():
                 for a, (k, yl) in zip(ax, keys):
                     if k in h:
@@ -207,6 +202,5 @@ def write_plots(directory: str | Path, res: SimulationResult) -> list[Path]:
             ax[2].set_xlabel("time (s)")
             fig.tight_layout()
             fig.savefig(tmp / "motor.png", dpi=120)
-            plt.close(fig)
             names.append("motor.png")
     return [Path(directory) / n for n in names]

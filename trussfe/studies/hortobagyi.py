@@ -221,10 +221,8 @@ def _section6_figure(results: dict) -> dict:
     import tempfile
     from pathlib import Path
 
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(len(results), 4, figsize=(14, 1.0 + 1.3 * len(results)), squeeze=False)
+    from ..io.figures import subplots
+    fig, axes = subplots(len(results), 4, figsize=(14, 1.0 + 1.3 * len(results)), squeeze=False)
     colours = ["tab:blue", "tab:orange", "tab:green", "tab:red"]
     for row, (remove, (e, _cone, traces)) in enumerate(results.items()):
         for col, (S, t) in enumerate(traces):
@@ -246,7 +244,6 @@ def _section6_figure(results: dict) -> dict:
     fig.tight_layout()
     path = Path(tempfile.mkdtemp(prefix="trussfe_sec6_")) / "section6_unfolding.png"
     fig.savefig(path, dpi=110)
-    plt.close(fig)
     return {"section6_unfolding": str(path)}
 
 

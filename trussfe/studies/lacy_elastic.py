@@ -116,10 +116,8 @@ def _figure_dir() -> Path:
 
 def _plot_rigid_fe(path: Path, t, curves, title: str, ylabel: str) -> str:
     """Time histories: ``curves`` = [(label, rigid, fe)], rigid as lines, FE as markers."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(figsize=(7.0, 4.0), dpi=110)
+    from ..io.figures import subplots
+    fig, ax = subplots(figsize=(7.0, 4.0), dpi=110)
     for i, (label, rig, fe) in enumerate(curves):
         c = f"C{i}"
         ax.plot(t, rig, "-", color=c, lw=1.6, label=f"{label}, rigid body")
@@ -133,7 +131,6 @@ def _plot_rigid_fe(path: Path, t, curves, title: str, ylabel: str) -> str:
     ax.legend(fontsize=7, ncol=2)
     fig.tight_layout()
     fig.savefig(path)
-    plt.close(fig)
     return str(path)
 
 
@@ -141,12 +138,10 @@ def _plot_von_mises(path: Path, r: SimulationResult, e: ElasticResponse) -> str:
     """Follower's largest von Mises stress over its sections: rigid, FE and the thesis'
     Base Simulation numbers (Lacy section 3.3: maximum 4.3393e6 Pa, static 3.9695e6 Pa at
     that instant; with Appendix A's kinematics and section inertia)."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from ..io.figures import subplots
     vm_r = r.stresses.von_mises[:, 0].max(axis=1)
     vm_f = section_stresses(r.structure, e.sections).von_mises[:, 0].max(axis=1)
-    fig, ax = plt.subplots(figsize=(7.0, 4.0), dpi=110)
+    fig, ax = subplots(figsize=(7.0, 4.0), dpi=110)
     t = r.time
     ax.plot(t, vm_r / 1e6, "-", color="C0", lw=1.6, label="rigid body (exact kinematics)")
     ax.plot(t, vm_f / 1e6, "o", color="C0", ms=4, mfc="none", label="finite elements")
@@ -162,7 +157,6 @@ def _plot_von_mises(path: Path, r: SimulationResult, e: ElasticResponse) -> str:
     ax.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(path)
-    plt.close(fig)
     return str(path)
 
 
@@ -269,9 +263,7 @@ def m6_strains() -> dict:
     figs = {}
     d = _figure_dir()
     equilibrium = double_octahedron(gravity=-9.81)
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from ..io.figures import subplots
     for which in (1, 2):
         r, e = slew(which)
         s = r.structure
@@ -320,7 +312,7 @@ def m6_strains() -> dict:
                                    "equilibrium_crossing": float(z44[k_eq]),
                                    "static_equilibrium": eq44,
                                    "crossing_over_static": float(z44[k_eq] / eq44)}
-        fig, ax = plt.subplots(figsize=(7.0, 4.0), dpi=110)
+        fig, ax = subplots(figsize=(7.0, 4.0), dpi=110)
         ax.plot(r.time, 1e6 * z.full, ":", color="0.5", label="total (gravity + loads + motion)")
         ax.plot(r.time, 1e6 * z.no_gravity, "--", color="C1", label="without gravity")
         ax.plot(r.time, zero, "-", color="C0", lw=1.8,
@@ -342,7 +334,6 @@ def m6_strains() -> dict:
         fig.tight_layout()
         p = d / f"m6_strain_{key}.png"
         fig.savefig(p)
-        plt.close(fig)
         figs[f"m6_strain_{key}"] = str(p)
     out["figures"] = figs
     return out

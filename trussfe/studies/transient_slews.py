@@ -230,12 +230,10 @@ def subdivision_study(duration: float = 0.3, dt: float = 5.0e-4, ks=(1, 2, 4, 8)
 def history_figure(results: dict[float, TransientResult], path: Path, member: int = 0,
                    quantity: str = "axial_force") -> Path:
     """Time histories elastic vs quasi-static FE vs rigid-body, one panel per slew time."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from ..io.figures import subplots
 
     n = len(results)
-    fig, axes = plt.subplots(n, 1, figsize=(7.0, 2.4 * n), squeeze=False)
+    fig, axes = subplots(n, 1, figsize=(7.0, 2.4 * n), squeeze=False)
     label = {"axial_force": ("axial force", "N"), "moment": ("midpoint moment", "N·m")}
     for ax, (T, r) in zip(axes[:, 0], results.items()):
         dyn = getattr(r, quantity)[:, member]
@@ -254,18 +252,15 @@ def history_figure(results: dict[float, TransientResult], path: Path, member: in
     fig.tight_layout()
     path = Path(path)
     fig.savefig(path, dpi=110)
-    plt.close(fig)
     return path
 
 
 def energy_figure(r: TransientResult, path: Path) -> Path:
     """Energy terms and the balance residual of one run."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from ..io.figures import subplots
 
     e = r.energy
-    fig, ax = plt.subplots(figsize=(7.0, 3.2))
+    fig, ax = subplots(figsize=(7.0, 3.2))
     e0 = e["kinetic"][0] + e["strain"][0]
     ax.plot(r.time, e["kinetic"], label="kinetic ½u̇ᵀMu̇")
     ax.plot(r.time, e["strain"] - e["strain"][0], label="strain ½uᵀKu − E₀")
@@ -280,7 +275,6 @@ def energy_figure(r: TransientResult, path: Path) -> Path:
     ax.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
-    plt.close(fig)
     return Path(path)
 
 

@@ -31,10 +31,9 @@ def member_field_png(structure: Structure, values: np.ndarray, label: str,
         The PNG file.
     """
     import matplotlib
-
-    matplotlib.use("Agg", force=False)
     from matplotlib import cm, colors
-    from matplotlib.figure import Figure
+
+    from ..io.figures import new_figure
 
     values = np.asarray(values, dtype=float)
     finite = np.isfinite(values)
@@ -44,7 +43,7 @@ def member_field_png(structure: Structure, values: np.ndarray, label: str,
     rgba = cmap(norm(np.where(finite, values, 0.0)))
     rgba[~finite] = (0.6, 0.6, 0.6, 1.0)
     seg = structure.coords[structure.connectivity]                  # (member, 2, dim)
-    fig = Figure(figsize=(6.4, 4.8), dpi=90)
+    fig = new_figure(figsize=(6.4, 4.8), dpi=90)
     if structure.dim == 3:
         from mpl_toolkits.mplot3d.art3d import Line3DCollection
 
