@@ -27,6 +27,9 @@ from trussfe.rigid.motion import third_order_motion  # noqa: E402
 from trussfe.studies.lacy_rigid import double_octahedral_chain, double_octahedron  # noqa: E402
 from trussfe.rigid.simulate import simulate  # noqa: E402
 from trussfe.threads import worker_count  # noqa: E402
+from trussfe.allocator import tune_allocator  # noqa: E402
+
+tune_allocator()   # numpy temporaries reuse heap pages, as in the trussfe command
 
 
 
