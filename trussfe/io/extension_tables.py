@@ -17,7 +17,8 @@ from typing import Any, Callable
 from ..errors import InputError
 from ..model.active import ActiveMember
 from ..model.actuators import ACME_THREAD_ANGLE, Actuator
-from ..model.failure import BUCKLING, YIELD, FailureLaws, build_failure_laws
+from ..model.failure import BUCKLING, YIELD, FailureLaws
+from .failure_laws import build_failure_laws
 from ..model.bar_models import BAR_MODELS
 from ..model.postcritical import CONTROLS, SETTING_TYPES, PostcriticalSettings
 from ..model.structure import Structure

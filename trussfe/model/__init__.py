@@ -4,7 +4,7 @@ extension tables a model carries (active members, actuators, failure laws, post-
 settings).  Everything here is immutable; variants are made by ``Structure.with_…`` methods."""
 from .active import ActiveMember
 from .actuators import Actuator
-from .failure import FailureLaws, build_failure_laws
+from .failure import FailureLaws
 from .postcritical import PostcriticalSettings
 from .properties import MemberProperties
 from .sections import Material, Section
@@ -12,4 +12,4 @@ from .structure import DOF_NAMES, Structure, build_structure
 
 __all__ = ["ActiveMember", "Actuator", "DOF_NAMES", "FailureLaws", "Material",
            "MemberProperties", "PostcriticalSettings", "Section", "Structure",
-           "build_failure_laws", "build_structure"]
+           "build_structure"]

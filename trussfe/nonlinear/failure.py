@@ -32,7 +32,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..model.failure import BUCKLING, YIELD, FailureLaws, build_failure_laws
+from ..io.failure_laws import build_failure_laws
+from ..model.failure import BUCKLING, YIELD, FailureLaws
 
 __all__ = ["BUCKLING", "YIELD", "FailureLaws", "axial_law", "build_failure_laws",
            "failure_margins"]
