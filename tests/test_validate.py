@@ -279,3 +279,16 @@ def test_compare_semantics():
     d = Quantity(name="d", path="x", reference=100.0, rtol=1e-3, expect="differ")
     assert compare(d, 103.4).status == "differs" and not compare(d, 103.4).failed
     assert compare(d, 100.0).status == "agrees" and not compare(d, 100.0).failed
+
+
+def test_command_runs_cases_that_write_working_files(tmp_path):
+    """`trussfe validate` (inside its output transaction) runs a catalogue case, whose model
+    file is written to a working folder and read back, and a study that writes its figure and
+    reads it back; both pass against their references (Lacy Table 5.2 ×10 bays; Hortobágyi
+    section 6), and the report holds the study's figure."""
+    out = tmp_path / "r"
+    assert main(["validate", "--case", "chain-10-bays-statics", "--case",
+                 "hortobagyi-section6-unfolding", "--out", str(out), "--no-progress"]) == 0
+    assert (out / "report.html").is_file()
+    assert any(p.name.startswith("hortobagyi-section6-unfolding") for p in
+               (out / "figures").iterdir())

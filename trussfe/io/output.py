@@ -119,6 +119,18 @@ def output_transaction() -> Iterator[OutputTransaction]:
 
 
 @contextlib.contextmanager
+def scratch_files() -> Iterator[None]:
+    """Files written inside the block are the program's own working files (a validation case's
+    temporary model file, a study's figure read back at once), not outputs of the run: they
+    are written at once, outside any :func:`output_transaction` around the block."""
+    token = _TRANSACTION.set(None)
+    try:
+        yield
+    finally:
+        _TRANSACTION.reset(token)
+
+
+@contextlib.contextmanager
 def _folder_lock(folder: str) -> Iterator[None]:
     """An exclusive advisory lock on a folder (``flock`` of its descriptor)."""
     fd = os.open(folder, os.O_RDONLY)

@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import InputError, TrussfeError
+from ..io.output import scratch_files
 from .cases import Case, Quantity
 
 log = logging.getLogger(__name__)
@@ -200,7 +201,15 @@ def _catalogue_model(case: Case, folder: Path) -> Path:
 
 
 def evaluate(case: Case) -> tuple[dict, dict[str, bytes]]:
-    """Run a case's analysis; returns (result dict, figures as PNG bytes)."""
+    """Run a case's analysis; returns (result dict, figures as PNG bytes).
+
+    The files a case writes (its catalogue model, a study's figures) are working files, read
+    back at once: they are written outside the command's output transaction."""
+    with scratch_files():
+        return _evaluate(case)
+
+
+def _evaluate(case: Case) -> tuple[dict, dict[str, bytes]]:
     figures: dict[str, bytes] = {}
     if case.python:
         result = _call_python(case.python, case.options)
