@@ -8,13 +8,13 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+from ..model.bar_models import BAR_MODELS
 from .model import ModelLike, as_structure
 from .options import choice
 from .results import Result
 from .rigid_body import SCHEMES, load_motion_for
 
-#: Bar models and matrix updates of :func:`transient`.
-TRANSIENT_BAR_MODELS = ("pinned-beam", "truss")
+#: Matrix updates of :func:`transient`.
 UPDATES = ("per-step", "frozen")
 
 
@@ -93,7 +93,7 @@ def transient(model: ModelLike, *, motion, steps: int | None = None, dt: float |
     """
     from ..response.transient import transient_response
 
-    choice("--bar-model", bar_model, TRANSIENT_BAR_MODELS)
+    choice("--bar-model", bar_model, BAR_MODELS)
     choice("--update", update, UPDATES)
     structure = as_structure(model)
     mot = load_motion_for(structure, motion, steps, required=True)
