@@ -198,3 +198,11 @@ def test_direction_at_a_limit_point_from_the_inertia():
     class F:
         negative = -1
     assert _inertia(F()) is None and _inertia(None) is None
+
+
+def test_unknown_inertia_is_not_reported_as_a_count():
+    """Where the factorisation does not count negative pivots (inertia None) the message says
+    no number of negative eigenvalues (a count of −1 would be nonsense)."""
+    from trussfe.nonlinear.path import _cannot_continue
+    assert "negative eigenvalue" not in _cannot_continue("load", 2.0, None)
+    assert "3 negative eigenvalue(s)" in _cannot_continue("load", 2.0, 3)

@@ -513,7 +513,7 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                                   m.alive.copy(), neg, stage))
         return len(out.path) - 1
 
-    record(uf, lam, res, -1 if _inertia(fac) is None else _inertia(fac))
+    record(uf, lam, res, _inertia(fac))
     ds = float(step)
     size = float(np.ptp(m.X, axis=0).max())
     ds_max = abs(ds) if control == "load" else _MAX_STEP_RATIO * abs(ds)
@@ -640,7 +640,7 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                 sign = _next_sign(sign, neg, neg1, limit, ut1, uf1 - uf)
         du_prev = uf1 - uf
         uf, lam, res = uf1, lam1, res1
-        point = record(uf, lam, res, -1 if neg1 is None else neg1)
+        point = record(uf, lam, res, neg1)
         k += 1
         # ---- apply the failure events at this state
         if hit.any() and _apply_failures(st, m, out, hit, mg1, res, lam, point):
@@ -652,7 +652,7 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
             uf, res, fac1 = uf_new, res_new, fac_new
             neg1 = _inertia(fac1)
         if fac1 is None:
-            out.termination = _cannot_continue(control, lam, -1 if neg is None else neg)
+            out.termination = _cannot_continue(control, lam, neg)
             out.events.append(Event("end", lam, detail=out.termination))
             break
         fac = fac1
@@ -701,7 +701,7 @@ def _attempt(st, uf, lam, fac, dss, direction, prev, mode, du_prev, neg, max_cut
     return None, None
 
 
-def _cannot_continue(control: str, lam: float, neg: int) -> str:
+def _cannot_continue(control: str, lam: float, neg: int | None) -> str:
     why = "Newton iterations did not converge even with a step cut 4096 times"
     if control == "load" and neg:           # a count of negative eigenvalues, not unknown
         why = ("no equilibrium at a larger load factor: the tangent stiffness has "
@@ -900,7 +900,7 @@ def _reequilibrate(st, m, out, uf, lam, handover, record):
         over = mg >= (-1e-6 if interrupted else 1e-9)
         if not over.any():
             fac = factor(st.eval(uf)[2], "symmetric")
-            record(uf, lam, res, -1 if _inertia(fac) is None else _inertia(fac))
+            record(uf, lam, res, _inertia(fac))
             return uf, res, fac, ""
         # cascade: the most overloaded member fails now, at the same load factor
         c, e = np.unravel_index(np.argmax(np.where(over, mg, -np.inf)), mg.shape)
