@@ -16,20 +16,9 @@ The laws act on bar members (co-rotational truss elements) and are given in the 
     residual = 0.3                    # softening: force kept, as a fraction of P_cr
     softening_strain = 0.002          # softening: extra shortening over which it drops
 
-Force–strain laws (``ε`` engineering strain, ``ε_p`` plastic strain, ``N_e = EA(ε − ε_p)``):
-
-* buckling ``cap``: ``N = max(N_e, −P_cr)`` — the elastic strut after buckling carries P_cr
-  while it shortens (the elastica is flat to first order at the bifurcation);
-  ``softening``: beyond ``ε_cr = −P_cr/EA`` the compression drops linearly to ``residual·P_cr``
-  over ``softening_strain`` and stays there; ``remove``: the bar is removed when ``N_e``
-  reaches ``−P_cr``.  The buckling laws are elastic (path independent): an unloading strut
-  retraces the curve, as an elastic strut does.
-* yield ``cap``: elastic–perfectly plastic with a committed plastic strain; ``remove``: removed
-  when ``|N| = A f_y``.
-* fracture: removed when ``ε`` reaches ``fracture_strain``.
-
-The force–strain laws themselves are :func:`trussfe.nonlinear.failure.axial_law`; this module
-holds what a model carries: the law and its parameters for every member.
+The force–strain laws are :func:`trussfe.nonlinear.failure.axial_law` (described in
+:mod:`trussfe.nonlinear.failure`); this module holds what a model carries: the law and its
+parameters for every member.
 """
 from __future__ import annotations
 

@@ -2,19 +2,7 @@
 """Member failure laws: Euler buckling, yield of the section, fracture at a strain.
 
 The laws act on bar members (co-rotational truss elements) and are given in the model file's
-``[failure]`` table (data: :mod:`trussfe.model.failure`)::
-
-    [failure.default]                 # every bar member
-    buckling = "cap"                  # "none" | "cap" | "softening" | "remove"
-    effective_length_factor = 1.0     # K in P_cr = π² E I / (K L)²
-    yield = "none"                    # "none" | "cap" | "remove"  (uses yield_strength)
-    fracture_strain = 0.05            # tensile strain at which the bar breaks (removed)
-
-    [failure.members.M3]              # overrides for one member
-    buckling = "softening"
-    critical_load = 1200.0            # N, instead of the Euler formula
-    residual = 0.3                    # softening: force kept, as a fraction of P_cr
-    softening_strain = 0.002          # softening: extra shortening over which it drops
+``[failure]`` table; :mod:`trussfe.model.failure` shows its format and holds the data.
 
 Force–strain laws (``ε`` engineering strain, ``ε_p`` plastic strain, ``N_e = EA(ε − ε_p)``):
 

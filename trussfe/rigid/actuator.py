@@ -40,23 +40,7 @@ gearhead ratio (as eq. 2.40 is written), ``V_m = T_m R_a/K_t + K_b |θ̇_m|``, a
 load" when the force and the static force have the same sign.  It reproduces the thesis'
 figures, e.g. the 29 V peak of section 5.7.
 
-Model-file table (the key is the active member's id)::
-
-    [actuators.M7_8]
-    leadscrew_gain = 2.5266e-4     # m/rad, G_ls (1/16 in per revolution)
-    mean_diameter = 0.0127         # m, d_m
-    thread = "square"              # or "acme"
-    thread_angle = 14.5            # degrees, α_T (acme only; default 14.5)
-    friction = 0.1                 # μ
-    gearhead_gain = 5.2            # G_gh; omit it to select it from max_speed (eq. 3.1)
-    armature_inertia = 6.76e-6     # kg·m², J_m
-    resistance = 2.0               # ohm, R_a
-    torque_constant = 0.0398       # N·m/A, K_t
-    back_emf_constant = 0.0398     # V·s/rad, K_b
-    max_speed = 400.0              # rad/s, optional
-    max_voltage = 25.0             # V, optional
-    require_self_locking = true    # optional (default true)
-    convention = "physical"        # or "thesis"
+The model-file table ``[actuators]`` and its data: :mod:`trussfe.model.actuators`.
 """
 from __future__ import annotations
 
