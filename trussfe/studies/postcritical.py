@@ -143,6 +143,33 @@ def von_mises_truss(steps: int = 400, step: float = 0.002, figures: bool = True)
     }
 
 
+def _imperfect_ratios(out: dict, d: np.ndarray, lam: np.ndarray) -> None:
+    """Load ratio of the imperfect column at deflections 0.1, 0.2, 0.3 L (linear interpolation
+    between path states; d grows monotonically here) beside the elastica's."""
+    for target in (0.1, 0.2, 0.3):
+        if d.max() < target:
+            continue
+        out[f"imperfect_load_ratio_at_{int(target * 10)}"] = float(np.interp(target, d, lam))
+        out[f"elastica_load_ratio_at_{int(target * 10)}"] = elastica_load_ratio(target)
+
+
+def _perfect_column(out: dict, perfect, pres, d: np.ndarray, ratio_ref: float,
+                    extensible: float, upper: float) -> None:
+    """The perfect column's bifurcation, linear buckling load and the largest deviation of its
+    secondary branch from the elastica for 0.15 L < δ < ``upper``, as ratios to P_E."""
+    bif = [e for e in pres.events if e.kind == "bifurcation"]
+    out["bifurcation_load_ratio"] = float(bif[0].load_factor * ratio_ref) if bif else math.nan
+    out["extensible_euler_ratio"] = extensible
+    lf, _ = linear_buckling(perfect, count=1)
+    out["linear_buckling_ratio"] = float(lf[0] * ratio_ref)
+    lam = pres.load_factors * ratio_ref
+    on = (d > 0.15) & (d < upper)
+    if on.any():
+        ref = np.array([elastica_load_ratio(x) for x in d[on]])
+        out["branch_max_error"] = float(np.abs(lam[on] / ref - 1.0).max())
+        out["branch_max_deflection"] = float(d.max())
+
+
 def euler_column(subdivisions: int = 16) -> dict:
     """Pin-ended column (``meshes/postcritical_euler_column.toml``) against the elastica.
 
@@ -163,29 +190,14 @@ def euler_column(subdivisions: int = 16) -> dict:
     mid = m.dof(s.n_nodes + k // 2 - 1, 0)               # mid-span point, lateral
     d = np.abs(res.displacement(mid)) / L
     lam = res.load_factors * ratio_ref
-    for target in (0.1, 0.2, 0.3):
-        if d.max() < target:
-            continue
-        lam_at = float(np.interp(target, d, lam))      # d grows monotonically here
-        out[f"imperfect_load_ratio_at_{int(target * 10)}"] = lam_at
-        out[f"elastica_load_ratio_at_{int(target * 10)}"] = elastica_load_ratio(target)
+    _imperfect_ratios(out, d, lam)
     # perfect column, branch at the bifurcation
     perfect = NonlinearModel(s, bar_model="pinned-beam", subdivisions=k)
     EA = float(s.E[0] * s.area[0])
     pres = follow_path(perfect, "arc-length", steps=60, max_load_factor=1.6, branch=True,
                        monitor=perfect.dof(1, 1))
-    bif = [e for e in pres.events if e.kind == "bifurcation"]
-    out["bifurcation_load_ratio"] = float(bif[0].load_factor * ratio_ref) if bif else math.nan
-    out["extensible_euler_ratio"] = 1.0 + Pe / EA
-    lf, _ = linear_buckling(perfect, count=1)
-    out["linear_buckling_ratio"] = float(lf[0] * ratio_ref)
-    d = np.abs(pres.displacement(mid)) / L
-    lam = pres.load_factors * ratio_ref
-    on = (d > 0.15) & (d < 0.4)
-    if on.any():
-        ref = np.array([elastica_load_ratio(x) for x in d[on]])
-        out["branch_max_error"] = float(np.abs(lam[on] / ref - 1.0).max())
-        out["branch_max_deflection"] = float(d.max())
+    _perfect_column(out, perfect, pres, np.abs(pres.displacement(mid)) / L, ratio_ref,
+                    1.0 + Pe / EA, upper=0.4)
     return out
 
 
@@ -215,28 +227,14 @@ def euler_column_3d(subdivisions: int = 16) -> dict:
     res = run_postcritical(s, subdivisions=k, steps=200)
     d = lateral(res, res.model)
     lam = res.load_factors * ratio_ref
-    for target in (0.1, 0.2, 0.3):
-        if d.max() < target:
-            continue
-        out[f"imperfect_load_ratio_at_{int(target * 10)}"] = float(np.interp(target, d, lam))
-        out[f"elastica_load_ratio_at_{int(target * 10)}"] = elastica_load_ratio(target)
+    _imperfect_ratios(out, d, lam)
     perfect = NonlinearModel(s, bar_model="truss", subdivisions=k)
     EA = float(s.E[0] * s.area[0])
     pres = follow_path(perfect, "arc-length", steps=80, max_load_factor=1.6, branch=True,
                        monitor=perfect.dof(1, 2))
-    bif = [e for e in pres.events if e.kind == "bifurcation"]
-    out["bifurcation_load_ratio"] = float(bif[0].load_factor * ratio_ref) if bif else math.nan
-    out["extensible_euler_ratio"] = 1.0 + Pe / EA
-    lf, _ = linear_buckling(perfect, count=1)
-    out["linear_buckling_ratio"] = float(lf[0] * ratio_ref)
-    d = lateral(pres, perfect)
-    lam = pres.load_factors * ratio_ref
     # up to δ = 0.35 L: δ/L(p) peaks at 0.4025, near which P(δ) is ill-conditioned
-    on = (d > 0.15) & (d < 0.35)
-    if on.any():
-        ref = np.array([elastica_load_ratio(x) for x in d[on]])
-        out["branch_max_error"] = float(np.abs(lam[on] / ref - 1.0).max())
-        out["branch_max_deflection"] = float(d.max())
+    _perfect_column(out, perfect, pres, lateral(pres, perfect), ratio_ref, 1.0 + Pe / EA,
+                    upper=0.35)
     return out
 
 
