@@ -11,51 +11,18 @@ members coloured by a per-member quantity when one is given (e.g. axial force).
 """
 from __future__ import annotations
 
-import functools
 import logging
-import os
-import subprocess
-import sys
 from collections.abc import Sequence
 from pathlib import Path
 
 import numpy as np
 
 from .io.output import atomic_path
+from .io.render_backend import _vtk_can_render, plot_backend  # noqa: F401 (re-exported)
 
 log = logging.getLogger(__name__)
 
 __all__ = ["plot_backend", "render_shape", "render_modes"]
-
-_PROBE = ("import pyvista as pv\n"
-          "p = pv.Plotter(off_screen=True, window_size=(32, 32))\n"
-          "p.add_mesh(pv.Line())\n"
-          "img = p.screenshot(return_img=True)\n"
-          "p.close()\n"
-          "assert img.shape[:2] == (32, 32)\n")
-
-
-@functools.lru_cache(maxsize=1)
-def _vtk_can_render() -> bool:
-    try:
-        r = subprocess.run([sys.executable, "-c", _PROBE], capture_output=True, timeout=60)
-    except (OSError, subprocess.TimeoutExpired):
-        return False
-    if r.returncode != 0:
-        log.info("pyvista cannot render off-screen here; using matplotlib (%s)",
-                 r.stderr.decode(errors="replace").strip().splitlines()[-1:] or "")
-    return r.returncode == 0
-
-
-def plot_backend() -> str:
-    """``"pyvista"`` when VTK can render off-screen here, else ``"matplotlib"``.
-
-    ``TRUSSFE_PLOT_BACKEND`` (``pyvista`` or ``matplotlib``) overrides the probe.
-    """
-    forced = os.environ.get("TRUSSFE_PLOT_BACKEND", "").strip().lower()
-    if forced in ("pyvista", "matplotlib"):
-        return forced
-    return "pyvista" if _vtk_can_render() else "matplotlib"
 
 
 def _pad3(x: np.ndarray) -> np.ndarray:

@@ -20,6 +20,7 @@ from .kinematic import MechanismResult, TraceResult, mechanism, trace
 from .linear import BucklingResult, ModesResult, StaticResult, buckling, modes, static
 from .model import ModelLike, as_structure, model_from_dict, read_model
 from .nonlinear_path import PostcriticalResult, postcritical
+from .picture import Picture, show
 from .results import Result
 from .rigid_body import ActuatorsResult, SimulateResult, actuators, simulate
 
@@ -51,8 +52,8 @@ def check_options(analysis: str, options) -> None:
 
 
 __all__ = ["ANALYSES", "ActuatorsResult", "BucklingResult", "ElasticResult",
-           "MechanismResult", "ModelLike", "ModesResult", "PostcriticalResult", "Result",
+           "MechanismResult", "ModelLike", "ModesResult", "Picture", "PostcriticalResult", "Result",
            "SimulateResult", "StaticResult", "TraceResult", "TransientResult",
            "actuators", "as_structure", "buckling", "check_options", "elastic",
-           "mechanism", "model_from_dict", "modes", "option_names", "postcritical", "read_model", "simulate",
-           "static", "trace", "transient"]
+           "mechanism", "model_from_dict", "modes", "option_names", "postcritical", "read_model", "show",
+           "simulate", "static", "trace", "transient"]

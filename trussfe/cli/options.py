@@ -182,9 +182,9 @@ def input_dir(value: str) -> str:
 
 #: Option destinations that name files or folders the run writes (for the checks that two
 #: outputs, or an output and an input, are not the same file).
-OUTPUT_OPTIONS = ("json", "vtk", "plot", "plots", "npz", "out")
+OUTPUT_OPTIONS = ("json", "vtk", "plot", "plots", "npz", "out", "png")
 #: Option destinations that name files the run reads.
-INPUT_OPTIONS = ("model", "motion", "cases")
+INPUT_OPTIONS = ("model", "motion", "cases", "results")
 
 
 def check_paths(args: argparse.Namespace) -> str | None:
