@@ -15,8 +15,8 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 
 #: Where the rule applies (folders and single files, relative to the repository root).
-SCOPE = ("trussfe", "tests", "docs", "validation", "meshes", "benchmarks", "README.md",
-         "CHANGELOG.md")
+SCOPE = ("trussfe", "tests", "docs", "validation", "meshes", "benchmarks", "examples",
+         "README.md", "CHANGELOG.md")
 
 _MD = r"\." + "md"
 #: Outside documents and issue references, each with the reason it is refused.

@@ -39,7 +39,7 @@ __all__ = [
 if TYPE_CHECKING:
     from ..model.structure import Structure
 
-#: |e·Z| above which a member counts as vertical (its default local y is then global X).
+#: ``|e·Z|`` above which a member counts as vertical (its default local y is then global X).
 VERTICAL = 1.0 - 1e-9
 
 
@@ -135,7 +135,7 @@ def local_axes(structure: Structure, coords: np.ndarray | None = None) -> np.nda
 def transverse_frames(unit: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Lacy's two unit vectors b1, b2 perpendicular to each member, (..., 3) each.
 
-    b1 = e × k / |e × k| with k the global z axis (the global x axis for a member within 25°
+    b1 = e × k / ``|e × k|`` with k the global z axis (the global x axis for a member within 25°
     of z), b2 = e × b1.  In 2-D (e in the x–y plane) b1 is the in-plane normal and b2 = −z:
     the planar shear is the b1 component and the planar moment minus the b2 component.
     Away from the vertical, b1 is local z and b2 is minus local y of :func:`frame_rotations`.

@@ -12,18 +12,18 @@ Section forces ``N, Vy, Vz, T, My, Mz`` in member axes (N positive in tension) g
 Von Mises at two points of the section (Lacy eqs. 2.24 and 2.25):
 
 * **S1**, the neutral axis: sqrt(σ_T² + 3 τ²);
-* **S2**, the outer fibre: |σ_T| + σ_M, the shear being zero there.  σ_M combines the two
+* **S2**, the outer fibre: ``|σ_T|`` + σ_M, the shear being zero there.  σ_M combines the two
   bending stresses as the section's shape requires: for a *round* section (a tube) the fibre
   of largest stress lies in the direction of the resultant moment, σ_M = sqrt(σ_My² + σ_Mz²)
-  (= |M| c / I); for any other section the corner fibre carries both, σ_M = |σ_My| + |σ_Mz|
-  (exact for rectangles and I-sections, an upper bound for other shapes).  Under bending
-  about one axis the two rules agree.
+  (= ``|M|`` c / I); for any other section the corner fibre carries both,
+  σ_M = ``|σ_My|`` + ``|σ_Mz|`` (exact for rectangles and I-sections, an upper bound for
+  other shapes).  Under bending about one axis the two rules agree.
 
 Convention ``"lacy-per-axis"`` is the thesis' 3-D form (Lacy eqs. 4.75/4.76): each moment
 component is taken at its own extreme fibre together with the shear of the component that
-peaks there, S2 = max over the two axes of sqrt((|σ_T| + |σ_My|)² + 3 τ_y²) and
-sqrt((|σ_T| + |σ_Mz|)² + 3 τ_z²), τ_y = κ Vy / A, τ_z = κ Vz / A.  For the thesis' tubes it
-differs from ``"combined"`` only by the shear term, which the thesis notes is negligible.
+peaks there, S2 = max over the two axes of sqrt((``|σ_T|`` + ``|σ_My|``)² + 3 τ_y²) and
+sqrt((``|σ_T|`` + ``|σ_Mz|``)² + 3 τ_z²), τ_y = κ Vy / A, τ_z = κ Vz / A.  For the thesis' tubes
+it differs from ``"combined"`` only by the shear term, which the thesis notes is negligible.
 Neither form has a torsion term (the thesis has none).
 """
 from __future__ import annotations
@@ -108,7 +108,7 @@ def von_mises(N: np.ndarray, Vy: np.ndarray, Vz: np.ndarray, My: np.ndarray, Mz:
     Examples
     --------
     A pure axial force of −78.5429 N on the tube of Lacy Table 3.2 (A = 1.1875965e-4 m²)
-    gives S1 = S2 = |N|/A ≈ 661,360 Pa:
+    gives S1 = S2 = ``|N|``/A ≈ 661,360 Pa:
 
     >>> import numpy as np
     >>> z = np.zeros(1)
