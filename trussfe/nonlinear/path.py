@@ -309,14 +309,10 @@ def _dead_load_state(st, max_cuts: int) -> np.ndarray:
 
 
 def _inertia(fac) -> int | None:
-    """Negative pivots of a factor, or None when unknown (no factor, or a factorisation that
-    had to pivot off the diagonal and did not count them)."""
-    if fac is None:
-        return None
-    neg = getattr(fac, "negative", None)
-    if neg is None:
-        neg = getattr(fac, "inertia", None)
-    return None if neg is None or neg < 0 else int(neg)
+    """Negative pivots of a factor (:attr:`trussfe.linalg.Factor.inertia`), or None when
+    unknown (no factor, or a factorisation that had to pivot off the diagonal and did not
+    count them)."""
+    return None if fac is None or fac.inertia is None else int(fac.inertia)
 
 
 def _crossed(neg0: int | None, neg1: int | None) -> bool:
