@@ -23,8 +23,8 @@ class ValidationResult:
 
     @property
     def passed(self) -> bool:
-        """True when every check is within its tolerance (documented deviations are shown,
-        not failed)."""
+        """True when every check holds: each value within its reference's tolerance, each
+        documented deviation outside it and within its explained value's tolerance."""
         return all(r.passed for r in self.cases)
 
     @property
