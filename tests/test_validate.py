@@ -315,3 +315,22 @@ def test_command_runs_cases_that_write_working_files(tmp_path):
     assert (out / "report.html").is_file()
     assert any(p.name.startswith("hortobagyi-section6-unfolding") for p in
                (out / "figures").iterdir())
+
+
+def test_report_labels_regression_values_and_explanations(tmp_path):
+    """The report marks references recorded from trussfe's own output as regression values,
+    counts them, and shows each documented deviation's explained value and its source."""
+    cases = load_cases(default_cases_dir(), ["hortobagyi-section4", "lacy-table-5-2-stated-load"])
+    results = run_cases(cases, progress=False)
+    assert all(r.passed for r in results)
+    md, page = write_report(results, tmp_path / "out")
+    text = md.read_text(encoding="utf-8")
+    n_reg = sum(q.kind == "regression" for c in cases for q in c.quantities)
+    n_dev = sum(q.expect == "differ" for c in cases for q in c.quantities)
+    assert n_reg == 2 and n_dev == 7
+    assert f"{n_dev} documented deviations, each checked against its explanation; " \
+           f"{n_reg} regression values" in text
+    assert text.count("regression value (trussfe's own output)") == n_reg
+    assert text.count("explained: ") == n_dev and "× 46.0/44.498" in text
+    assert text.count("differs as documented") == n_dev
+    assert "regression values" in page.read_text(encoding="utf-8")
