@@ -286,6 +286,8 @@ def test_compare_semantics():
     assert gone.status == "fail" and "gone" in gone.message
     wrong = compare(d, 105.0)                        # deviates, but not as explained
     assert wrong.status == "fail" and "explained" in wrong.message
+    bare = Quantity(name="b", path="x", reference=100.0, rtol=1e-3, expect="differ")
+    assert compare(bare, 103.0).failed                # a deviation must say what explains it
 
 
 @pytest.mark.parametrize("extra, message", [

@@ -160,6 +160,10 @@ def compare(q: Quantity, value: Any) -> QuantityResult:
     if q.expect != "differ":
         out.status = "pass" if ok else "fail"
         return out
+    if q.explained is None:
+        out.status = "fail"
+        out.message = "documented deviation without an explained value"
+        return out
     explained = float(q.explained)
     out.explained_rel_error = abs(v - explained) / abs(explained) if explained else None
     explained_ok = _within(v, explained, q.explained_rtol, q.explained_atol)
