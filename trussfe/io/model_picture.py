@@ -478,13 +478,13 @@ def _pv_draw(scene: _Scene, out: Path, size: tuple[int, int]) -> None:
         if legend:
             p.add_legend(legend, bcolor="white", face="-", size=(0.3, 0.04 * len(legend)),
                          loc="upper left")
-        p.add_text(scene.title, position="upper_edge", font_size=12, color="black")
+        p.add_text(scene.title, position="upper_edge", font_size=10, color="black")
         if scene.dim == 2:
             p.view_xy()
         else:
             p.view_isometric()
         p.reset_camera()
-        p.camera.zoom(0.9)
+        p.camera.zoom(0.9 if scene.dim == 2 else 1.05)  # a 3-D model fills less of its sphere
         img = p.screenshot(return_img=True)
     finally:
         p.close()
