@@ -1,0 +1,224 @@
+"""Loads along members: equivalent end loads, reactions, deflections and section forces
+against closed forms.
+
+Sources: Roark's Formulas for Stress and Strain (7th ed.), Table 8.1 — simply supported beam
+under a uniform load (case 2e: deflection 5qL⁴/384EI, reactions qL/2, M = qL²/8 at midspan),
+fixed-fixed beam under a point load (case 1d: end moments Pab²/L², Pa²b/L², reactions
+Pb²(3a + b)/L³, Pa²(a + 3b)/L³); statics for the resultants of a trapezoidal load
+((q₁ + q₂)L/2 at L(q₁ + 2q₂)/(3(q₁ + q₂))).  Every static result here is in global
+equilibrium with the member loads counted as applied loads (tests/conftest.py).
+"""
+import json
+
+import numpy as np
+import pytest
+
+from trussfe.api.model import model_from_dict
+from trussfe.fem.member_loads import member_load_vector
+from trussfe.fem.static import solve_static, static_json
+from trussfe.mechanics.member_loads import (linear_load_bending, point_load_bending,
+                                            resultant, section_forces_along)
+from trussfe.model import Material, MemberLoad, Section, build_structure
+
+E, G, A, I, L = 2.0e11, 8.0e10, 4.0e-3, 8.0e-6, 3.0
+SEC = Section("s", area=A, Iy=I, Iz=I, J=2 * I, c=0.05)
+MAT = Material("m", E, G)
+ALL3 = ["x", "y", "z", "rx", "ry", "rz"]
+
+
+def beam(dim, supports, section=SEC, length=L):
+    nodes = [[0, 0], [length, 0]] if dim == 2 else [[0, 0, 0], [length, 0, 0]]
+    return build_structure(nodes, [(0, 1)], section=section, material=MAT,
+                           supports=supports, is_beam=True)
+
+
+def simply_supported(dim):
+    sup = ({0: ["x", "y"], 1: ["y"]} if dim == 2
+           else {0: ["x", "y", "z", "rx"], 1: ["y", "z"]})
+    return beam(dim, sup)
+
+
+def fixed_fixed(dim):
+    return beam(dim, {0: ALL3[:2] + ["rz"], 1: ALL3[:2] + ["rz"]} if dim == 2
+                else {0: ALL3, 1: ALL3})
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+@pytest.mark.parametrize("k", [2, 4, 6])
+def test_simply_supported_uniform(dim, k):
+    q = -1000.0
+    vec = [0.0, q] if dim == 2 else [0.0, 0.0, q]
+    s = simply_supported(dim).with_extensions(member_loads=[MemberLoad.uniform(0, vec)])
+    r = solve_static(s, subdivisions=k)
+    # reactions qL/2 each (the structure's own transverse axis: y in 2-D, z in 3-D)
+    c = dim - 1
+    assert r.reactions[:, c] == pytest.approx([-q * L / 2] * 2, rel=1e-12)
+    # midspan deflection 5qL⁴/384EI (Roark 8.1 case 2e): exact at the nodes
+    mid = r.fe.station_displacements(r.u)[0, k // 2, c]
+    assert mid == pytest.approx(5 * q * L**4 / (384 * E * I), rel=1e-10)
+    # M = qL²/8 at midspan, sagging; 3-D: the global-z load is along the local y axis
+    M = r.section_forces[0, k // 2, 5]
+    assert abs(M) == pytest.approx(abs(q) * L**2 / 8, rel=1e-10)
+    # the same moment along the member: wx(L − x)/2 at every station
+    x = r.station_x[0]
+    assert np.abs(r.section_forces[0, :, 5]) == pytest.approx(
+        abs(q) * x * (L - x) / 2, rel=1e-9, abs=1e-9)
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+@pytest.mark.parametrize("frac", [0.0, 0.13, 0.25, 0.5, 0.61, 1.0])
+def test_fixed_fixed_point_load(dim, frac):
+    P = -2000.0
+    F = [0.0, P] if dim == 2 else [0.0, 0.0, P]
+    s = fixed_fixed(dim).with_extensions(member_loads=[
+        MemberLoad(0, "point", at=frac, force=tuple(F))])
+    a, b = frac * L, (1 - frac) * L
+    for k in (1, 4, 5):
+        r = solve_static(s, subdivisions=k)
+        c = dim - 1
+        # reactions Pb²(3a + b)/L³ and Pa²(a + 3b)/L³ (Roark 8.1 case 1d)
+        assert r.reactions[:, c] == pytest.approx(
+            [-P * b**2 * (3 * a + b) / L**3, -P * a**2 * (a + 3 * b) / L**3], abs=1e-8)
+        # end moments |Pab²/L²|, |Pa²b/L²|
+        rot = 2 if dim == 2 else 4
+        assert np.abs(r.reactions[:, rot]) == pytest.approx(
+            [abs(P) * a * b**2 / L**2, abs(P) * a**2 * b / L**2], abs=1e-8)
+        # the member's own end moments equal them
+        assert np.abs(r.end_forces[0, :, 5]) == pytest.approx(
+            [abs(P) * a * b**2 / L**2, abs(P) * a**2 * b / L**2], abs=1e-8)
+
+
+def test_fixed_end_forces_closed_forms():
+    # Roark 8.1 case 2 (uniform, triangular) and case 1 (point): Euler–Bernoulli, Φ = 0
+    h, q = 2.0, 3.0
+    assert linear_load_bending(h, 0.0, q, q) == pytest.approx(
+        [q * h / 2, q * h**2 / 12, q * h / 2, -q * h**2 / 12])
+    assert linear_load_bending(h, 0.0, 0.0, q) == pytest.approx(
+        [3 * q * h / 20, q * h**2 / 30, 7 * q * h / 20, -q * h**2 / 20])
+    a, b, P = 0.5, 1.5, 7.0
+    assert point_load_bending(a / h, h, 0.0, P, 0.0) == pytest.approx(
+        [P * b**2 * (3 * a + b) / h**3, P * a * b**2 / h**2, P * a**2 * (a + 3 * b) / h**3,
+         -P * a**2 * b / h**2])
+    # the fixed-end forces of a uniform load do not depend on Φ (symmetric load)
+    assert linear_load_bending(h, 0.8, q, q) == pytest.approx(
+        [q * h / 2, q * h**2 / 12, q * h / 2, -q * h**2 / 12])
+
+
+@pytest.mark.parametrize("axes", ["global", "local"])
+def test_trapezoidal_resultants(axes):
+    # a simply supported 3-D beam along a skew line: the reactions of a trapezoidal load are
+    # its resultant (q₁ + q₂)L/2 split by the centroid L(q₁ + 2q₂)/(3(q₁ + q₂)) (statics)
+    d = np.array([2.0, 1.0, 0.5])
+    Lm = float(np.linalg.norm(d))
+    s = build_structure([[0, 0, 0], list(d)], [(0, 1)], section=SEC, material=MAT,
+                        supports={0: ["x", "y", "z", "rx"], 1: ["y", "z"]}, is_beam=True)
+    q1, q2 = -200.0, -600.0
+    R = np.eye(3) if axes == "local" else None
+    from trussfe.mechanics.geometry import local_axes
+    ax = local_axes(s)[0]
+    # the same physical load, a transverse one along the member's local z
+    if axes == "local":
+        ld = MemberLoad(0, "trapezoidal", (0, 0, q1), (0, 0, q2), axes="local")
+    else:
+        ld = MemberLoad(0, "trapezoidal", tuple(q1 * ax[2]), tuple(q2 * ax[2]))
+    r = solve_static(s.with_extensions(member_loads=[ld]), subdivisions=3)
+    total, xbar = resultant(Lm, q1, q2)
+    assert total == pytest.approx((q1 + q2) * Lm / 2)
+    assert xbar == pytest.approx(Lm * (q1 + 2 * q2) / (3 * (q1 + q2)))
+    Rb = -total * xbar / Lm
+    Ra = -total - Rb
+    reac = r.reactions[:, :3] @ ax[2]
+    assert reac == pytest.approx([Ra, Rb], rel=1e-10)
+    del R
+
+
+def test_section_forces_along_and_json_stations():
+    # simply supported beam, point load P at a = 0.3L with 4 sub-elements (the load inside
+    # an element): M(x) = Pbx/L before the load, Pa(L − x)/L after it (Roark 8.1 case 1e);
+    # the JSON stations add x = a, where M = Pab/L
+    P, frac = -1500.0, 0.3
+    a, b = frac * L, (1 - frac) * L
+    s = simply_supported(2).with_extensions(member_loads=[
+        MemberLoad(0, "point", at=frac, force=(0.0, P))])
+    r = solve_static(s, subdivisions=4)
+    doc = json.loads(json.dumps(static_json(r)))
+    st = doc["members"]["0"]["stations"]
+    x = np.array(st["x"])
+    assert x.tolist() == pytest.approx([0, 0.75, 0.9, 1.5, 2.25, 3.0])
+    M = np.where(x <= a, -P * b * x / L, -P * a * (L - x) / L)
+    assert st["Mz"] == pytest.approx(M.tolist(), abs=1e-9)
+    # the FE stations agree with the statics along the member
+    assert r.section_forces[0, :, 5] == pytest.approx(np.delete(M, 2), abs=1e-9)
+    # shear: −R_a before the load, −R_a − P after it (section just after a station load)
+    Ra = -P * b / L
+    assert st["Vy"] == pytest.approx([-Ra, -Ra, -Ra - P, -Ra - P, -Ra - P, -Ra - P])
+
+
+def test_section_forces_along_formula_uniform():
+    # a cantilever of length L under q from its free start: M(x) = −qx²/2 (statics)
+    q = np.array([[0.0, -10.0, 0.0]])
+    x = np.linspace(0, 2.0, 5)[None]
+    F = section_forces_along(x, np.array([2.0]), np.zeros((1, 6)), np.array([0]),
+                             np.array([False]), q, q, np.zeros(1), np.zeros((1, 3)),
+                             np.zeros((1, 3)))
+    assert F[0, :, 5] == pytest.approx(-10.0 * x[0] ** 2 / 2)
+    assert F[0, :, 1] == pytest.approx(10.0 * x[0])
+
+
+def test_truss_bar_simply_supported():
+    # a pin-ended bar (truss model) under a transverse uniform load and an axial one: the
+    # end joints take qL/2 each (simply supported bar), the axial force varies linearly, and
+    # the JSON stations of the bar show the simply supported moment qx(L − x)/2
+    s = build_structure([[0, 0], [L, 0], [L, 2.0]], [(0, 1), (1, 2)], section=SEC,
+                        material=MAT, supports={0: ["x", "y"], 2: ["x", "y"]})
+    q, p = -400.0, 100.0
+    s = s.with_extensions(member_loads=[MemberLoad.uniform(0, (p, q)),
+                                        MemberLoad(0, "point", at=0.5, force=(0.0, -50.0))])
+    r = solve_static(s)
+    # the free joint 1 takes half of each transverse load; bar 1 (vertical) carries it
+    # as axial force.  Nothing but bar 0 holds joint 1 along x, so bar 0's axial force
+    # runs from pL at its support to 0 at joint 1: N(x) = p(L − x)
+    N1 = -(q * L / 2 - 25.0)
+    assert r.axial_force[1] == pytest.approx(N1, rel=1e-12)
+    assert r.end_forces[0, 1, 0] == pytest.approx(0.0, abs=1e-9)
+    assert r.end_forces[0, 0, 0] == pytest.approx(p * L, rel=1e-12)
+    st = static_json(r)["members"]["0"]["stations"]
+    x = np.array(st["x"])
+    assert x.tolist() == pytest.approx([0.0, L / 2, L])
+    M = -q * x * (L - x) / 2 + 50.0 * np.minimum(x, L - x) / 2
+    assert st["Mz"] == pytest.approx(M.tolist(), abs=1e-9)
+    assert st["N"] == pytest.approx((p * (L - x)).tolist(), abs=1e-9)
+
+
+def test_member_load_vector_is_statically_equivalent():
+    # the global equivalent loads of a load on a 3-D beam have the load's resultant
+    # (statics), whatever the axes the load is given in
+    s = build_structure([[0, 0, 0], [1.0, 2.0, 2.0]], [(0, 1)], section=SEC, material=MAT,
+                        supports={0: ALL3, 1: ALL3}, is_beam=True)
+    from trussfe.fem.discretisation import discretise
+    fe = discretise(s, subdivisions=1)
+    loads = [MemberLoad(0, "trapezoidal", (1.0, -2.0, 3.0), (4.0, 0.5, -1.0)),
+             MemberLoad(0, "point", at=0.4, force=(0, 0, -7.0), moment=(1.0, 2.0, 3.0),
+                        axes="local")]
+    f = member_load_vector(fe, loads).global_vector
+    F = f[fe.node_dofs[:, :3]].sum(axis=0)
+    from trussfe.mechanics.geometry import local_axes
+    Rm = local_axes(s)[0]
+    expect = 0.5 * (np.array([1.0, -2.0, 3.0]) + np.array([4.0, 0.5, -1.0])) * 3.0 \
+        + Rm.T @ np.array([0, 0, -7.0])
+    assert F == pytest.approx(expect, rel=1e-12)
+
+
+def test_model_file_member_loads_and_api(tmp_path):
+    d = {"model": {"dimension": 2}, "materials": {"st": {"E": E, "G": G}},
+         "sections": {"b": {"area": A, "Iz": I, "c": 0.05}},
+         "nodes": {"A": [0, 0], "B": [L, 0]},
+         "members": {"AB": {"nodes": ["A", "B"], "section": "b", "material": "st",
+                            "type": "beam"}},
+         "supports": {"A": ["x", "y"], "B": ["y"]},
+         "member_loads": [{"member": "AB", "kind": "uniform", "q": [0.0, -1000.0]}]}
+    import trussfe
+    r = trussfe.static(model_from_dict(d))
+    assert r.reaction[:, 1] == pytest.approx([1500.0, 1500.0])
+    doc = r.to_dict()
+    assert max(doc["members"]["AB"]["stations"]["Mz"]) == pytest.approx(1000.0 * L**2 / 8)
