@@ -165,7 +165,8 @@ def test_section_forces_along_formula_uniform():
     assert F[0, :, 1] == pytest.approx(10.0 * x[0])
 
 
-def test_truss_bar_simply_supported():
+@pytest.mark.parametrize("bar_model", ["truss", "pinned-beam"])
+def test_truss_bar_simply_supported(bar_model):
     # a pin-ended bar (truss model) under a transverse uniform load and an axial one: the
     # end joints take qL/2 each (simply supported bar), the axial force varies linearly, and
     # the JSON stations of the bar show the simply supported moment qx(L − x)/2
@@ -174,7 +175,8 @@ def test_truss_bar_simply_supported():
     q, p = -400.0, 100.0
     s = s.with_extensions(member_loads=[MemberLoad.uniform(0, (p, q)),
                                         MemberLoad(0, "point", at=0.5, force=(0.0, -50.0))])
-    r = solve_static(s)
+    # the same as a pin-ended beam (--bar-model pinned-beam, 4 elements, ends released)
+    r = solve_static(s, bar_model=bar_model)
     # the free joint 1 takes half of each transverse load; bar 1 (vertical) carries it
     # as axial force.  Nothing but bar 0 holds joint 1 along x, so bar 0's axial force
     # runs from pL at its support to 0 at joint 1: N(x) = p(L − x)
@@ -184,7 +186,8 @@ def test_truss_bar_simply_supported():
     assert r.end_forces[0, 0, 0] == pytest.approx(p * L, rel=1e-12)
     st = static_json(r)["members"]["0"]["stations"]
     x = np.array(st["x"])
-    assert x.tolist() == pytest.approx([0.0, L / 2, L])
+    assert x.tolist() == pytest.approx([0.0, L / 2, L] if bar_model == "truss"
+                                       else [0.0, L / 4, L / 2, 3 * L / 4, L])
     M = -q * x * (L - x) / 2 + 50.0 * np.minimum(x, L - x) / 2
     assert st["Mz"] == pytest.approx(M.tolist(), abs=1e-9)
     assert st["N"] == pytest.approx((p * (L - x)).tolist(), abs=1e-9)
@@ -222,3 +225,41 @@ def test_model_file_member_loads_and_api(tmp_path):
     assert r.reaction[:, 1] == pytest.approx([1500.0, 1500.0])
     doc = r.to_dict()
     assert max(doc["members"]["AB"]["stations"]["Mz"]) == pytest.approx(1000.0 * L**2 / 8)
+
+
+@pytest.mark.parametrize("k", [1, 3])
+def test_point_couple(k):
+    # Roark 8.1 case 3: a couple M0 (counter-clockwise) at a.  Simply supported: reactions
+    # ±M0/L; fixed-fixed at midspan: end moments M0/4 each, reactions ±3M0/(2L) (signs from
+    # statics: R_B L + M_A + M_B + M0 = 0)
+    M0, frac = 600.0, 0.5
+    ss = simply_supported(2).with_extensions(member_loads=[
+        MemberLoad(0, "point", at=0.3, moment=(M0,))])
+    r = solve_static(ss, subdivisions=k)
+    assert r.reactions[:, 1] == pytest.approx([M0 / L, -M0 / L], rel=1e-10)
+    ff = fixed_fixed(2).with_extensions(member_loads=[
+        MemberLoad(0, "point", at=frac, moment=(M0,))])
+    r = solve_static(ff, subdivisions=k)
+    assert r.reactions[:, 2] == pytest.approx([M0 / 4, M0 / 4], rel=1e-10)
+    assert r.reactions[:, 1] == pytest.approx([1.5 * M0 / L, -1.5 * M0 / L], rel=1e-10)
+
+
+def test_buckling_under_distributed_axial_load():
+    # a cantilever column under a uniform axial load q along its length buckles where
+    # J₋₁/₃((2/3)√(qL³/EI)) = 0, (qL)cr = 7.837 EI/L² (Timoshenko & Gere, Theory of Elastic
+    # Stability, §2.10); the element-wise constant axial force of the geometric stiffness
+    # converges at second order: the error falls four-fold when the elements halve
+    from scipy.optimize import brentq
+    from scipy.special import jv
+    from trussfe.fem.buckling import solve_buckling
+    coef = (1.5 * brentq(lambda z: jv(-1.0 / 3.0, z), 1.0, 2.5)) ** 2
+    assert coef == pytest.approx(7.837, abs=5e-4)
+    H, q = 2.0, -1000.0
+    s = build_structure([[0, 0], [0, H]], [(0, 1)], section=SEC, material=MAT,
+                        supports={0: ["x", "y", "rz"]}, is_beam=True)
+    s = s.with_extensions(member_loads=[MemberLoad.uniform(0, (0.0, q))])
+    err = []
+    for k in (16, 32):
+        lam = solve_buckling(s, count=1, subdivisions=k, bar_model="truss").load_factors[0]
+        err.append(abs(lam * abs(q) * H / (coef * E * I / H**2) - 1.0))
+    assert 3.8 < err[0] / err[1] < 4.2 and err[1] < 5e-4, err

@@ -137,3 +137,22 @@ def test_section_keys_and_bad_shear_area():
         with pytest.raises(InputError) as e:
             model_from_dict({**base, "sections": {"b": {"area": 4e-3, "Iz": 8e-6, **bad}}})
         assert e.value.item == item
+
+
+def test_couple_inside_an_element_is_exact():
+    # a couple C at 0.3L of a fixed-fixed Timoshenko beam: with one element it acts inside
+    # the element (fixed-end forces C ψᵢ(ξ)); with ten elements it sits at a node and is a
+    # plain nodal moment.  The exact element gives the same reactions either way, and they
+    # satisfy statics (R_B L + M_A + M_B + C = 0, checked by the equilibrium of every solve)
+    L, A, I, As, C = 1.0, 4e-3, 8e-6, 1e-3, 800.0
+    sec = Section("s", area=A, Iz=I, c=0.05, shear_area_y=As)
+    s = build_structure([[0, 0], [L, 0]], [(0, 1)], section=sec, material=Material("m", E, G),
+                        supports={0: ["x", "y", "rz"], 1: ["x", "y", "rz"]}, is_beam=True)
+    s = s.with_extensions(member_loads=[MemberLoad(0, "point", at=0.3, moment=(C,))])
+    one = solve_static(s, subdivisions=1).reactions
+    ten = solve_static(s, subdivisions=10).reactions
+    assert one == pytest.approx(ten, rel=1e-9, abs=1e-9)
+    # and the shear flexibility changes them (Φ = 0.4 here): not the Euler–Bernoulli values
+    eb = solve_static(s.with_sections({0: Section("e", area=A, Iz=I, c=0.05)}),
+                      subdivisions=1).reactions
+    assert abs(one[0, 2] - eb[0, 2]) > 1e-3 * abs(eb[0, 2])
