@@ -5,9 +5,7 @@ end load is PL³/3EI + PL/(κGA) (bending plus shear); the fixed-end moments of 
 beam under a point load P at a (b = L − a) are Pab(b + ΦL/2)/(L²(1 + Φ)) and
 Pab(a + ΦL/2)/(L²(1 + Φ)), Φ = 12EI/(κGAL²) (the reactions of the exact two-node element,
 Friedman & Kosmatka 1993); the natural frequencies of a simply supported Timoshenko beam
-without rotary inertia are ω² = EIk⁴/(ρA(1 + EIk²/κGA)), k = nπ/L (the Timoshenko beam
-equations with the rotary-inertia term dropped — trussfe's beam mass has no rotary inertia
-of bending).  Static results are in global equilibrium (tests/conftest.py).
+(shear and rotary inertia) are the roots of a quadratic in ω² (below).  Static results are in global equilibrium (tests/conftest.py).
 """
 import math
 
@@ -92,9 +90,22 @@ def test_simply_supported_uniform_timoshenko():
                                 rel=1e-10)
 
 
+def timoshenko_frequency(n, L, E, G, kappa, rho, A, I):
+    """The bending frequency (Hz) of mode n of a simply supported Timoshenko beam: the lower
+    root of det [[κGAk² − ρAω², −κGAk], [−κGAk, EIk² + κGA − ρIω²]] = 0, k = nπ/L (the
+    Timoshenko beam equations with w = W sin kx, ψ = Ψ cos kx)."""
+    k = n * math.pi / L
+    kG = kappa * G * A
+    a = rho * A * rho * I
+    b = -(rho * A * (E * I * k**2 + kG) + rho * I * kG * k**2)
+    c = kG * k**2 * (E * I * k**2 + kG) - (kG * k) ** 2
+    return math.sqrt((-b - math.sqrt(b * b - 4 * a * c)) / (2 * a)) / (2 * math.pi)
+
+
 def test_deep_beam_frequencies():
-    # a simply supported deep beam, L/h = 4: shear lowers the bending frequencies; FE
-    # against the closed form without rotary inertia (module notes)
+    # a simply supported deep beam, L/h = 4: shear and rotary inertia lower the bending
+    # frequencies well below Euler–Bernoulli's; FE (consistent Timoshenko mass) against the
+    # closed form of the module notes
     L, h, rho = 1.0, 0.25, 7850.0
     A, I = h * h, h**4 / 12
     kappa = 5.0 / 6.0
@@ -103,20 +114,38 @@ def test_deep_beam_frequencies():
     s = build_structure([[0, 0], [L, 0]], [(0, 1)], section=sec, material=mat,
                         supports={0: ["x", "y"], 1: ["y"]}, is_beam=True)
     err = {}
-    for k in (40, 80):
+    for k in (20, 40):
         f = np.sort(solve_modes(s, count=8, subdivisions=k).frequencies_hz)
         for n in (1, 2, 3):
+            fn = timoshenko_frequency(n, L, E, G, kappa, rho, A, I)
             kn = n * math.pi / L
-            w2 = E * I * kn**4 / (rho * A * (1 + E * I * kn**2 / (kappa * G * A)))
-            fn = math.sqrt(w2) / (2 * math.pi)
             assert fn < 0.95 * math.sqrt(E * I * kn**4 / (rho * A)) / (2 * math.pi)
             # the bending frequency among the modes (axial ones lie between them)
             err[k, n] = float(np.min(np.abs(f - fn) / fn))
     for n in (1, 2, 3):
-        # the cubic mass beside the exact stiffness converges at second order in h: the
-        # error falls four-fold when the elements halve, to below 2e-4 with 80 of them
-        assert 3.5 < err[40, n] / err[80, n] < 4.5, err
-        assert err[80, n] < 2e-4, err
+        # the element's shape functions tend to linear ones as Φ = 12EI/(κGAh²) grows with
+        # finer elements, so frequencies converge at second order in h: the error falls
+        # four-fold when the elements halve, to below 1.2e-3 (mode 3) with 40 of them
+        assert 3.8 < err[20, n] / err[40, n] < 4.2, err
+        assert err[40, n] < 1.2e-3, err
+
+
+def test_rayleigh_limit_converges_at_fourth_order():
+    # a very large shear area (Φ → 0): the Timoshenko mass is the cubic one plus rotary
+    # inertia ρI ψ², a Rayleigh beam, f = √(EIk⁴/(ρA + ρIk²))/2π (Han, Benaroya & Wei,
+    # "Dynamics of transversely vibrating beams using four engineering theories", J. Sound
+    # Vib. 225, 1999); the cubic elements converge at fourth order
+    L, h, rho = 1.0, 0.25, 7850.0
+    A, I = h * h, h**4 / 12
+    sec = Section("s", area=A, Iz=I, c=h / 2, shear_area_y=1.0e6)
+    s = build_structure([[0, 0], [L, 0]], [(0, 1)], section=sec,
+                        material=Material("m", E, G, density=rho),
+                        supports={0: ["x", "y"], 1: ["y"]}, is_beam=True)
+    k = math.pi / L
+    fr = math.sqrt(E * I * k**4 / (rho * A + rho * I * k**2)) / (2 * math.pi)
+    err = [float(np.min(np.abs(np.sort(solve_modes(s, count=4, subdivisions=n)
+                                       .frequencies_hz) - fr) / fr)) for n in (5, 10)]
+    assert 14.0 < err[0] / err[1] < 18.0 and err[1] < 1e-5, err
 
 
 def test_section_keys_and_bad_shear_area():

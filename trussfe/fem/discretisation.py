@@ -54,7 +54,7 @@ from skfem import Basis, ElementLineHermite, ElementLineP1, MeshLine1, asm
 from ..budget import require
 from ..errors import InputError
 from ..mechanics.geometry import local_axes, member_vectors, unit_vectors
-from ..mechanics.member_loads import shear_parameter
+from ..mechanics.member_loads import deflection_shapes, rotation_shapes, shear_parameter
 from ..mechanics.mass import mass_per_length, twist_inertia_per_length
 from ..mechanics.dof_numbering import frame_members, member_end_rotations, number_dofs
 from ..mechanics.releases import JOINT, OWN
@@ -698,7 +698,57 @@ class FEModel:
                                 0.0)
                 return forms.mass, {"rhoA": rhoJ[mem]}
             return forms.mass, {"rhoA": mass_per_length(s.density, s.area)[mem]}
-        return self._block_local(g, spec)
+        M = self._block_local(g, spec)
+        if g.kind == "frame" and self.timoshenko:
+            M = (M + self._timoshenko_mass_correction(g)).tocsr()
+        return M
+
+    def _timoshenko_mass_correction(self, g: _Group) -> sp.csr_matrix:
+        """Consistent mass of the Timoshenko elements of a frame group, as a correction of
+        the cubic Euler–Bernoulli mass assembled by scikit-fem.
+
+        On an element with Φ > 0 the bending mass is that of the element's own shape
+        functions (:func:`~trussfe.mechanics.member_loads.deflection_shapes`,
+        :func:`~trussfe.mechanics.member_loads.rotation_shapes`): translational inertia
+        ``ρA ∫ N Nᵀ dx`` and rotary inertia ``ρI ∫ ψ ψᵀ dx`` (Friedman & Kosmatka 1993), by
+        5-point Gauss–Legendre quadrature (exact: the integrands are of degree 6).
+        Euler–Bernoulli elements (Φ = 0) keep their mass without rotary inertia.
+        """
+        s = self.structure
+        blocks = []
+        mem = self.element_member[g.elements]
+        h = self.element_length[g.elements]
+        gx, gw = np.polynomial.legendre.leggauss(5)
+        xi, w = 0.5 * (gx + 1.0), 0.5 * gw
+        rhoA = mass_per_length(s.density, s.area)[mem]
+        for f in g.fields:
+            n = f.basis.N
+            if f.name not in ("v", "w"):
+                blocks.append(sp.csr_matrix((n, n)))
+                continue
+            I = (s.Iz if f.name == "v" else s.Iy)[mem]
+            GAs = (s.G * (s.shear_area_y if f.name == "v" else s.shear_area_z))[mem]
+            phi = shear_parameter(s.E[mem] * I, GAs, h)
+            timo = phi > 0
+            if not np.any(timo):
+                blocks.append(sp.csr_matrix((n, n)))
+                continue
+            e = np.flatnonzero(timo)
+            he, pe = h[e, None], phi[e, None]
+            NT = deflection_shapes(xi[None, :], he, pe)                 # (el, q, 4)
+            NH = deflection_shapes(xi[None, :], he, 0.0 * pe)
+            psi = rotation_shapes(xi[None, :], he, pe)
+            wq = (w[None, :] * he)[:, :, None, None]
+            vals = (rhoA[e, None, None] * (wq * (NT[..., :, None] * NT[..., None, :]
+                                                 - NH[..., :, None] * NH[..., None, :])).sum(1)
+                    + (s.density[mem][e] * I[e])[:, None, None]
+                    * (wq * psi[..., :, None] * psi[..., None, :]).sum(1))    # (el, 4, 4)
+            edofs = f.basis.element_dofs.T[e]
+            rows = np.broadcast_to(edofs[:, :, None], vals.shape)
+            cols = np.broadcast_to(edofs[:, None, :], vals.shape)
+            blocks.append(sp.csr_matrix((vals.ravel(), (rows.ravel(), cols.ravel())),
+                                        shape=(n, n)))
+        return sp.block_diag(blocks, format="csr")
 
     def local_geometric_stiffness(self, g: _Group, N: np.ndarray) -> sp.csr_matrix:
         """Block-diagonal local geometric stiffness of one group; ``N`` per global element."""
