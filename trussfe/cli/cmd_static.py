@@ -13,9 +13,6 @@ from .. import api
 from ..model.bar_models import BAR_MODELS
 from ..fem.static import StaticResult
 from ..io.output import write_json
-from ..io.vtk import write_stations
-from ..io.vtk import write_vtu as _write_vtu
-from ..io.vtk_results import static_station_fields
 from . import options as opt
 
 
@@ -40,6 +37,8 @@ def register(subparsers) -> None:
 def write_vtu(path: str | Path, result: StaticResult) -> None:
     """Undeformed mesh with point data ``displacement`` and ``reaction`` and cell data
     ``axial_force``, ``axial_stress``, ``strain``, ``von_mises`` (written atomically)."""
+    from ..io.vtk import write_vtu as _write_vtu    # meshio: only when a VTU is asked for
+
     s = result.structure
     dim = s.dim
     point_data = {"displacement": result.displacements[:, :dim],
@@ -104,6 +103,8 @@ def _main(args: argparse.Namespace) -> int:
         write_vtu(args.vtk, result)
         if np.any(result.fe.is_frame) or result.member_loads is not None:
             # section forces along beams and loaded members: OUT_stations.vtu beside OUT.vtu
+            from ..io.vtk import write_stations       # meshio: only when a VTU is asked for
+            from ..io.vtk_results import static_station_fields
             xi, fields = static_station_fields(result)
             vtk = Path(args.vtk)
             write_stations(vtk.with_name(vtk.stem + "_stations.vtu"), result.structure, xi,
