@@ -122,3 +122,16 @@ def test_model_format_member_load_examples_run(tmp_path, capsys):
     assert toml_text.loads(table_form)["member_loads"][0] == toml_text.loads(
         portal)["member_loads"][1]
     capsys.readouterr()
+
+
+@pytest.mark.parametrize("command", ["simulate", "elastic", "transient", "actuators"])
+def test_motion_analyses_refuse_member_loads(command):
+    """An analysis along a motion applies nodal loads only: a model with member loads is
+    refused in one line, never run without them."""
+    import trussfe
+    from trussfe.errors import InputError
+    from trussfe.model import MemberLoad
+    from trussfe.models import triangular_truss
+    s = triangular_truss().with_extensions(member_loads=[MemberLoad.uniform(0, (0.0, -1.0))])
+    with pytest.raises(InputError, match=f"not by {command}"):
+        getattr(trussfe, command)(s, motion="nope.toml")

@@ -654,7 +654,9 @@ class FEModel:
         Euler–Bernoulli bending stiffness.
 
         The two-node Timoshenko beam stiffness (Przemieniecki, Theory of Matrix Structural
-        Analysis, 1968, ch. 5) in the DOFs ``[v_a, v'_a, v_b, v'_b]``,
+        Analysis, 1968, ch. 5) in the DOFs ``[v_a, ψ_a, v_b, ψ_b]`` (end deflections and
+        section rotations: the element's rotation DOFs are the section rotations, which a
+        rigid joint shares),
 
         .. math:: K = \\frac{EI}{(1 + Φ) h³} \\begin{bmatrix} 12 & 6h & −12 & 6h \\\\
                   6h & (4 + Φ)h² & −6h & (2 − Φ)h² \\\\ −12 & −6h & 12 & −6h \\\\

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from ..mechanics.member_loads import (linear_load_bending, linear_load_p1, point_load_bending,
+from ..mechanics.member_loads import (AT_STATION, linear_load_bending, linear_load_p1, point_load_bending,
                                       point_load_p1, section_forces_along,
                                       shear_parameter)
 from ..model.member_loads import MemberLoad, load_arrays
@@ -211,15 +211,19 @@ def loaded_member_stations(fe: FEModel, v: MemberLoadVectors, station_x: np.ndar
     """
     members, row = np.unique(v.member, return_inverse=True)
     L = fe.structure.lengths()[members]
-    cols = []
-    for r, i in enumerate(members):
-        here = station_x[i][np.isfinite(station_x[i])]
-        extra = v.at[(row == r) & v.point]
-        cols.append(np.unique(np.concatenate([here, extra])))
-    t = max((c.size for c in cols), default=0)
-    x = np.full((members.size, t), np.nan)
-    for r, c in enumerate(cols):
-        x[r, :c.size] = c
+    # the FE stations of each loaded member and the positions of its point loads, one row
+    # per member: sorted (NaN last), a position that is already a station dropped
+    prow = row[v.point]
+    order = np.argsort(prow, kind="stable")
+    count = np.bincount(prow, minlength=members.size)
+    rank = np.arange(prow.size) - np.repeat(np.cumsum(count) - count, count)
+    extra = np.full((members.size, int(count.max(initial=0))), np.nan)
+    extra[prow[order], rank] = v.at[v.point][order]
+    x = np.sort(np.concatenate([station_x[members], extra], axis=1), axis=1)
+    same = np.abs(np.diff(x, axis=1)) <= AT_STATION * L[:, None]
+    x[:, 1:][same] = np.nan
+    x = np.sort(x, axis=1)
+    x = x[:, : int(np.isfinite(x).sum(axis=1).max(initial=0))]
     F = section_forces_along(x, L, section_forces[members, 0], row, v.point, v.q1, v.q2,
                              v.at, v.F, v.C)
     F[~np.isfinite(x)] = np.nan

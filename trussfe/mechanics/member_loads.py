@@ -10,8 +10,9 @@ Axial displacement, twist and — for a pin-ended bar — the transverse displac
 (P1): ``N = [1 − ξ, ξ]``.  The end loads of a load on a P1 field are those of a simply
 supported member: the statically equivalent reactions.
 
-Bending deflection (with DOFs ``[v_a, v'_a, v_b, v'_b]``) uses the shape functions of the
-two-node shear-deformable (Timoshenko) beam with shear parameter
+Bending deflection (with DOFs ``[v_a, ψ_a, v_b, ψ_b]``: end deflections and section
+rotations, ``ψ = v'`` for ``Φ = 0``) uses the shape functions of the two-node
+shear-deformable (Timoshenko) beam with shear parameter
 ``Φ = 12 EI / (κGA h²)`` (Friedman & Kosmatka 1993, "An improved two-node Timoshenko beam
 finite element", Computers & Structures 47); ``Φ = 0`` gives the cubic Hermite
 functions of the Euler–Bernoulli beam:
@@ -45,8 +46,9 @@ for ``Φ = 0`` and ``q_a = q_b = q``: ``qh/2`` and ``±qh²/12``; for a triangul
 Strain, 7th ed., Table 8.1 case 2).  A point force ``P`` at ``ξ``: ``P N_i(ξ)`` — for
 ``Φ = 0`` the end moments ``Pab²/h²`` and ``−Pa²b/h²`` with ``a = ξh``, ``b = h − a`` (Roark
 Table 8.1 case 1).  A couple ``C`` at ``ξ``: ``C ψ_i(ξ)``.  On a P1 field: ``h(2q_a + q_b)/6``,
-``h(q_a + 2q_b)/6``; ``P(1 − ξ), Pξ``; ``∓C/h``.  ``M`` here is the load on the DOF ``v'``
-(the rotation about z in the x–y plane; about y, ``θy = −w'``, the sign changes).
+``h(q_a + 2q_b)/6``; ``P(1 − ξ), Pξ``; ``∓C/h``.  ``M`` here is the load on the rotation DOF ``ψ``
+of the x–y plane (the rotation about z; in the x–z plane the rotation about y is ``−ψ``, so
+the sign changes).
 
 Section forces along a member
 -----------------------------

@@ -30,7 +30,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -88,6 +88,18 @@ class MemberLoad:
                 raise ValueError("a point load needs F (and/or M)")
         elif not self.q_start or len(self.q_start) != len(self.q_end):
             raise ValueError("a distributed load needs q_start and q_end of equal length")
+
+    def scaled(self, factor: float) -> "MemberLoad":
+        """The same load times ``factor`` (a load case in a combination).
+
+        Examples
+        --------
+        >>> MemberLoad.uniform(0, (0.0, -2.0)).scaled(1.5).q_end
+        (0.0, -3.0)
+        """
+        f = float(factor)
+        return replace(self, **{k: tuple(f * v for v in getattr(self, k))
+                                for k in ("q_start", "q_end", "force", "moment")})
 
     @classmethod
     def uniform(cls, member: int, q: Sequence[float], axes: str = "global") -> "MemberLoad":
