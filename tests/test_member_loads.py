@@ -263,3 +263,65 @@ def test_buckling_under_distributed_axial_load():
         lam = solve_buckling(s, count=1, subdivisions=k, bar_model="truss").load_factors[0]
         err.append(abs(lam * abs(q) * H / (coef * E * I / H**2) - 1.0))
     assert 3.8 < err[0] / err[1] < 4.2 and err[1] < 5e-4, err
+
+
+def test_load_cases_superpose_through_the_plug_in_points():
+    # linear statics: the response to 1.35·(case 1) + 1.5·(case 2) is the factored sum of
+    # the cases' responses (superposition) — through solve_static(member_loads=...), with
+    # MemberLoad.scaled, and through member_load_vector added to a case's own load vector
+    from trussfe.fem.discretisation import discretise
+    s = fixed_fixed(3)
+    c1 = [MemberLoad(0, "trapezoidal", (0.0, 100.0, -300.0), (20.0, 0.0, -100.0))]
+    c2 = [MemberLoad(0, "point", at=0.37, force=(0.0, 50.0, -80.0), moment=(3.0, 0.0, 7.0),
+                     axes="local")]
+    fe = discretise(s, subdivisions=3)
+    r1 = solve_static(s, fe=fe, member_loads=c1)
+    r2 = solve_static(s, fe=fe, member_loads=c2)
+    combo = [ld.scaled(1.35) for ld in c1] + [ld.scaled(1.5) for ld in c2]
+    rc = solve_static(s, fe=fe, member_loads=combo)
+    for name in ("u", "reactions", "end_forces", "section_forces"):
+        assert getattr(rc, name) == pytest.approx(
+            1.35 * getattr(r1, name) + 1.5 * getattr(r2, name), rel=1e-10, abs=1e-9)
+    v = member_load_vector(fe, combo)
+    f = fe.load_vector() + v.global_vector
+    assert f == pytest.approx(rc.f, rel=1e-12, abs=1e-12)
+    fel = fe.element_forces(rc.u, [sw + ml for sw, ml in
+                                   zip(fe.element_self_weight_local(), v.local)])
+    from trussfe.fem.static import section_forces
+    assert section_forces(fe, rc.u, fel)[1] == pytest.approx(rc.section_forces, rel=1e-12,
+                                                             abs=1e-9)
+    assert solve_static(s, fe=fe, member_loads=()).reactions == pytest.approx(
+        np.zeros_like(rc.reactions))
+
+
+@pytest.mark.parametrize("k", [1, 4])
+def test_torque_on_a_shaft_fixed_at_both_ends(k):
+    # a torque T at a on a shaft fixed at both ends: reactions T·b/L and T·a/L, the twist
+    # under the load T·a·b/(GJ L) (Gere & Timoshenko, Mechanics of Materials, statically
+    # indeterminate torsion); here in member axes, inside an element for both k
+    T, frac = 120.0, 0.3
+    a, b = frac * L, (1 - frac) * L
+    s = fixed_fixed(3).with_extensions(member_loads=[
+        MemberLoad(0, "point", at=frac, moment=(T, 0.0, 0.0), axes="local")])
+    r = solve_static(s, subdivisions=k)
+    assert r.reactions[:, 3] == pytest.approx([-T * b / L, -T * a / L], rel=1e-10)
+    st = static_json(r)["members"]["0"]["stations"]
+    i = st["x"].index(pytest.approx(a))
+    assert st["T"][i - 1 if k == 4 else 0] == pytest.approx(T * b / L, rel=1e-10)
+    assert st["T"][-1] == pytest.approx(-T * a / L, rel=1e-10)
+
+
+def test_couple_on_a_pin_ended_bar():
+    # a couple M0 on a pin-ended bar (truss model): its end joints take the reactions of a
+    # simply supported member, ±M0/L transverse (statics), and the bar's moment jumps by M0
+    # under the couple (M = R_A x before it, R_A x − M0 after)
+    M0 = 90.0
+    s = build_structure([[0, 0], [L, 0]], [(0, 1)], section=SEC, material=MAT,
+                        supports={0: ["x", "y"], 1: ["x", "y"]})
+    s = s.with_extensions(member_loads=[MemberLoad(0, "point", at=0.4, moment=(M0,))])
+    r = solve_static(s)
+    assert r.reactions[:, 1] == pytest.approx([M0 / L, -M0 / L], rel=1e-12)
+    st = static_json(r)["members"]["0"]["stations"]
+    assert st["x"] == pytest.approx([0.0, 0.4 * L, L])
+    # section convention: Mz(x) = −x·Vy0 − M0 beyond the couple, Vy0 = −R_A
+    assert st["Mz"] == pytest.approx([0.0, 0.4 * L * M0 / L - M0, 0.0], abs=1e-9)

@@ -185,3 +185,18 @@ def test_couple_inside_an_element_is_exact():
     eb = solve_static(s.with_sections({0: Section("e", area=A, Iz=I, c=0.05)}),
                       subdivisions=1).reactions
     assert abs(one[0, 2] - eb[0, 2]) > 1e-3 * abs(eb[0, 2])
+
+
+def test_trapezoidal_load_inside_one_element_is_exact():
+    # the closed-form fixed-end forces of a linearly varying load on a Timoshenko element
+    # (trussfe.mechanics.member_loads) give the same reactions with one element as with
+    # many (each then carrying its own piece of the load): the element is exact
+    L, A, I, As = 1.0, 4e-3, 8e-6, 1e-3
+    sec = Section("s", area=A, Iz=I, c=0.05, shear_area_y=As)
+    s = build_structure([[0, 0], [L, 0]], [(0, 1)], section=sec, material=Material("m", E, G),
+                        supports={0: ["x", "y", "rz"], 1: ["x", "y", "rz"]}, is_beam=True)
+    s = s.with_extensions(member_loads=[MemberLoad(0, "trapezoidal", (0.0, -2.0e3),
+                                                   (0.0, -8.0e3))])
+    one = solve_static(s, subdivisions=1).reactions
+    many = solve_static(s, subdivisions=7).reactions
+    assert one == pytest.approx(many, rel=1e-9)

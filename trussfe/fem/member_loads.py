@@ -147,8 +147,9 @@ def member_load_vector(fe: FEModel, loads: Sequence[MemberLoad]) -> MemberLoadVe
     EI = {"v": s.E * s.Iz, "w": s.E * s.Iy}
     GAs = {"v": s.G * s.shear_area_y, "w": s.G * s.shear_area_z}
     # component of the load and of the couple on each field (w: the couple about y does
-    # work on θy = −w', hence the sign)
-    comp = {"u": (0, None, 0.0), "v": (1, 2, 1.0), "w": (2, 1, -1.0), "theta": (None, 0, 1.0)}
+    # work on θy = −w', hence the sign); the twist field θ takes the torque as its load
+    # (the couple about x does work on θ itself), not as a couple on a slope
+    comp = {"u": (0, None, 0.0), "v": (1, 2, 1.0), "w": (2, 1, -1.0), "theta": (None, None, 0.0)}
     for gi, g in enumerate(fe.groups):
         dsel = group_of[d_el] == gi
         psel = group_of[p_el] == gi
@@ -163,7 +164,8 @@ def member_load_vector(fe: FEModel, loads: Sequence[MemberLoad]) -> MemberLoadVe
             hd, hp = fe.element_length[de], fe.element_length[pe]
             qa_c = qa[dsel, qc] if qc is not None else np.zeros(de.size)
             qb_c = qb[dsel, qc] if qc is not None else np.zeros(de.size)
-            P = F[pts][psel, qc] if qc is not None else np.zeros(pe.size)
+            P = (F[pts][psel, qc] if qc is not None else
+                 C[pts][psel, 0] if fld.name == "theta" else np.zeros(pe.size))
             Cc = sign * C[pts][psel, cc] if cc is not None else np.zeros(pe.size)
             if fld.hermite:
                 mem_d, mem_p = fe.element_member[de], fe.element_member[pe]
