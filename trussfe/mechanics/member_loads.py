@@ -46,7 +46,9 @@ for ``Φ = 0`` and ``q_a = q_b = q``: ``qh/2`` and ``±qh²/12``; for a triangul
 Strain, 7th ed., Table 8.1 case 2).  A point force ``P`` at ``ξ``: ``P N_i(ξ)`` — for
 ``Φ = 0`` the end moments ``Pab²/h²`` and ``−Pa²b/h²`` with ``a = ξh``, ``b = h − a`` (Roark
 Table 8.1 case 1).  A couple ``C`` at ``ξ``: ``C ψ_i(ξ)``.  On a P1 field: ``h(2q_a + q_b)/6``,
-``h(q_a + 2q_b)/6``; ``P(1 − ξ), Pξ``; ``∓C/h``.  ``M`` here is the load on the rotation DOF ``ψ``
+``h(q_a + 2q_b)/6``; ``P(1 − ξ), Pξ``; a couple on the slope of a transverse P1 field (a
+pin-ended bar) ``∓C/h``, while a torque is a load on the twist field itself,
+``T(1 − ξ), Tξ``.  ``M`` here is the load on the rotation DOF ``ψ``
 of the x–y plane (the rotation about z; in the x–z plane the rotation about y is ``−ψ``, so
 the sign changes).
 
