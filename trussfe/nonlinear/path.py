@@ -28,6 +28,8 @@ from __future__ import annotations
 import logging
 from dataclasses import dataclass, field
 
+from typing import Callable
+
 import numpy as np
 
 from ..errors import AnalysisError, InputError, MechanismError
@@ -404,7 +406,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                 branch_step: float = 0.01,
                 max_displacement: float | None = None,
                 max_failures: int | None = None,
-                max_step: float | None = None) -> PathResult:
+                max_step: float | None = None,
+                progress: Callable[[int, int], None] | None = None) -> PathResult:
     """Follow the equilibrium path of a structure under ``λ f``.
 
     Parameters
@@ -446,6 +449,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
     max_step : float, optional
         Largest increment the step control may grow to (default 8 × the first one; the step
         grows by at most 2× per step).
+    progress : callable, optional
+        Called as ``progress(done, total)`` as the run advances (a progress bar).
 
     Returns
     -------
@@ -529,6 +534,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
     rejected = 0
     k = 0
     while k < steps:
+        if progress is not None:
+            progress(k, steps)
         if max_load_factor is not None and lam >= max_load_factor * (1 - 1e-12):
             out.termination = f"reached the maximum load factor {max_load_factor:g}"
             break
