@@ -158,3 +158,16 @@ def test_cli_bad_input_one_line_exit_2(tmp_path, capsys, case):
     lines = err.splitlines()
     assert len(lines) == 1 and lines[0].startswith("trussfe: error: "), err
     assert not (tmp_path / "out.png").exists()
+
+
+@pytest.mark.parametrize("backend", ["matplotlib", "pyvista"])
+def test_member_loads_drawn(tmp_path, backend):
+    """A uniform load along both halves of a simply supported beam is drawn as two
+    dark-magenta arrows labelled with the intensity."""
+    if backend == "pyvista" and plot_backend() != "pyvista":
+        pytest.skip("VTK cannot render off-screen on this machine")
+    model = ROOT / "validation" / "models" / "member_loads_simply_supported.toml"
+    out = tmp_path / "beam.png"
+    trussfe.show(model, out, backend=backend)
+    rgb = _picture(out)
+    assert _has_colour(rgb, (0.545, 0.0, 0.545), tol=0.15) > 100     # darkmagenta

@@ -15,7 +15,8 @@ What is drawn
   are fixed as well (a clamp).
 * Nodal forces as arrows pointing the way the force acts, the largest drawn at
   :data:`LOAD_ARROW` of the model size and the others in proportion, each labelled with its
-  magnitude in N (a nodal moment adds ``M = ... N·m`` to the label).
+  magnitude in N (a nodal moment adds ``M = ... N·m`` to the label); loads along members
+  (``member_loads``) as arrows where they act, labelled with their force or intensity.
 * With displacements in the results, the undeformed model in light grey and the deformed
   shape in colour, magnified so that the largest translation is :data:`DEFORMED_SIZE` of the
   model size unless a scale is given; the magnification is in the title.
@@ -36,6 +37,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..mechanics.euler import member_euler_loads
+from ..mechanics.geometry import local_axes
 from ..model.structure import Structure
 from .output import atomic_path
 from .render_backend import plot_backend
@@ -233,6 +235,9 @@ class _Scene:
     load_nodes: np.ndarray
     load_vectors: np.ndarray               # (k, dim) drawn arrows
     load_labels: list[str]
+    member_load_tips: np.ndarray           # (j, dim) points of action, undeformed
+    member_load_vectors: np.ndarray        # (j, dim) drawn arrows
+    member_load_labels: list[str]
     title: str
 
 
@@ -285,7 +290,9 @@ def _scene(structure: Structure, results: PictureResults | None, colour_by: str 
     fmag = np.linalg.norm(force, axis=1)
     mmag = np.linalg.norm(moment, axis=1) if moment.shape[1] else np.zeros(s.n_nodes)
     loaded = np.flatnonzero((fmag > 0) | (mmag > 0))
-    fmax = float(fmag.max(initial=0.0)) or 1.0
+    point = [np.linalg.norm(ld.force) for ld in (s.extensions.get("member_loads", ()) or ())
+             if ld.kind == "point" and ld.force]
+    fmax = float(max(fmag.max(initial=0.0), *point, 0.0)) or 1.0
     vectors = LOAD_ARROW * size * force[loaded] / fmax
     load_labels = []
     for i in loaded:
@@ -293,6 +300,7 @@ def _scene(structure: Structure, results: PictureResults | None, colour_by: str 
         if mmag[i] > 0:
             parts.append(f"M = {mmag[i]:.4g} N·m")
         load_labels.append(", ".join(parts))
+    tips, mvec, mlabels = _member_loads(s, x0, size, fmax)
     return _Scene(dim=dim, size=size, base=x0, shape=shape,
                   conn=np.asarray(s.connectivity, int), deformed=deformed,
                   colour_by=colour_by, values=values, value_label=label, clim=clim,
@@ -302,7 +310,47 @@ def _scene(structure: Structure, results: PictureResults | None, colour_by: str 
                   supports={"pin": np.flatnonzero(pin), "roller": np.flatnonzero(roller),
                             "clamp": np.flatnonzero(clamp)},
                   load_nodes=loaded, load_vectors=vectors, load_labels=load_labels,
-                  title=title)
+                  member_load_tips=tips, member_load_vectors=mvec,
+                  member_load_labels=mlabels, title=title)
+
+
+def _member_loads(s: Structure, x0: np.ndarray, size: float, fmax: float
+                  ) -> tuple[np.ndarray, np.ndarray, list[str]]:
+    """Arrows of the loads along members (``member_loads``): a point force where it acts, in
+    the scale of the nodal forces; a distributed load at the member middle, drawn at a fixed
+    length in the direction of its mean intensity, labelled with its intensity in N/m."""
+    loads = tuple(s.extensions.get("member_loads", ()) or ())
+    dim = s.dim
+    if not loads:
+        return np.zeros((0, dim)), np.zeros((0, dim)), []
+    rot = local_axes(s) if any(ld.axes == "local" for ld in loads) else None
+    conn = np.asarray(s.connectivity, int)
+    tips, vecs, labels = [], [], []
+    for ld in loads:                      # a handful of loads per model: labels, not a solve
+        a, b = x0[conn[ld.member]]
+        if ld.kind == "point":
+            at = ld.at
+            vec = np.asarray(ld.force, float) if ld.force else np.zeros(dim)
+            length = LOAD_ARROW * size * np.linalg.norm(vec) / fmax
+            parts = [f"F = {np.linalg.norm(vec):.4g} N"] if np.any(vec) else []
+            if ld.moment and np.any(ld.moment):
+                parts.append(f"M = {np.linalg.norm(ld.moment):.4g} N·m")
+            text = ", ".join(parts)
+        else:
+            at = 0.5
+            qs, qe = np.asarray(ld.q_start, float), np.asarray(ld.q_end, float)
+            vec = 0.5 * (qs + qe)
+            length = 0.6 * LOAD_ARROW * size
+            ns, ne = np.linalg.norm(qs), np.linalg.norm(qe)
+            text = (f"q = {ns:.4g} N/m" if np.isclose(ns, ne)
+                    else f"q = {ns:.4g} to {ne:.4g} N/m")
+        if rot is not None and ld.axes == "local":
+            vec = rot[ld.member].T @ vec          # member axes to global
+        norm = np.linalg.norm(vec)
+        tips.append(a + at * (b - a))
+        vecs.append(vec / norm * length if norm > 0 else np.zeros(dim))
+        labels.append(text)
+    return np.array(tips), np.array(vecs), labels
 
 
 #: Support symbols: (matplotlib marker, face colour, legend text).
@@ -310,6 +358,7 @@ _SUPPORT_STYLE = {"pin": ("^", "black", "support: translations fixed"),
                   "roller": ("^", "none", "support: some translations fixed"),
                   "clamp": ("s", "black", "support: clamped (rotations fixed too)")}
 _LOAD_COLOUR = "tab:green"
+_MEMBER_LOAD_COLOUR = "darkmagenta"
 _SECTION_COLOURS = ("tab:blue", "tab:orange", "tab:purple", "tab:brown", "tab:pink",
                     "tab:olive", "tab:cyan", "tab:red", "tab:gray", "navy")
 
@@ -376,7 +425,22 @@ def _mpl_draw(scene: _Scene, out: Path, size: tuple[int, int]) -> None:
                     va="bottom", zorder=7)
         handles.append(Line2D([], [], color=_LOAD_COLOUR, lw=2, marker=">",
                               label="nodal load"))
-    every = np.concatenate([scene.base, scene.shape, pts[scene.load_nodes] - scene.load_vectors])
+    if scene.member_load_labels:
+        tails = scene.member_load_tips - scene.member_load_vectors
+        vec = scene.member_load_vectors
+        if three:
+            ax.quiver(*tails.T, *vec.T, color=_MEMBER_LOAD_COLOUR, linewidth=2,
+                      arrow_length_ratio=0.25)
+        else:
+            ax.quiver(*tails.T, *vec.T, color=_MEMBER_LOAD_COLOUR, angles="xy",
+                      scale_units="xy", scale=1.0, width=0.005, zorder=6)
+        for tail, text in zip(tails, scene.member_load_labels):
+            ax.text(*tail, text, fontsize=9, color=_MEMBER_LOAD_COLOUR, ha="center",
+                    va="bottom", zorder=7)
+        handles.append(Line2D([], [], color=_MEMBER_LOAD_COLOUR, lw=2, marker=">",
+                              label="member load"))
+    every = np.concatenate([scene.base, scene.shape, pts[scene.load_nodes] - scene.load_vectors,
+                            scene.member_load_tips - scene.member_load_vectors])
     lo, hi = every.min(axis=0), every.max(axis=0)
     pad = 0.08 * scene.size
     if three:
@@ -466,6 +530,21 @@ def _pv_draw(scene: _Scene, out: Path, size: tuple[int, int]) -> None:
                                text_color=_LOAD_COLOUR, shape=None, show_points=False,
                                always_visible=True)
             legend.append(["nodal load", _LOAD_COLOUR])
+        if scene.member_load_labels:
+            vec = pad3(scene.member_load_vectors)
+            tails = pad3(scene.member_load_tips) - vec
+            drawn = np.linalg.norm(vec, axis=1) > 0
+            if drawn.any():
+                arrows = pv.PolyData(tails[drawn])
+                arrows["v"] = vec[drawn]
+                arrows = arrows.glyph(orient="v", scale="v", factor=1.0,
+                                      geom=pv.Arrow(tip_length=0.25, tip_radius=0.08,
+                                                    shaft_radius=0.025))
+                p.add_mesh(arrows, color=_MEMBER_LOAD_COLOUR)
+            p.add_point_labels(tails, scene.member_load_labels, font_size=16,
+                               text_color=_MEMBER_LOAD_COLOUR, shape=None, show_points=False,
+                               always_visible=True)
+            legend.append(["member load", _MEMBER_LOAD_COLOUR])
         if scene.node_labels:
             off = 0.02 * scene.size
             p.add_point_labels(pts + [off, off, 0.0], scene.node_labels, font_size=14, text_color="black",
