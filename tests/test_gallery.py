@@ -49,6 +49,14 @@ REFERENCES = {
         "apex bars failed before the mechanism": (4, 0.0,
                                                   "four of six apex bars must go first"),
     },
+    "plot_07_member_loads": {
+        # Roark's Formulas for Stress and Strain, Table 8.1 case 2e: L = 3 m, q = 1 kN/m,
+        # EI = 1.6e6 N·m²
+        "reaction at A, N": (1500.0, 1e-10, "qL/2"),
+        "reaction at B, N": (1500.0, 1e-10, "qL/2"),
+        "midspan deflection, m": (-6.591796875e-4, 1e-10, "5qL⁴/(384EI)"),
+        "midspan moment, N·m": (1125.0, 1e-10, "qL²/8"),
+    },
     "plot_06_mechanism_trace": {
         "mechanisms": (1, 0.0, "Grübler: 2·2 − 3 = 1"),
         "joint 3 position error, m": (0.0, 1e-8, "closed-form circle intersection"),

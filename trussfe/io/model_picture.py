@@ -453,15 +453,17 @@ def _mpl_draw(scene: _Scene, out: Path, size: tuple[int, int]) -> None:
         ax.set_ylabel("y [m]")
         ax.set_zlabel("z [m]")
     else:
+        # a flat model (a beam) still gets room above and below for labels and the legend
+        grow = max(0.0, 0.45 * scene.size - float(hi[1] - lo[1])) / 2
         ax.set_xlim(lo[0] - pad, hi[0] + pad)
-        ax.set_ylim(lo[1] - pad, hi[1] + pad)
+        ax.set_ylim(lo[1] - pad - grow, hi[1] + pad + grow)
         ax.set_aspect("equal")
         ax.set_xlabel("x [m]")
         ax.set_ylabel("y [m]")
         ax.grid(True, color="0.92")
     ax.set_title(scene.title, fontsize=11)
     if handles:
-        ax.legend(handles=handles, loc="upper left", fontsize=8, framealpha=0.85)
+        ax.legend(handles=handles, loc="best", fontsize=8, framealpha=0.85)
     with atomic_path(out) as tmp:
         fig.savefig(tmp, format="png", dpi=100)
 
