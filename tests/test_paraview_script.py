@@ -53,9 +53,14 @@ def pvbatch(tmp_path_factory):
 
 
 def _render(pvbatch, target: Path, out: Path, *extra: str) -> np.ndarray:
-    r = subprocess.run([*pvbatch, str(SCRIPT), str(target), "--png", str(out),
-                        "--size", "640x480", *extra], capture_output=True, text=True,
-                       timeout=600, env={**os.environ})
+    for _attempt in range(3):
+        r = subprocess.run([*pvbatch, str(SCRIPT), str(target), "--png", str(out),
+                            "--size", "640x480", *extra], capture_output=True, text=True,
+                           timeout=600, env={**os.environ})
+        # a virtual X server that is not ready makes ParaView abort while it creates its
+        # render view, before the script has run: start it again (the machine, not the script)
+        if r.returncode == 0 or "vtkPVRenderingCapabilitiesInformation" not in r.stderr:
+            break
     assert r.returncode == 0, r.stderr[-2000:]
     assert out.is_file() and out.stat().st_size > 2000
     rgb = image.imread(str(out))[..., :3]
