@@ -222,6 +222,8 @@ CLI_CASES = [
     ("trace", "mech_fourbar.toml", ["--drive", "2:y", "--step", "0.05", "--steps", "3"],
      {"drive": "2:y", "step": 0.05, "steps": 3}),
     ("postcritical", "postcritical_von_mises.toml", ["--steps", "40"], {"steps": 40}),
+    ("topology", "mech_bennett.toml", [], {}),
+    ("topology", "mech_slider_crank.toml", [], {}),
 ]
 
 

@@ -16,7 +16,7 @@ import inspect
 from types import MappingProxyType
 
 from .along_motion import ElasticResult, TransientResult, elastic, transient
-from .kinematic import MechanismResult, TraceResult, mechanism, trace
+from .kinematic import MechanismResult, TopologyResult, TraceResult, mechanism, topology, trace
 from .linear import BucklingResult, ModesResult, StaticResult, buckling, modes, static
 from .model import ModelLike, as_structure, model_from_dict, read_model
 from .nonlinear_path import PostcriticalResult, postcritical
@@ -27,7 +27,8 @@ from .rigid_body import ActuatorsResult, SimulateResult, actuators, simulate
 ANALYSES = MappingProxyType({
     "static": static, "modes": modes, "buckling": buckling, "simulate": simulate,
     "actuators": actuators, "elastic": elastic, "transient": transient,
-    "mechanism": mechanism, "trace": trace, "postcritical": postcritical})
+    "mechanism": mechanism, "trace": trace, "topology": topology,
+    "postcritical": postcritical})
 
 
 
@@ -52,7 +53,7 @@ def check_options(analysis: str, options) -> None:
 
 __all__ = ["ANALYSES", "ActuatorsResult", "BucklingResult", "ElasticResult",
            "MechanismResult", "ModelLike", "ModesResult", "PostcriticalResult", "Result",
-           "SimulateResult", "StaticResult", "TraceResult", "TransientResult",
+           "SimulateResult", "StaticResult", "TopologyResult", "TraceResult", "TransientResult",
            "actuators", "as_structure", "buckling", "check_options", "elastic",
            "mechanism", "model_from_dict", "modes", "option_names", "postcritical", "read_model", "simulate",
-           "static", "trace", "transient"]
+           "static", "topology", "trace", "transient"]
