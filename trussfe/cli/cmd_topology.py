@@ -36,8 +36,10 @@ def _run(args: argparse.Namespace) -> int:
     c = doc["counts"]
     cycles = ("not enumerated (cycle space of more than 16 dimensions)" if c["cycles"] is None
               else f"{c['cycles']} simple cycle(s)")
+    planar = (f"; node(s) {', '.join(doc['planar_supports'])} fixed in one direction only, "
+              "left free" if doc["planar_supports"] else "")
     sys.stdout.write(
         f"{doc['model']}: {c['joints']} joints, {c['edges']} edges ({len(doc['plates'])} "
         f"plate(s), {len(doc['ground'])} ground joint(s)); tree of {c['tree_edges']} edges, "
-        f"{c['links']} fundamental cycle(s); {cycles}\n")
+        f"{c['links']} fundamental cycle(s); {cycles}{planar}\n")
     return 0

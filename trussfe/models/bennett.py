@@ -22,8 +22,8 @@ of F_k) and ``B_k = A_k + h z_k``, joined by an axis bar; each link k is rigid, 
 of bars between A_k, B_k and A_{k+1}, B_{k+1}.  Nodes A1 B1 A2 B2 A3 B3 A4 B4 (ids "1"–"8");
 20 bars: four axis bars and four per link.  Link 4 (axes 4 and 1) is the ground: its four
 joints are fixed.  The twelve free coordinates of A2, B2, A3, B3 meet fourteen bars, which
-(with the three self-stress states of Bennett's overconstraint) leave one mechanism: the
-rotation of link 1 about axis 1.
+leave one mechanism: the rotation of link 1 about axis 1.  Of the 20 − 11 = 9 states of
+self-stress, three are Bennett's overconstraint and six the bars between fixed joints.
 
 The default proportions: a = 1 m, α = 30°, β = 60° (so b = √3 m), h = 0.6 m, θ₁ = 100°.
 """
