@@ -4,12 +4,12 @@ from __future__ import annotations
 
 import argparse
 import logging
-import sys
 from pathlib import Path
 
 from .. import api
 from ..io.output import write_json
 from . import options as opt
+from .progress import progress_bar
 
 log = logging.getLogger(__name__)
 
@@ -41,8 +41,10 @@ def register(subparsers) -> None:
 def _run(args: argparse.Namespace) -> int:
     from ..rigid.output import write_npz, write_plots, write_vtk
 
-    result = api.simulate(args.model, motion=args.motion, steps=args.steps, scheme=args.scheme,
-                          sections=args.sections, method=args.method, progress=sys.stderr.isatty())
+    with progress_bar("simulate") as tick:
+        result = api.simulate(args.model, motion=args.motion, steps=args.steps,
+                              scheme=args.scheme, sections=args.sections,
+                              method=args.method, progress=tick)
     res = result.solution
     if args.json:
         write_json(args.json, result.to_dict())
