@@ -196,8 +196,9 @@ def holding_voltage(force: float, act: Actuator | None = None) -> float:
     return abs(force) * a.mean_diameter / 2 * ratio * a.resistance / a.torque_constant
 
 
-__all__ = ["actuator_force_variants", "base_simulation_gains", "base_simulation_motor", "m8_force_at_tilt", "slew1", "slew1_motion", "slew1_structure",
-           "holding_voltage", "validation_actuator_gains", "validation_slew1"]
+__all__ = ["actuator_force_variants", "base_simulation_gains", "base_simulation_motor",
+           "m8_force_at_tilt", "slew1", "slew1_motion", "slew1_structure", "holding_voltage",
+           "validation_actuator_gains", "validation_slew1"]
 
 
 #: Section 3.7's motor for the triangular truss: square thread, μ = 0.3, d_m = 0.02 m, the
