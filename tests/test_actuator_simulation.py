@@ -253,3 +253,24 @@ def test_stroke_check_names_the_first_step_out():
     with pytest.raises(InputError, match=r"step 2 \(t = 2 s\): active member 'M7_8' is 1\.1 m "
                                          r"long, short of its stroke 1\.1078-1\.229 m"):
         check_stroke(s, Motion([0.0, 1.0, 2.0], k, L, z, z))
+
+
+@pytest.mark.parametrize("model, motion", [
+    ("double_octahedron_actuators.toml", "slew1_motion.csv"),
+    ("double_octahedron_actuators.toml", "double_octahedron_tilt_rotation.toml"),
+    ("double_octahedron_motion_active.toml", "double_octahedron_motion_slew.toml"),
+    ("triangular_truss_motion_active.toml", "triangular_truss_motion_3s.toml"),
+    ("triangular_truss_motion_active.toml", "triangular_truss_motion_5s.toml"),
+    ("triangular_truss_motion_active.toml", "triangular_truss_motion_10s.toml"),
+])
+def test_shipped_motions_stay_inside_the_stroke(model, motion):
+    """Every shipped motion keeps its shipped model's active members inside their stroke
+    (the prototype's 1.1684 ± 0.0606 m, Lacy section 5.5; the triangle's 2.5-4.1 m, Lacy
+    Table 3.1), overshoot of the third-order model included."""
+    from trussfe.rigid.motion import check_stroke
+    from trussfe.rigid.motion_file import load_motion
+    s = read_model(MESHES / model)
+    m = load_motion(MESHES / motion, s)
+    acts = {a.member: a for a in s.extensions["active_members"]}
+    assert all(np.isfinite(acts[k].min_length) for k in m.members.tolist())
+    check_stroke(s, m)
