@@ -2,8 +2,9 @@
 """Member results of Slewing Experiment 1 (Lacy sections 5.7 and 5.8), reproduced.
 
 The thesis reports, along its Slewing Experiment 1, the largest von Mises stresses of M6 (a
-base-cell longeron), M8 (the leadscrew tube of M7/8) and M19 (a top-plane member), the parts
-of M6's stress (fig. 5.12), and the largest compressions of M8 and M19–M21 (section 5.8).
+base-cell longeron), M8 (the leadscrew tube of M7/8) and M19 (a top-plane member), and the
+largest compressions of M8 and M19–M21 (section 5.8); the parts of M6's stress (fig. 5.12)
+are :mod:`trussfe.studies.lacy_stress_components`'.
 The motion is :func:`trussfe.studies.lacy_actuators.slew1_motion` (the slew rebuilt from the
 text inside the prototype's stroke), the bay the hanging one with its top-plane loads.
 
@@ -17,8 +18,6 @@ Two computations:
 
   - the code's tube, ID 0.63 in (0.016002 m; Table 5.1 prints 0.01600 m) for the area,
     section modulus and weight of every member (Appendix D's 0.62 in gives the tables);
-  - per-axis von Mises in the code's member frames (eqs. 4.75/4.76: the tensile stress plus
-    one moment component, with the shear of that component, the larger of the two);
   - the cantilever of M8 as the code writes it ("To find cantilever forces for Member 8"):
     the force on the leadscrew tube is ``forces(37:39)``, the pin force of member 7 at N4 —
     the active base's end, which carries most of the 3 kg base — and the tube's centre of
@@ -27,7 +26,8 @@ Two computations:
     lever ``l2/2`` for the cantilever force, where ``l2`` is the length of member M2
     (0.889 m, set earlier in the listing) — in Appendix A's triangle code ``l2`` was the
     leadscrew tube's length — instead of ``ls/2`` (0.127 m); it also takes α about b̂1 in
-    that row.  :func:`listing_cantilever` evaluates the code's five equations.
+    that row.  :func:`listing_cantilever` evaluates the code's five equations, in the code's
+    frame of M7/8 (``c7``), and the code's per-axis von Mises stress (eqs. 4.75/4.76).
 
 Neither slip is a modelling convention of the solvers (:mod:`trussfe.mechanics.conventions`):
 they belong to the listing alone, so they live here.
@@ -55,61 +55,27 @@ LISTING_L2 = models.octahedral.LONGERON
 #: Appendix C's leadscrew tube length ``ls``, m.
 TUBE_LENGTH = models.octahedral.ACTIVE_TUBE_LENGTH
 
-# Appendix C's member frames (b̂1, b̂2, b̂3): b̂3 along the member, b̂1/b̂2 from a cross
-# product with a reference direction, member: (start, end, ref_a, ref_b, order).  ``order`` "3r" is
-# b̂2 = unit(b̂3 × r) (u62 = cross(u63, n1p)), "r3" is b̂1 = unit(r × b̂3) (u71 = cross(junk,
-# u73)), "3r1" is b̂1 = unit(b̂3 × r) (u191 = cross(u193, junk)).
-_FRAMES = {"M6": ("N2", "N5", "N3", "N2", "3r"),
-           "M19": ("N7", "N9", "N7", "N8", "3r1"),
-           "M20": ("N8", "N7", "N8", "N9", "3r1"),
-           "M7_8": ("N4", "N5", "N4", "N6", "r3")}
+# Appendix C's frame of M7/8 (``c7``): b̂3 = unit(N5 − N4), b̂1 = unit(unit(N6 − N4) × b̂3),
+# b̂2 = b̂3 × b̂1 (``u73``, ``u71 = cross(junk, u73)``, ``u72``).
 
 
 def _unit(v: np.ndarray) -> np.ndarray:
     return v / np.linalg.norm(v, axis=-1, keepdims=True)
 
 
-def listing_frame(structure: Structure, coords: np.ndarray, member: str) -> np.ndarray:
-    """Appendix C's direction-cosine matrix ``c`` of ``member`` at every step, (nt, 3, 3),
-    rows b̂1, b̂2, b̂3 (``c6 = [u61; u62; u63]`` …)."""
-    a, b, r0, r1, order = _FRAMES[member]
+def listing_frame(structure: Structure, coords: np.ndarray) -> np.ndarray:
+    """Appendix C's direction-cosine matrix ``c7`` of M7/8 at every step, (nt, 3, 3), rows
+    b̂1, b̂2, b̂3."""
     x = lambda n: coords[:, structure.node_index(n)]
-    b3 = _unit(x(b) - x(a))
-    r = _unit(x(r1) - x(r0))
-    if order == "3r":
-        b2 = _unit(np.cross(b3, r))
-        b1 = np.cross(b2, b3)
-    elif order == "r3":
-        b1 = _unit(np.cross(r, b3))
-        b2 = np.cross(b3, b1)
-    else:
-        b1 = _unit(np.cross(b3, r))
-        b2 = np.cross(b3, b1)
-    return np.stack([b1, b2, b3], axis=1)
+    b3 = _unit(x("N5") - x("N4"))
+    b1 = _unit(np.cross(_unit(x("N6") - x("N4")), b3))
+    return np.stack([b1, np.cross(b3, b1), b3], axis=1)
 
 
 def _per_axis(structure: Structure, k: int, N, V1, V2, M1, M2):
     """Per-axis stresses (eqs. 4.75/4.76) of member ``k``'s section."""
     return von_mises(N, V1, V2, M1, M2, structure.area[k], structure.Iy[k], structure.Iy[k],
                      structure.c[k], structure.c[k], True, convention="lacy-per-axis")
-
-
-def midpoint_parts(r: SimulationResult, member: str) -> dict:
-    """Midpoint stresses of ``member`` in Appendix C's frame, every step: ``tensile`` σ_T,
-    ``bending_b1``/``_b2`` (|M·b̂i| c/I), ``shear_b1``/``_b2`` (2|V·b̂i|/A), ``von_mises``
-    (per-axis, eqs. 4.75/4.76).  ``r`` must have one section per member (the midpoint)."""
-    s = r.structure
-    k = s.member_index(member)
-    c = listing_frame(s, r.kinematics.coords, member)
-    V = r.sections.shear[:, k, 0]
-    M = r.sections.moment[:, k, 0]
-    V1, V2 = (np.einsum("ti,ti->t", c[:, j], V) for j in (0, 1))
-    M1, M2 = (np.einsum("ti,ti->t", c[:, j], M) for j in (0, 1))
-    st = _per_axis(s, k, r.sections.tension[:, k, 0], V1, V2, M1, M2)
-    ci = s.c[k] / s.Iy[k]
-    return {"tensile": st.axial, "bending_b1": np.abs(M1) * ci, "bending_b2": np.abs(M2) * ci,
-            "shear_b1": 2 * np.abs(V1) / s.area[k], "shear_b2": 2 * np.abs(V2) / s.area[k],
-            "von_mises": st.s2}
 
 
 def listing_cantilever(r: SimulationResult, *, lever: float = LISTING_L2 / 2,
@@ -139,7 +105,7 @@ def listing_cantilever(r: SimulationResult, *, lever: float = LISTING_L2 / 2,
     kin = r.kinematics
     k = s.member_index("M7_8")
     n4 = s.node_index("N4")
-    c = listing_frame(s, kin.coords, "M7_8")
+    c = listing_frame(s, kin.coords)
     b1, b2, b3 = c[:, 0], c[:, 1], c[:, 2]
     dot = lambda u, v: np.einsum("ti,ti->t", u, v)
     w1, w2 = dot(b1, kin.omega[:, k]), dot(b2, kin.omega[:, k])
@@ -183,28 +149,24 @@ def members_along_slew(top_load: float = models.STATED_LOAD, *, listing: bool = 
     top_load : float
         Vertical load on each of N7–N9, N.
     listing : bool
-        Appendix C's computation (its tube, per-axis stresses in its frames, its M8
-        cantilever; see the module docstring) instead of trussfe's physical one.
+        Appendix C's computation (its tube, its M8 cantilever; see the module docstring)
+        instead of trussfe's physical one.
 
     Returns
     -------
     dict
-        ``M6``/``M19``: ``{"max", "time"}`` of the midpoint von Mises stress (Pa, s);
-        ``M8``: the leadscrew tube's largest stress (physical: over its sections, the
-        cantilever included; listing: at the cantilever as coded); ``M6_parts``: the largest
-        ``tensile``, ``bending_b1``, ``bending_b2``, ``shear_b1``, ``shear_b2`` (Pa, in the
-        code's frame); ``compression``: largest midpoint compression of ``M8`` (the actuator
-        force) and ``M19``–``M21`` (N).
+        ``M8``: ``{"max", "time"}`` of the leadscrew tube's largest von Mises stress (Pa, s;
+        physical: over its seven sections, the cantilever included; listing: at the
+        cantilever as coded); physical only: ``M6``/``M19``, of the midpoint von Mises
+        stress; ``compression``: largest midpoint compression of ``M19``–``M21`` and the
+        largest actuator force on ``M8`` (N).
     """
     s = slew_bay(top_load, LISTING_TUBE if listing else None)
     m = slew1_motion(s, steps=steps)
     r = simulate(s, m, n_sections=1)
     t = r.time
     out: dict = {}
-    parts = midpoint_parts(r, "M6")
     if listing:
-        out["M6"] = _at(parts["von_mises"], t)
-        out["M19"] = _at(midpoint_parts(r, "M19")["von_mises"], t)
         out["M8"] = _at(listing_cantilever(r)["von_mises"], t)
     else:
         vm = r.stresses.von_mises[:, :, 0]
@@ -212,7 +174,6 @@ def members_along_slew(top_load: float = models.STATED_LOAD, *, listing: bool = 
         out["M19"] = _at(vm[:, s.member_index("M19")], t)
         tube = simulate(s, m, n_sections=7, actuators=False)
         out["M8"] = _at(tube.stresses.von_mises[:, s.member_index("M7_8")].max(axis=1), t)
-    out["M6_parts"] = {k: float(np.max(v)) for k, v in parts.items() if k != "von_mises"}
     T = r.sections.tension[:, :, 0]
     out["compression"] = {k: float(-T[:, s.member_index(k)].min())
                           for k in ("M19", "M20", "M21")}
@@ -247,5 +208,4 @@ def validation_slew_members() -> dict:
 
 
 __all__ = ["LISTING_L2", "LISTING_TUBE", "TUBE_LENGTH", "listing_cantilever", "listing_frame",
-           "m8_cantilever_steps", "members_along_slew", "midpoint_parts",
-           "slew_bay", "validation_slew_members"]
+           "m8_cantilever_steps", "members_along_slew", "slew_bay", "validation_slew_members"]
