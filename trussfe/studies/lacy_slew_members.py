@@ -4,8 +4,7 @@
 The thesis reports, along its Slewing Experiment 1, the largest von Mises stresses of M6 (a
 base-cell longeron), M8 (the leadscrew tube of M7/8) and M19 (a top-plane member), and the
 largest compressions of M8 and M19–M21 (section 5.8); the parts of M6's stress (fig. 5.12)
-are :mod:`trussfe.studies.lacy_stress_components`'.
-The motion is :func:`trussfe.studies.lacy_actuators.slew1_motion` (the slew rebuilt from the
+are computed by :mod:`trussfe.studies.lacy_stress_components`.  The motion is :func:`trussfe.studies.lacy_actuators.slew1_motion` (the slew rebuilt from the
 text inside the prototype's stroke), the bay the hanging one with its top-plane loads.
 
 Two computations:
@@ -55,17 +54,14 @@ LISTING_L2 = models.octahedral.LONGERON
 #: Appendix C's leadscrew tube length ``ls``, m.
 TUBE_LENGTH = models.octahedral.ACTIVE_TUBE_LENGTH
 
-# Appendix C's frame of M7/8 (``c7``): b̂3 = unit(N5 − N4), b̂1 = unit(unit(N6 − N4) × b̂3),
-# b̂2 = b̂3 × b̂1 (``u73``, ``u71 = cross(junk, u73)``, ``u72``).
-
-
 def _unit(v: np.ndarray) -> np.ndarray:
     return v / np.linalg.norm(v, axis=-1, keepdims=True)
 
 
 def listing_frame(structure: Structure, coords: np.ndarray) -> np.ndarray:
     """Appendix C's direction-cosine matrix ``c7`` of M7/8 at every step, (nt, 3, 3), rows
-    b̂1, b̂2, b̂3."""
+    b̂1, b̂2, b̂3: b̂3 = unit(N5 − N4), b̂1 = unit(unit(N6 − N4) × b̂3), b̂2 = b̂3 × b̂1
+    (``u73``, ``u71 = cross(junk, u73)``, ``u72``)."""
     x = lambda n: coords[:, structure.node_index(n)]
     b3 = _unit(x("N5") - x("N4"))
     b1 = _unit(np.cross(_unit(x("N6") - x("N4")), b3))
