@@ -152,7 +152,9 @@ def solve_buckling(structure: Structure, count: int = 4, bar_model: str = "pinne
         static = solve_static(structure, bar_model=bar_model, subdivisions=subdivisions,
                               self_weight=self_weight)
     fe = static.fe
-    N = element_axial_force(fe, static.u)
+    # the static result's own element forces: the fixed-end forces of member loads are
+    # subtracted there (element_axial_force(fe, u) would leave them in)
+    N = static.element_axial_force
     fscale = np.abs(static.f).max() if static.f.size else 0.0
     if fscale == 0.0 or np.abs(N).max() <= UNLOADED_TOLERANCE * max(fscale, 1e-300):
         raise AnalysisError(item, "the structure is unloaded (no member carries an axial "
