@@ -33,9 +33,10 @@ REFERENCES = {
         "leadscrew tube max von Mises, Pa": (2.6256e7, 5e-5, "Lacy section 3.3"),
     },
     "plot_03_slew_actuators": {
-        "M7/8 compression at the start, N": (74.63, 1e-2, "Lacy section 5.8"),
-        "M7/8 largest compression, N": (74.63, 1e-2, "Lacy section 5.7"),
-        "M7/8 peak motor voltage, V": (29.0, 0.1, "Lacy section 5.7 (two printed digits)"),
+        "step of the largest M7/8 compression": (0, 0.0, "Lacy section 5.7"),
+        "M7/8 compression decreasing (1 = yes)": (1, 0.0, "Lacy section 5.7, fig. 5.13"),
+        # 18.879 V back emf + 3.175 V armature drop at the 70.90 N start force
+        "M7/8 peak motor voltage, V": (22.054, 5e-3, "Lacy eq. 2.44, closed form"),
     },
     "plot_04_modes_buckling": {
         # f1 = π/(2L²)·√(EI/ρA) for the 2 m tube OD 25.4 mm, ID 22.225 mm, E 71 GPa,
