@@ -155,11 +155,17 @@ def solve_buckling(structure: Structure, count: int = 4, bar_model: str = "pinne
         static = solve_static(structure, bar_model=bar_model, subdivisions=subdivisions,
                               self_weight=self_weight)
     fe = static.fe
-    N = element_axial_force(fe, static.u)
+    # the element forces of the static state as recovered (with the forces the elements
+    # carry themselves: self-weight, the fixed-end forces of imposed strains)
+    N = static.element_axial_force
     fscale = np.abs(static.f).max() if static.f.size else 0.0
+    if fscale == 0.0 and static.reactions.size:
+        # a state of moved supports alone: its reactions give the scale of its forces
+        fscale = np.abs(static.reactions).max()
     if fscale == 0.0 or np.abs(N).max() <= UNLOADED_TOLERANCE * max(fscale, 1e-300):
         raise AnalysisError(item, "the structure is unloaded (no member carries an axial "
-                            "force): linear buckling needs [loads] or gravity to scale")
+                            "force): linear buckling needs [loads], gravity or a load case "
+                            "to scale")
     K = fe.stiffness()
     Kg = fe.geometric_stiffness(N)
     free = fe.free

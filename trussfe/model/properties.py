@@ -17,7 +17,7 @@ from .sections import Material, Section
 
 #: Section attributes spread over the members, and the material ones.
 SECTION_PROPERTIES = ("area", "Iy", "Iz", "J", "c")
-MATERIAL_PROPERTIES = ("E", "G", "density", "yield_strength")
+MATERIAL_PROPERTIES = ("E", "G", "density", "yield_strength", "thermal_expansion")
 
 
 @dataclass(frozen=True, eq=False)
@@ -31,6 +31,8 @@ class MemberProperties:
         distance (m); ``nan`` where the section does not define the value.
     E, G, density, yield_strength : ndarray
         Young's and shear moduli (Pa), density (kg/m³), yield strength (Pa, ``nan`` if unknown).
+    thermal_expansion : ndarray
+        Coefficient of linear thermal expansion, 1/K (``nan`` if unknown).
     """
 
     area: np.ndarray
@@ -42,6 +44,7 @@ class MemberProperties:
     G: np.ndarray
     density: np.ndarray
     yield_strength: np.ndarray
+    thermal_expansion: np.ndarray
 
 
 def object_groups(objs: Sequence[object]) -> tuple[np.ndarray, np.ndarray]:
