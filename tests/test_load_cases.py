@@ -398,3 +398,20 @@ def test_rotary_inertia_at_a_pin_joint_is_refused_by_modes():
                materials={"st": {**STEEL, "density": 7850.0}})
     with pytest.raises(InputError, match=r"masses\.B: acts on rotation rz"):
         trussfe.modes(s, count=1)
+
+
+def test_written_model_keeps_its_cases(tmp_path):
+    """write_model writes [springs], rotary inertia, [load_cases] and [combinations]: the
+    model read back gives the same results case by case."""
+    from trussfe.io.model_writer import write_model
+    s = _frame_with_cases().with_extensions(
+        rotary_inertia=__import__("trussfe.model.node_supports", fromlist=["x"])
+        .RotaryInertia(np.array([[0.0], [0.5], [0.0], [0.0]])))
+    back = trussfe.read_model(write_model(s, tmp_path / "m.toml"))
+    a, b = trussfe.static(s, subdivisions=2), trussfe.static(back, subdivisions=2)
+    assert list(a.cases) == list(b.cases) and list(a.combinations) == list(b.combinations)
+    for name in a.cases:
+        assert_allclose(b.cases[name].displacement, a.cases[name].displacement, rtol=1e-13,
+                        atol=1e-20)
+    assert_allclose(back.extensions["rotary_inertia"].inertia,
+                    s.extensions["rotary_inertia"].inertia)
