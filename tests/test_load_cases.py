@@ -70,18 +70,22 @@ def _three_bar(**tables):
     return s, h, np.cos(th)
 
 
-def test_indeterminate_truss_with_a_member_too_long():
+@pytest.mark.parametrize("bar_model", ["truss", "pinned-beam"])
+def test_indeterminate_truss_with_a_member_too_long(bar_model):
     """Three-bar truss (outer bars at ±θ), middle bar too long by δ.  Force method: the
     self-stress state n = (−1/(2cos θ), 1, −1/(2cos θ)) and compatibility
     Σ n (N L/EA + e0) = 0 give N_mid = −2EAδ cos³θ / (h (1 + 2 cos³θ)) (Timoshenko & Young,
     Theory of Structures, lack of fit)."""
     delta = 0.4e-3
     s, h, c = _three_bar(load_cases={"fit": {"length_error": [{"member": "JM",
-                                                                "delta": delta}]}})
-    r = trussfe.static(s, case="fit")
+                                                                "delta": delta}]}},
+                         section={"area": A, "Iz": 1e-8, "c": 0.01})
+    r = trussfe.static(s, case="fit", bar_model=bar_model, subdivisions=3)
     n_mid = -2 * E * A * delta * c**3 / (h * (1 + 2 * c**3))
     assert_allclose(r.axial_force, [-n_mid / (2 * c), n_mid, -n_mid / (2 * c)], rtol=EXACT)
     # the same lack of fit as an initial strain δ/L
+    if bar_model == "pinned-beam":                       # along the whole member
+        assert_allclose(r.section_forces[1, :, 0], n_mid, rtol=EXACT)
     s2, _, _ = _three_bar(load_cases={"fit": {"initial_strain": [{"member": "JM",
                                                                    "strain": delta / h}]}})
     assert_allclose(trussfe.static(s2, case="fit").axial_force, r.axial_force, rtol=EXACT)
@@ -415,3 +419,40 @@ def test_written_model_keeps_its_cases(tmp_path):
                         atol=1e-20)
     assert_allclose(back.extensions["rotary_inertia"].inertia,
                     s.extensions["rotary_inertia"].inertia)
+
+
+# ------------------------------------------------------------------------- 3-D
+_BOX3 = {"area": A, "Iy": 3.0e-6, "Iz": 3.0e-6, "J": 5.0e-6, "c": 0.05}
+_CLAMP3 = ["x", "y", "z", "rx", "ry", "rz"]
+
+
+def test_prescribed_end_rotation_of_a_clamped_beam_3d():
+    """A 3-D beam clamped at both ends whose end B is turned by θ about z: end moments
+    4EIθ/L at B and 2EIθ/L at A, end shears 6EIθ/L² (slope-deflection equations)."""
+    L, th = 2.5, 2.0e-3
+    s = _model({"A": [0, 0, 0], "B": [L, 0, 0]}, {"AB": ("A", "B", {"type": "beam"})},
+               {"A": _CLAMP3, "B": _CLAMP3}, dim=3, section=_BOX3,
+               load_cases={"turn": {"prescribed": {"B": {"rz": th}}}})
+    r = trussfe.static(s, case="turn")
+    EI = E * _BOX3["Iz"]
+    assert_allclose(r.reaction_moment[:, 2], [2 * EI * th / L, 4 * EI * th / L], rtol=EXACT)
+    assert_allclose(r.reaction[:, 1], [6 * EI * th / L**2, -6 * EI * th / L**2], rtol=EXACT)
+    assert_allclose(r.rotation[1], [0.0, 0.0, th], rtol=EXACT, atol=1e-18)
+
+
+def test_rotational_springs_at_a_cantilever_tip_3d():
+    """A 3-D beam clamped at A, its end B held in translation and by rotational springs:
+    under an end torque T the twist is T/(k_x + GJ/L), under an end moment M about y the
+    rotation M/(k_y + 4EI/L) (springs in parallel with the member's end stiffness; 4EI/L is
+    the rotational stiffness of a propped end, slope-deflection)."""
+    L, kx, ky, T, M = 1.5, 2.0e5, 7.0e5, 300.0, -450.0
+    s = _model({"A": [0, 0, 0], "B": [L, 0, 0]}, {"AB": ("A", "B", {"type": "beam"})},
+               {"A": _CLAMP3, "B": ["x", "y", "z"]}, dim=3, section=_BOX3,
+               springs={"B": {"rx": kx, "ry": ky}},
+               load_cases={"torque": {"loads": {"B": [0, 0, 0, T, M, 0]}}})
+    r = trussfe.static(s, case="torque")
+    G, J, EI = STEEL["G"], _BOX3["J"], E * _BOX3["Iy"]
+    phi = T / (kx + G * J / L)
+    psi = M / (ky + 4 * EI / L)
+    assert_allclose(r.rotation[1, :2], [phi, psi], rtol=EXACT)
+    assert_allclose(r.reaction_moment[1, :2], [-kx * phi, -ky * psi], rtol=EXACT)

@@ -17,7 +17,8 @@ from types import MappingProxyType
 
 from .along_motion import ElasticResult, TransientResult, elastic, transient
 from .kinematic import MechanismResult, TraceResult, mechanism, trace
-from .linear import BucklingResult, ModesResult, StaticResult, buckling, modes, static
+from .linear import (BucklingResult, LoadCasesResult, ModesResult, StaticResult, buckling,
+                     modes, static)
 from .model import ModelLike, as_structure, model_from_dict, read_model
 from .nonlinear_path import PostcriticalResult, postcritical
 from .results import Result
@@ -50,7 +51,7 @@ def check_options(analysis: str, options) -> None:
                                              f"{_suggest(key, known)}")
 
 
-__all__ = ["ANALYSES", "ActuatorsResult", "BucklingResult", "ElasticResult",
+__all__ = ["ANALYSES", "ActuatorsResult", "BucklingResult", "ElasticResult", "LoadCasesResult",
            "MechanismResult", "ModelLike", "ModesResult", "PostcriticalResult", "Result",
            "SimulateResult", "StaticResult", "TraceResult", "TransientResult",
            "actuators", "as_structure", "buckling", "check_options", "elastic",

@@ -99,11 +99,28 @@ class LoadCase:
         return self.prescribed is not None and bool(np.any(self.prescribed))
 
     def subset(self, keep: np.ndarray) -> "LoadCase":
-        """The case on the members ``keep`` (indices) of a variant."""
+        """The case on the members ``keep`` (indices, ascending) of a variant: per-member
+        values follow their members; member loads (records with a ``member`` index) on
+        removed members are dropped, the others renumbered."""
         pick = lambda a: None if a is None else a[keep]
+        new_index = {int(old): new for new, old in enumerate(keep)}
+        member_loads = tuple(replace(ml, member=new_index[ml.member])
+                             for ml in self.member_loads if ml.member in new_index)
         return replace(self, delta_T=pick(self.delta_T),
                        initial_strain=pick(self.initial_strain),
-                       length_error=pick(self.length_error))
+                       length_error=pick(self.length_error), member_loads=member_loads)
+
+    def __repr__(self) -> str:
+        parts = [key for key, present in (
+            ("loads", bool(np.any(self.loads))), ("gravity", self.gravity),
+            ("prescribed", self.has_prescribed),
+            ("temperature", self.delta_T is not None and bool(np.any(self.delta_T))),
+            ("initial_strain", self.initial_strain is not None
+             and bool(np.any(self.initial_strain))),
+            ("length_error", self.length_error is not None
+             and bool(np.any(self.length_error))),
+            ("member_loads", bool(self.member_loads))) if present]
+        return f"LoadCase({self.name!r}: {', '.join(parts) or 'nothing'})"
 
 
 @dataclass(frozen=True)
