@@ -7,9 +7,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from ..fem.buckling import solve_buckling
 from ..linalg.pardiso import available as pardiso_available
-from ..fem.modal import solve_modes
 from ..fem.load_cases import load_cases_json, solve_load_cases
 from ..fem.static import solve_static
 from .model import ModelLike, as_structure
@@ -119,6 +117,8 @@ def modes(model: ModelLike, *, count: int | None = None, mass: str = "consistent
         ``frequencies_hz`` (mode,), ``shapes`` (mode, node, dim), ``effective_mass``, …
     """
     structure = as_structure(model)
+    from ..fem.modal import solve_modes         # imported on first use: start-up
+
     return ModesResult(structure, solve_modes(structure, count=count, mass=mass,
                                               bar_model=bar_model, subdivisions=subdivisions))
 
@@ -150,6 +150,8 @@ def buckling(model: ModelLike, *, count: int = 4, bar_model: str = "pinned-beam"
     """
     from ..errors import InputError
     structure = as_structure(model)
+    from ..fem.buckling import solve_buckling   # imported on first use: start-up
+
     if case is not None and combination is not None:
         raise InputError("--combination", "give one of --case and --combination, not both")
     if case is None and combination is None:
