@@ -456,3 +456,42 @@ def test_rotational_springs_at_a_cantilever_tip_3d():
     psi = M / (ky + 4 * EI / L)
     assert_allclose(r.rotation[1, :2], [phi, psi], rtol=EXACT)
     assert_allclose(r.reaction_moment[1, :2], [-kx * phi, -ky * psi], rtol=EXACT)
+
+
+def test_buckling_combination_from_the_command_line(tmp_path):
+    """``trussfe buckling --combination`` on a model file: the JSON names the combination
+    and the load factor is that of the combined state (Euler, as above); without a choice a
+    model with load cases is refused in one line, exit status 2."""
+    p = tmp_path / "col.toml"
+    p.write_text("""\
+[model]
+dimension = 2
+[materials.st]
+E = 2.0e11
+[sections.s]
+area = 1.0e-4
+Iz = 1.0e-8
+c = 0.01
+[nodes]
+A = [0.0, 0.0]
+B = [0.0, 2.0]
+[members]
+AB = { nodes = ["A", "B"], section = "s", material = "st" }
+[supports]
+A = ["x", "y"]
+B = ["x"]
+[load_cases.one]
+loads = { B = [0.0, -1.0] }
+[load_cases.two]
+loads = { B = [0.0, -3.0] }
+[combinations]
+ULS = { one = 1.35, two = 0.5 }
+""")
+    out = tmp_path / "b.json"
+    assert main(["buckling", str(p), "--combination", "ULS", "--count", "1",
+                 "--subdivisions", "8", "--json", str(out)]) == 0
+    doc = json.loads(out.read_text())
+    pe = np.pi**2 * E * 1.0e-8 / 2.0**2
+    assert doc["combination"] == "ULS"
+    assert doc["critical_load_factor"] * (1.35 + 1.5) == pytest.approx(pe, rel=6e-5)
+    assert main(["buckling", str(p)]) == 2
