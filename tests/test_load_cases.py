@@ -495,3 +495,20 @@ ULS = { one = 1.35, two = 0.5 }
     assert doc["combination"] == "ULS"
     assert doc["critical_load_factor"] * (1.35 + 1.5) == pytest.approx(pe, rel=6e-5)
     assert main(["buckling", str(p)]) == 2
+
+
+def test_load_case_data_are_read_only_also_after_pickling():
+    """The case, spring and inertia arrays of a model are read-only, and stay so through
+    pickle and deepcopy (a model is immutable)."""
+    import copy
+    import pickle
+    s = _frame_with_cases()
+    for model in (s, pickle.loads(pickle.dumps(s)), copy.deepcopy(s)):
+        table = model.extensions["load_cases"]
+        arrays = [table.case("settle").prescribed, table.case("heat").delta_T,
+                  table.case("heat").length_error, table.case("wind").loads,
+                  model.extensions["springs"].stiffness]
+        for a in arrays:
+            assert not a.flags.writeable
+            with pytest.raises(ValueError):
+                a[0] = 1.0

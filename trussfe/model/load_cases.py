@@ -87,6 +87,11 @@ class LoadCase:
                                    f"load case {self.name}: {key}"))
         put(self, "member_loads", tuple(self.member_loads))
 
+    def __setstate__(self, state: dict) -> None:
+        # unpickled arrays come back writable: freeze them again (pickle, copy.deepcopy)
+        self.__dict__.update(state)
+        self.__post_init__()
+
     @property
     def has_imposed_strain(self) -> bool:
         """True when the case strains members without load (temperature, lack of fit)."""

@@ -44,6 +44,11 @@ class Springs:
     def __post_init__(self) -> None:
         object.__setattr__(self, "stiffness", _readonly(self.stiffness, "springs"))
 
+    def __setstate__(self, state: dict) -> None:
+        # unpickled arrays come back writable: freeze them again (pickle, copy.deepcopy)
+        self.__dict__.update(state)
+        self.__post_init__()
+
 
 @dataclass(frozen=True, eq=False)
 class RotaryInertia:
@@ -59,3 +64,8 @@ class RotaryInertia:
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "inertia", _readonly(self.inertia, "rotary_inertia"))
+
+    def __setstate__(self, state: dict) -> None:
+        # unpickled arrays come back writable: freeze them again (pickle, copy.deepcopy)
+        self.__dict__.update(state)
+        self.__post_init__()
