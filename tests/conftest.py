@@ -32,7 +32,7 @@ def _solve_static_in_equilibrium(*args, **kwargs):
     bound.apply_defaults()
     a = bound.arguments
     assert_global_equilibrium(result, structure=result.structure, loads=a["loads"],
-                              self_weight=a["self_weight"])
+                              self_weight=a["self_weight"], member_loads=a["member_loads"])
     return result
 
 
@@ -48,14 +48,17 @@ def _check_load_cases(solution):
     for name, result in solution.cases.items():
         case = table.case(name)
         assert_global_equilibrium(result, structure=s, loads=case.loads,
-                                  self_weight=case.gravity, force_scale=_scale(result))
+                                  self_weight=case.gravity, force_scale=_scale(result),
+                                  member_loads=case.member_loads)
     for name, result in solution.combinations.items():
         factors = solution.factors[name]
         loads = sum(f * table.case(c).loads for c, f in factors.items())
         weight = sum(f for c, f in factors.items() if table.case(c).gravity)
+        member_loads = [ml.scaled(f) for c, f in factors.items()
+                        for ml in table.case(c).member_loads]
         assert_global_equilibrium(result, structure=s, loads=loads,
                                   gravity=weight * s.gravity, self_weight=weight != 0,
-                                  force_scale=_scale(result))
+                                  force_scale=_scale(result), member_loads=member_loads)
 
 
 def _scale(result) -> float:

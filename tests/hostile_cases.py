@@ -280,9 +280,12 @@ MODEL_EDITS = [
      "[load_cases.dead]\ngravity = true"),
     ("length error on an unknown member", "[loads]\nB = [0.0, -1000.0]",
      '[load_cases.fit]\nlength_error = [ { member = "XY", delta = 1e-3 } ]'),
-    ("member loads in a case", "[loads]\nB = [0.0, -1000.0]",
-     '[load_cases.p]\nmember_loads = [ { member = "AB", kind = "uniform", '
+    ("member load of a case on a missing member", "[loads]\nB = [0.0, -1000.0]",
+     '[load_cases.p]\nmember_loads = [ { member = "XY", kind = "uniform", '
      'q = [0.0, -800.0] } ]'),
+    ("top-level member loads beside load cases", "[loads]\nB = [0.0, -1000.0]",
+     '[[member_loads]]\nmember = "AB"\nkind = "uniform"\nq = [0.0, -800.0]\n\n'
+     '[load_cases.p]\nloads = { B = [0.0, -1.0] }'),
     ("rotary inertia negative", "[loads]", "[masses]\nB = { mass = 1.0, inertia = -1.0 }"
      "\n\n[loads]"),
 ]

@@ -67,3 +67,20 @@ def test_every_load_case_solve_is_checked_and_springs_count():
     lost.reactions[1:] = 0.0                               # the spring forces dropped
     with pytest.raises(AssertionError):
         assert_global_equilibrium(lost, loads=s.extensions["load_cases"].case("p").loads)
+
+
+def test_the_check_counts_member_loads(equilibrium):
+    """Member loads are applied loads of the check: a frame under a trapezoidal load, a point
+    force and a couple along its members balances with them, and does not without them (or
+    with a load's couple dropped)."""
+    from trussfe.model import MemberLoad
+    s = _frame().with_extensions(member_loads=[
+        MemberLoad(0, "trapezoidal", (0.0, 100.0, -200.0), (50.0, 0.0, -600.0)),
+        MemberLoad(1, "point", at=0.3, force=(10.0, 0.0, -40.0), moment=(0.0, 25.0, 5.0),
+                   axes="local")])
+    r = static.solve_static(s)
+    equilibrium(r)
+    with pytest.raises(AssertionError):
+        equilibrium(r, member_loads=())
+    with pytest.raises(AssertionError):
+        equilibrium(r, member_loads=s.extensions["member_loads"][:1])

@@ -512,3 +512,42 @@ def test_load_case_data_are_read_only_also_after_pickling():
             assert not a.flags.writeable
             with pytest.raises(ValueError):
                 a[0] = 1.0
+
+
+def test_member_loads_in_load_cases():
+    """A member load in a case: a simply supported beam under uniform q has reactions qL/2
+    and midspan moment qL²/8 (statics); a combination of it with a nodal case is their
+    factored sum, and its JSON has the section forces along the loaded member."""
+    L, q = 4.0, -800.0
+    s = _model({"A": [0, 0], "B": [L, 0]}, {"AB": ("A", "B", {"type": "beam"})},
+               {"A": ["x", "y"], "B": ["y"]}, section={"area": A, "Iz": 8e-6, "c": 0.1},
+               load_cases={"floor": {"member_loads": [{"member": "AB", "kind": "uniform",
+                                                        "q": [0.0, q]}]},
+                           "end": {"loads": {"B": [0.0, 0.0, 100.0]}}},
+               combinations={"ULS": {"floor": 1.5, "end": 2.0}})
+    res = trussfe.static(s, subdivisions=4)
+    floor = res.cases["floor"]
+    assert_allclose(floor.reaction[:, 1], [-q * L / 2, -q * L / 2], rtol=EXACT)
+    assert_allclose(abs(floor.section_forces[0, 2, 5]), abs(q) * L**2 / 8, rtol=EXACT)
+    uls = res.combinations["ULS"]
+    total = 1.5 * floor.section_forces + 2.0 * res.cases["end"].section_forces
+    assert_allclose(uls.section_forces, total, rtol=0, atol=1e-12 * np.nanmax(np.abs(total)))
+    doc = res.to_dict()
+    assert "stations" in doc["cases"]["floor"]["members"]["AB"]
+    assert "stations" in doc["combinations"]["ULS"]["members"]["AB"]
+    assert "stations" not in doc["cases"]["end"]["members"]["AB"]
+
+
+def test_written_model_keeps_member_loads_of_its_cases(tmp_path):
+    """A case's member loads survive write_model and read_model (same results)."""
+    from trussfe.io.model_writer import write_model
+    s = _model({"A": [0, 0], "B": [3.0, 0]}, {"AB": ("A", "B", {"type": "beam"})},
+               {"A": ["x", "y", "rz"]}, section={"area": A, "Iz": 8e-6, "c": 0.1},
+               load_cases={"p": {"member_loads": [
+                   {"member": "AB", "kind": "trapezoidal", "q_start": [0.0, -100.0],
+                    "q_end": [0.0, -300.0], "axes": "local"},
+                   {"member": "AB", "kind": "point", "at": 0.4, "F": [10.0, -50.0],
+                    "M": [20.0]}]}})
+    back = trussfe.read_model(write_model(s, tmp_path / "m.toml"))
+    a, b = trussfe.static(s, case="p"), trussfe.static(back, case="p")
+    assert_allclose(b.section_forces, a.section_forces, rtol=1e-13, atol=1e-9)

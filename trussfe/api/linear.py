@@ -21,8 +21,8 @@ SOLVERS = ("auto", "superlu", "pardiso")
 def static(model: ModelLike, *, bar_model: str = "truss", subdivisions: int | None = None,
            solver: str = "auto", case: str | None = None, combination: str | None = None,
            all_cases: bool = False) -> StaticResult | LoadCasesResult:
-    """Linear static analysis under the model's loads and gravity, or its load cases and
-    combinations (``trussfe static``).
+    """Linear static analysis under the model's loads, member loads and gravity, or its load
+    cases and combinations (``trussfe static``).
 
     Parameters
     ----------

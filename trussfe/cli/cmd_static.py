@@ -60,6 +60,19 @@ def write_vtu(path: str | Path, result: StaticResult) -> None:
     _write_vtu(path, s, point_data=point_data, cell_data=cell_data)
 
 
+def write_stations_vtu(path: str | Path, result: StaticResult) -> Path | None:
+    """``OUT_stations.vtu`` beside ``OUT.vtu``: the section forces along beams and loaded
+    members (None, nothing written, for a truss without member loads)."""
+    if not (np.any(result.fe.is_frame) or result.member_loads is not None):
+        return None
+    from ..io.vtk import write_stations       # meshio: only when a VTU is asked for
+    from ..io.vtk_results import static_station_fields
+    xi, fields = static_station_fields(result)
+    vtk = Path(path)
+    return write_stations(vtk.with_name(vtk.stem + "_stations.vtu"), result.structure, xi,
+                          point_data=fields)
+
+
 def write_collection(path: str | Path, solution) -> Path:
     """``OUT.pvd`` listing one ``.vtu`` (as :func:`write_vtu`) per case and combination of a
     :class:`~trussfe.fem.load_cases.LoadCaseSolution`: ``OUT_case_NAME.vtu``,
@@ -83,6 +96,7 @@ def write_collection(path: str | Path, solution) -> Path:
             file = Path(f"{stem}_{kind}_{safe}_{i}.vtu")
         used.add(file)
         write_vtu(file, result)
+        write_stations_vtu(file, result)
         entries.append((i, file.name))
     return write_pvd(stem.with_suffix(".pvd"), entries)
 
@@ -174,6 +188,7 @@ def _main(args: argparse.Namespace) -> int:
         result = res.solution
         if args.vtk:
             write_vtu(args.vtk, result)
+            write_stations_vtu(args.vtk, result)
         text = _table(result)
         if res.selected is not None:
             kind, name = res.selected

@@ -152,8 +152,9 @@ def solve_buckling(structure: Structure, count: int = 4, bar_model: str = "pinne
         static = solve_static(structure, bar_model=bar_model, subdivisions=subdivisions,
                               self_weight=self_weight)
     fe = static.fe
-    # the element forces of the static state as recovered (with the forces the elements
-    # carry themselves: self-weight, the fixed-end forces of imposed strains)
+    # the element forces of the static state as recovered, with the forces the elements carry
+    # themselves subtracted (self-weight, the fixed-end forces of member loads and of imposed
+    # strains; element_axial_force(fe, u) would leave them in)
     N = static.element_axial_force
     fscale = np.abs(static.f).max() if static.f.size else 0.0
     if fscale == 0.0 and static.reactions.size:

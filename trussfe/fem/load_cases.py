@@ -28,6 +28,7 @@ from ..mechanics.imposed_strain import axial_fixed_end_force, imposed_strain
 from ..model.load_cases import Combination, LoadCase, LoadCases, model_load_cases
 from ..model.structure import DOF_NAMES, Structure
 from .discretisation import FEModel, discretise
+from .member_loads import MemberLoadVectors, member_load_vector
 from .static import (SECTION_FORCE_NAMES, LinearSystem, StaticResult, reacting_nodes,
                      static_json)
 
@@ -46,11 +47,14 @@ class CaseLoad:
         (:meth:`FEModel.element_forces` subtracts them from ``K_local u``).
     u_prescribed : ndarray, shape (n_dof,), optional
         Prescribed displacements of the fixed DOFs (None: the supports do not move).
+    member_loads : MemberLoadVectors, optional
+        The case's loads along members (None: none), included in ``f`` and ``f_local``.
     """
 
     f: np.ndarray
     f_local: list[np.ndarray]
     u_prescribed: np.ndarray | None = None
+    member_loads: MemberLoadVectors | None = None
 
 
 def imposed_strain_local(fe: FEModel, case: LoadCase) -> list[np.ndarray] | None:
@@ -82,13 +86,10 @@ def imposed_strain_local(fe: FEModel, case: LoadCase) -> list[np.ndarray] | None
     return out
 
 
-def member_load_local(fe: FEModel, case: LoadCase) -> list[np.ndarray] | None:
-    """Per element group, the local load vectors of the case's loads along members (None
-    when it has none).  Member loads are not supported by this version."""
-    if case.member_loads:
-        raise InputError(f"load_cases.{case.name}.member_loads",
-                         "member loads are not supported")
-    return None
+def member_load_vectors(fe: FEModel, member_loads) -> MemberLoadVectors | None:
+    """The equivalent nodal loads and fixed-end forces of loads along members
+    (:func:`trussfe.fem.member_loads.member_load_vector`); None when there are none."""
+    return member_load_vector(fe, member_loads) if len(member_loads) else None
 
 
 def prescribed_vector(fe: FEModel, case: LoadCase) -> np.ndarray | None:
@@ -127,14 +128,18 @@ def case_load(fe: FEModel, case: LoadCase) -> CaseLoad:
     f = fe.load_vector(self_weight=case.gravity, loads=case.loads)
     f_local = (fe.element_self_weight_local() if case.gravity
                else [np.zeros(g.n_local) for g in fe.groups])
-    for extra in (imposed_strain_local(fe, case), member_load_local(fe, case)):
-        if extra is None:
-            continue
-        for k, (g, fl) in enumerate(zip(fe.groups, extra)):
+    strained = imposed_strain_local(fe, case)
+    if strained is not None:
+        for k, (g, fl) in enumerate(zip(fe.groups, strained)):
             if np.any(fl):
                 f_local[k] = f_local[k] + fl
                 f += g.T.T @ fl                  # the joint loads equivalent to them
-    return CaseLoad(f=f, f_local=f_local, u_prescribed=prescribed_vector(fe, case))
+    mlv = member_load_vectors(fe, case.member_loads)
+    if mlv is not None:
+        f = f + mlv.global_vector
+        f_local = [a + b for a, b in zip(f_local, mlv.local)]
+    return CaseLoad(f=f, f_local=f_local, u_prescribed=prescribed_vector(fe, case),
+                    member_loads=mlv)
 
 
 # ---------------------------------------------------------------------------- envelope
@@ -302,7 +307,8 @@ def solve_load_cases(structure: Structure, cases: Sequence[str] | None = None,
     U, residual = system.solve(F, UP)
     R = system._reactions
     results = {n: system.recover(U[:, j], F[:, j], float(residual[j]), loads[j].f_local,
-                                 R[:, j]) for j, n in enumerate(order)}
+                                 R[:, j], loads[j].member_loads)
+               for j, n in enumerate(order)}
     # combinations: factored sums of the cases (linear), never solved again
     factors = {c.name: dict(c.factors) for c in combos}
     A = LoadCases(cases=tuple(table.case(n) for n in order),
@@ -316,8 +322,11 @@ def solve_load_cases(structure: Structure, cases: Sequence[str] | None = None,
         rhs = f if UP is None else f - system.stiffness() @ (UP @ a)
         r = system.internal_forces(u) - f
         nf, nr = np.linalg.norm(rhs[fe.free]), np.linalg.norm(r[fe.free])
+        # the member loads of the combination (for the section forces along loaded members)
+        scaled = [ml.scaled(a[j]) for j, n in enumerate(order) if a[j] != 0.0
+                  for ml in table.case(n).member_loads]
         combined[combo.name] = system.recover(u, f, float(nr / nf) if nf > 0 else float(nr),
-                                              f_local, R @ a)
+                                              f_local, R @ a, member_load_vectors(fe, scaled))
     return LoadCaseSolution(fe=fe, load_cases=table, cases=results, combinations=combined,
                             factors=factors)
 

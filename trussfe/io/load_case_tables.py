@@ -131,9 +131,10 @@ def parse_mass_entry(value: Any, item: str, dim: int) -> tuple[float, np.ndarray
 
 # ---------------------------------------------------------------------------- cases
 def parse_member_loads(raw: Any, structure: Structure, item: str) -> tuple:
-    """The ``member_loads`` of one case: loads along members.  Not supported by this
-    version: refused in one line."""
-    raise InputError(item, "member loads are not supported")
+    """The ``member_loads`` of one case: loads along members, read as the model's
+    ``member_loads`` array is (:func:`trussfe.io.extension_tables.parse_member_loads`)."""
+    from .extension_tables import parse_member_loads as parse
+    return parse(raw, structure, None, item)
 
 
 def _member_values(raw: Any, structure: Structure, item: str, value_key: str
@@ -266,6 +267,10 @@ def parse_load_cases(data: dict, structure: Structure) -> LoadCases | None:
     if data.get("loads"):
         raise InputError("[loads]", "a model with [load_cases] gives its nodal loads in a "
                                     "case (loads = { NODE = [...] } in [load_cases.NAME])")
+    if "member_loads" in data:
+        raise InputError("member_loads", "a model with [load_cases] gives its member loads "
+                                         "in a case (member_loads = [...] in "
+                                         "[load_cases.NAME])")
     cases = tuple(parse_case(str(k), v, structure) for k, v in raw.items())
     combos = parse_combinations(data["combinations"], cases) if "combinations" in data else ()
     return LoadCases(cases=cases, combinations=combos)

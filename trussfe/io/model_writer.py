@@ -97,9 +97,12 @@ def _unique_names(objs: list, kind: str) -> dict[int, str]:
 
 def _section_table(sec: Section) -> dict:
     if sec.is_tube:
-        return {"outer_diameter": sec.outer_diameter, "inner_diameter": sec.inner_diameter}
-    out = {"area": sec.area}
-    for key in ("Iy", "Iz", "J", "c"):
+        out = {"outer_diameter": sec.outer_diameter, "inner_diameter": sec.inner_diameter}
+        keys = ("shear_area_y", "shear_area_z")
+    else:
+        out = {"area": sec.area}
+        keys = ("Iy", "Iz", "J", "c", "shear_area_y", "shear_area_z")
+    for key in keys:
         v = getattr(sec, key)
         if not math.isnan(v):
             out[key] = v
@@ -161,11 +164,14 @@ def model_toml(structure: Structure, *, mesh: str | None = None, header: str = "
         if s.is_beam[i]:
             d["type"] = "beam"
             rel = [e for e, r in zip(("start", "end"), s.releases[i]) if r]
-            if s.torsion_releases[i].any():          # per-end form: bending and/or torsion
+            axes = s.bending_axis_releases[i]
+            if s.torsion_releases[i].any() or axes.any():   # per-end form
                 d["releases"] = {e: [w for w, r in (("bending", s.releases[i, k]),
+                                                    ("my", axes[k, 0]), ("mz", axes[k, 1]),
                                                     ("torsion", s.torsion_releases[i, k])) if r]
                                  for k, e in enumerate(("start", "end"))
-                                 if s.releases[i, k] or s.torsion_releases[i, k]}
+                                 if s.releases[i, k] or s.torsion_releases[i, k]
+                                 or axes[k].any()}
             elif rel:
                 d["releases"] = rel
         if s.orientation is not None and np.all(np.isfinite(s.orientation[i])):
@@ -230,6 +236,23 @@ def _member_entries(values: np.ndarray | None, member_ids, key: str) -> list[dic
     return [{"member": member_ids[i], key: values[i]} for i in np.flatnonzero(values != 0)]
 
 
+def _member_load_entry(ml, member_ids) -> dict:
+    """One member load (:class:`~trussfe.model.member_loads.MemberLoad`) as its model-file
+    table."""
+    d = {"member": member_ids[ml.member], "kind": ml.kind}
+    if ml.kind == "uniform":
+        d["q"] = list(ml.q_start)
+    elif ml.kind == "trapezoidal":
+        d["q_start"], d["q_end"] = list(ml.q_start), list(ml.q_end)
+    else:
+        d["at"], d["F"] = ml.at, list(ml.force)
+        if ml.moment:
+            d["M"] = list(ml.moment)
+    if ml.axes != "global":
+        d["axes"] = ml.axes
+    return d
+
+
 def _load_case_lines(s: Structure, node_ids) -> list[str]:
     """``[springs]``, ``[load_cases.NAME]`` and ``[combinations]`` of a model."""
     lines: list[str] = []
@@ -244,8 +267,6 @@ def _load_case_lines(s: Structure, node_ids) -> list[str]:
     if table is None:
         return lines
     for case in table.cases:
-        if case.member_loads:
-            log.warning("the member loads of load case %s are not written", case.name)
         lines.append(f"[load_cases.{toml_key(case.name)}]")
         if case.gravity:
             lines.append("gravity = true")
@@ -264,6 +285,10 @@ def _load_case_lines(s: Structure, node_ids) -> list[str]:
             entries = _member_entries(values, s.member_ids, value_key)
             if entries:
                 lines.append(f"{key} = {toml_value(entries)}")
+        if case.member_loads:
+            lines.append("member_loads = "
+                         + toml_value([_member_load_entry(ml, s.member_ids)
+                                       for ml in case.member_loads]))
         lines.append("")
     if table.combinations:
         lines.append("[combinations]")
@@ -291,6 +316,7 @@ def _mesh_groups(s: Structure) -> dict[str, np.ndarray]:
     key = ((sec * (mat.max(initial=0) + 1) + mat) * 2 + s.is_beam) * 4 \
         + s.releases[:, 0] * 2 + s.releases[:, 1]
     key = key * 4 + s.torsion_releases[:, 0] * 2 + s.torsion_releases[:, 1]
+    key = key * 16 + s.bending_axis_releases.reshape(-1, 4) @ np.array([8, 4, 2, 1])
     uniq, first, inverse = np.unique(key, return_index=True, return_inverse=True)
     if len(uniq) == 1:
         return {"default": np.arange(s.n_members)}

@@ -58,9 +58,9 @@ class LoadCase:
     length_error : ndarray, shape (m,), optional
         Stress-free length minus geometric length of each member, m: a member too long by δ,
         or an actuator commanded δ off the length the geometry gives it (``None``: none).
-    member_loads : tuple
-        Loads applied along members in this case (distributed and point loads); empty when the
-        case has none.
+    member_loads : tuple of MemberLoad
+        Loads along members in this case (:mod:`trussfe.model.member_loads`); empty when
+        the case has none.
     """
 
     name: str
