@@ -12,7 +12,8 @@ What is drawn
   :data:`LABEL_LIMIT` nodes plus members; larger models would drown in text).
 * Supports as symbols at their nodes: a filled triangle where every translation is fixed
   (a pin), a hollow triangle where some are (a roller), a filled square where the rotations
-  are fixed as well (a clamp).
+  are fixed as well (a clamp), a hollow diamond (a wire sphere in 3-D views) where a node
+  has an elastic support (``springs``).
 * Nodal forces as arrows pointing the way the force acts, the largest drawn at
   :data:`LOAD_ARROW` of the model size and the others in proportion, each labelled with its
   magnitude in N (a nodal moment adds ``M = ... N·m`` to the label); loads along members
@@ -308,10 +309,19 @@ def _scene(structure: Structure, results: PictureResults | None, colour_by: str 
                   node_labels=[str(n) for n in s.node_ids] if labels else [],
                   member_labels=[str(m) for m in s.member_ids] if labels else [],
                   supports={"pin": np.flatnonzero(pin), "roller": np.flatnonzero(roller),
-                            "clamp": np.flatnonzero(clamp)},
+                            "clamp": np.flatnonzero(clamp),
+                            "spring": np.flatnonzero(_spring_nodes(s))},
                   load_nodes=loaded, load_vectors=vectors, load_labels=load_labels,
                   member_load_tips=tips, member_load_vectors=mvec,
                   member_load_labels=mlabels, title=title)
+
+
+def _spring_nodes(s: Structure) -> np.ndarray:
+    """Nodes with an elastic support (``springs``) on any DOF, as a mask."""
+    springs = s.extensions.get("springs")
+    if springs is None:
+        return np.zeros(s.n_nodes, bool)
+    return np.asarray(springs.stiffness > 0).any(axis=1)
 
 
 def _member_loads(s: Structure, x0: np.ndarray, size: float, fmax: float
@@ -356,7 +366,8 @@ def _member_loads(s: Structure, x0: np.ndarray, size: float, fmax: float
 #: Support symbols: (matplotlib marker, face colour, legend text).
 _SUPPORT_STYLE = {"pin": ("^", "black", "support: translations fixed"),
                   "roller": ("^", "none", "support: some translations fixed"),
-                  "clamp": ("s", "black", "support: clamped (rotations fixed too)")}
+                  "clamp": ("s", "black", "support: clamped (rotations fixed too)"),
+                  "spring": ("D", "none", "elastic support (spring)")}
 _LOAD_COLOUR = "tab:green"
 _MEMBER_LOAD_COLOUR = "darkmagenta"
 _SECTION_COLOURS = ("tab:blue", "tab:orange", "tab:purple", "tab:brown", "tab:pink",
@@ -508,17 +519,19 @@ def _pv_draw(scene: _Scene, out: Path, size: tuple[int, int]) -> None:
             if not idx.size:
                 continue
             src = (pv.Cube(x_length=glyph, y_length=glyph, z_length=glyph) if kind == "clamp"
+                   else pv.Sphere(radius=0.6 * glyph) if kind == "spring"
                    else pv.Cone(direction=(0, 1, 0) if scene.dim == 2 else (0, 0, 1),
                                 height=glyph * 1.3, radius=glyph * 0.7, resolution=3))
             where = pts[idx].copy()
             where[:, 1 if scene.dim == 2 else 2] -= 0.6 * glyph
             glyphs = pv.PolyData(where).glyph(geom=src, orient=False, scale=False)
-            if kind == "roller":
-                p.add_mesh(glyphs, color="white", style="wireframe", line_width=2,
-                           edge_color="black")
+            if kind in ("roller", "spring"):
+                p.add_mesh(glyphs, color="black" if kind == "roller" else "saddlebrown",
+                           style="wireframe", line_width=2)
             else:
                 p.add_mesh(glyphs, color="black")
-            legend.append([_SUPPORT_STYLE[kind][2], "black" if kind != "roller" else "grey"])
+            legend.append([_SUPPORT_STYLE[kind][2], {"roller": "grey", "spring": "saddlebrown"
+                                                     }.get(kind, "black")])
         if scene.load_nodes.size:
             vec = pad3(scene.load_vectors)
             tails = pts[scene.load_nodes] - vec
