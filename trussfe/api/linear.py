@@ -95,7 +95,8 @@ def static(model: ModelLike, *, bar_model: str = "truss", subdivisions: int | No
 
 
 def modes(model: ModelLike, *, count: int | None = None, mass: str = "consistent",
-          bar_model: str = "truss", subdivisions: int | None = None) -> ModesResult:
+          bar_model: str = "truss", subdivisions: int | None = None,
+          mass_from: str | None = None) -> ModesResult:
     """Natural frequencies and mass-normalised mode shapes (``trussfe modes``).
 
     Parameters
@@ -110,6 +111,9 @@ def modes(model: ModelLike, *, count: int | None = None, mass: str = "consistent
         Pinned beams add the members' own bending modes.
     subdivisions : int, optional
         Elements per frame member (default 4).
+    mass_from : str, optional
+        A load case whose nodal loads along gravity add their mass, F·ĝ/|g|, at their nodes
+        (:mod:`trussfe.mechanics.mass_source`): the payload of a case in the modes.
 
     Returns
     -------
@@ -117,10 +121,32 @@ def modes(model: ModelLike, *, count: int | None = None, mass: str = "consistent
         ``frequencies_hz`` (mode,), ``shapes`` (mode, node, dim), ``effective_mass``, …
     """
     structure = as_structure(model)
+    if mass_from is not None:
+        structure = _with_case_masses(structure, mass_from)
     from ..fem.modal import solve_modes         # imported on first use: start-up
 
     return ModesResult(structure, solve_modes(structure, count=count, mass=mass,
                                               bar_model=bar_model, subdivisions=subdivisions))
+
+
+def _with_case_masses(structure, name: str):
+    """The structure with the masses of load case ``name``'s loads along gravity added."""
+    from ..errors import InputError
+    from ..io.model_file import _suggest
+    from ..mechanics.mass_source import masses_from_loads
+    from ..model.load_cases import model_load_cases
+
+    cases = model_load_cases(structure)
+    try:
+        case = cases.case(name)
+    except KeyError:
+        raise InputError("--mass-from", f"no load case '{name}'"
+                         f"{_suggest(name, cases.case_names)}") from None
+    if len(case.member_loads):
+        raise InputError("--mass-from", f"load case '{name}' has member loads; only nodal "
+                                        "loads are turned into masses")
+    added = masses_from_loads(case.loads, structure.gravity, f"load case '{name}'")
+    return structure.with_masses(structure.masses + added)
 
 
 def buckling(model: ModelLike, *, count: int = 4, bar_model: str = "pinned-beam",
