@@ -112,7 +112,7 @@ def modes(model: ModelLike, *, count: int | None = None, mass: str = "consistent
     subdivisions : int, optional
         Elements per frame member (default 4).
     mass_from : str, optional
-        A load case whose nodal loads along gravity add their mass, F·ĝ/|g|, at their nodes
+        A load case whose nodal loads along gravity add their mass, F·ĝ/``|g|``, at their nodes
         (:mod:`trussfe.mechanics.mass_source`): the payload of a case in the modes.
 
     Returns

@@ -3,7 +3,7 @@
 
 A modal analysis of a structure that carries equipment or payload modelled as loads needs that
 payload's mass; commercial codes call this a *mass source*.  The component of each nodal load
-along the gravity direction ĝ is divided by |g|: m_i = (F_i · ĝ) / |g|.  Components across
+along the gravity direction ĝ is divided by ``|g|``: m_i = (F_i · ĝ) / ``|g|``.  Components across
 gravity carry no mass (a wind load is not a weight).  A load against gravity would be a
 negative mass and is refused.  The members' own mass is always in the mass matrix, so a case's
 self-weight (``gravity = true``) adds nothing here.
