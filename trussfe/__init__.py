@@ -11,8 +11,8 @@ has one function per analysis, available here::
     result = trussfe.static(model)          # result.axial_force, result.to_dict(), ...
 
 ``static``, ``modes``, ``buckling``, ``simulate``, ``actuators``, ``elastic``, ``transient``,
-``mechanism``, ``trace``, ``postcritical`` and ``validate`` (:mod:`trussfe.validation`) are
-imported on first use, so that ``import trussfe`` stays light.
+``mechanism``, ``trace``, ``postcritical``, ``validate`` (:mod:`trussfe.validation`) and
+``study`` (:mod:`trussfe.parametric`) are imported on first use, so that ``import trussfe`` stays light.
 """
 from importlib.metadata import PackageNotFoundError, version as _version
 
@@ -32,7 +32,7 @@ _API = ("static", "modes", "buckling", "simulate", "actuators", "elastic", "tran
 
 __all__ = ["AnalysisError", "InputError", "MechanismError", "TrussfeError", "Material",
            "Section", "Structure", "build_structure", "read_model", "__version__",
-           *_API, "validate"]
+           *_API, "validate", "study"]
 
 
 def __getattr__(name: str):
@@ -42,6 +42,9 @@ def __getattr__(name: str):
     if name == "validate":
         from .validation.run import validate
         return validate
+    if name == "study":
+        from .parametric import study
+        return study
     raise AttributeError(f"module 'trussfe' has no attribute '{name}'")
 
 
