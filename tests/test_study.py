@@ -354,3 +354,80 @@ def test_an_unreachable_scheduler_is_one_line(tmp_path, capsys, monkeypatch):
     err = capsys.readouterr().err
     assert status == 2 and err.startswith("trussfe: error: --scheduler: cannot reach"), err
     assert err.count("\n") == 1 and not (tmp_path / "o" / "parts").exists()
+
+
+# -- the shipped studies (examples/), at small size ------------------------------------------
+
+def _example(tmp_path: Path, name: str, *edits: tuple[str, str]) -> Path:
+    text = (EXAMPLES / name).read_text(encoding="utf-8").replace('"../meshes/', f'"{MESHES}/')
+    for old, new in edits:
+        assert old in text, old
+        text = text.replace(old, new)
+    return _write(tmp_path, text, name)
+
+
+def test_shipped_studies_read():
+    for f in sorted(EXAMPLES.glob("*.toml")):
+        assert read_study(f).n_runs > 1, f
+
+
+def test_chain_length_study(tmp_path, cluster):
+    """First frequency and tip deflection of 1-3 bays equal the API's modes and static of
+    the catalogue chain under Lacy's Table 5.2 load; a longer chain is softer and lower."""
+    from trussfe.models import TABLE_LOAD, double_octahedral_chain
+
+    f = _example(tmp_path, "chain_length.toml", ("to = 50", "to = 3"))
+    df = trussfe.study(f, scheduler=cluster)
+    assert list(df.n_bays) == [1, 2, 3] and (df.status == "ok").all()
+    s = double_octahedral_chain(2, tip_load=TABLE_LOAD)
+    assert df.first_frequency[1] == trussfe.modes(s, count=1).frequencies_hz[0]
+    uz = trussfe.static(s).to_dict()["nodes"]["b2.N7"]["displacement"][2]
+    assert df.tip_deflection[1] == uz
+    assert (np.diff(df.first_frequency) < 0).all() and (np.diff(df.tip_deflection) > 0).all()
+
+
+def test_slew_study_feasible_region(tmp_path, cluster):
+    """Peak motor voltage of the Slewing-Experiment-1 slew: above the motors' 25 V at 5.5 s
+    (as Lacy section 5.7 reports for the prototype), within it at 12 s; more payload, more
+    force in M7/8; a run equals the API's simulate of the same model and motion."""
+    from trussfe.rigid.motion_file import motion_from_spec
+
+    f = _example(tmp_path, "slew_duration_payload.toml",
+                 ("from = 1.0, to = 12.0, step = 0.5", "values = [5.5, 12.0]"),
+                 ("from = 0.0, to = 20.0, step = 5.0", "values = [0.0, 20.0]"),
+                 ("steps = 200", "steps = 24"))
+    df = trussfe.study(f, scheduler=cluster)
+    assert (df.status == "ok").all() and len(df) == 4
+    v = df.set_index(["duration", "payload"]).peak_voltage
+    assert v[5.5, 0.0] > 25.0 and v[12.0, 0.0] <= 25.0 and v[12.0, 20.0] <= 25.0
+    F = df.set_index(["duration", "payload"]).peak_M8_force
+    assert F[5.5, 20.0] > F[5.5, 0.0]
+    data = tomllib.loads((MESHES / "double_octahedron_actuators.toml").read_text())
+    data["masses"] = {n: 20.0 * 0.3333333333333333 for n in ("N7", "N8", "N9")}
+    s = trussfe.model_from_dict(data)
+    spec = tomllib.loads((MESHES / "double_octahedron_slew1_rotation.toml").read_text())
+    spec["motion"]["duration"] = 12.0
+    motion = motion_from_spec(spec["motion"], s, MESHES, steps=24)
+    doc = trussfe.simulate(s, motion=motion).to_dict()
+    assert v[12.0, 20.0] == max(a["max_motor_voltage"] for a in doc["actuators"].values())
+
+
+def test_dome_imperfection_study(tmp_path, cluster):
+    """Each Monte Carlo run equals the API's postcritical analysis of the model with the
+    drawn imperfection and critical loads; the dome becomes a mechanism after its first
+    failure, at a load no lower."""
+    f = _example(tmp_path, "dome_imperfection.toml", ("samples = 200", "samples = 3"))
+    df = trussfe.study(f, scheduler=cluster)
+    assert len(df) == 3 and (df.status == "ok").all()
+    assert (df.mechanism_load >= df.first_limit_load).all()
+    assert (df.imperfection >= 0).all() and (df.imperfection <= 0.015).all()
+    r = df.iloc[2]
+    data = tomllib.loads((MESHES / "postcritical_dome.toml").read_text())
+    data["postcritical"]["imperfection"] = r.imperfection
+    for m in ("A1", "A2", "A3", "A5", "A6"):
+        assert 0.9 <= r[m] <= 1.1
+        data["failure"]["members"][m]["critical_load"] *= r[m]
+    doc = trussfe.postcritical(trussfe.model_from_dict(data)).to_dict()
+    mech = [e["load_factor"] for e in doc["events"] if e["kind"] == "mechanism"]
+    assert r.mechanism_load == mech[0]
+    assert r.max_load_factor == doc["max_load_factor"]
