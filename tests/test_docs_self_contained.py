@@ -15,7 +15,7 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 
 #: Where the rule applies (folders and single files, relative to the repository root).
-SCOPE = ("trussfe", "tests", "docs", "validation", "meshes", "benchmarks", "README.md",
+SCOPE = ("trussfe", "tests", "docs", "validation", "meshes", "examples", "benchmarks", "README.md",
          "CHANGELOG.md")
 
 _MD = r"\." + "md"

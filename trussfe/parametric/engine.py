@@ -271,7 +271,10 @@ def run_study(study: Study, folder: str | Path, *, scheduler: str | None = None,
         if runs and runs[0][0] == 0:
             # the first run in this process: a study whose options or outputs do not fit the
             # analysis is refused before any other run starts
-            row = run_one(study, *runs[0], probe=True)
+            try:
+                row = run_one(study, *runs[0], probe=True)
+            except InputError as err:
+                raise err.with_file(study.source) from None
             store.append([row])
             failed += row["status"] != "ok"
             runs = runs[1:]

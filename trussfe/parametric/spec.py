@@ -104,6 +104,7 @@ class Study:
     """A checked study file (:func:`read_study`)."""
 
     file: Path
+    source: str                        # the study file as named (for error lines)
     name: str
     analyses: tuple[str, ...]
     options: dict                      # analysis -> its options (motion resolved to a path)
@@ -230,7 +231,7 @@ def _parse(data: dict, path: Path) -> Study:
     name = head.get("name", path.stem)
     if not isinstance(name, str):
         raise _err("study.name", f"expected a string, got {name!r}")
-    study = Study(file=path.resolve(), name=name, analyses=analyses, options=options,
+    study = Study(file=path.resolve(), source=str(path), name=name, analyses=analyses, options=options,
                   model_file=model_file, model_data=model_data, catalogue=catalogue,
                   catalogue_args=catalogue_args, motion_file=motion_file,
                   motion_data=motion_data, parameters=params, outputs=outputs,
