@@ -161,10 +161,13 @@ def test_draws_depend_on_the_seed_and_the_run_id_only(tmp_path):
 
 # -- running ---------------------------------------------------------------------------------
 
-def test_triangle_study_gives_table_3_2_forces_for_every_draw(tmp_path, cluster):
+def test_triangle_study_gives_table_3_2_forces_for_every_draw(tmp_path, cluster, capsys):
     """The follower force is Lacy's Table 3.2 value scaled by the load, for every sampled E
     and tube (statically determinate); the displacement scales as 1/(E A) exactly."""
-    df = trussfe.study(_write(tmp_path, TRIANGLE), out=tmp_path / "out", scheduler=cluster)
+    df = trussfe.study(_write(tmp_path, TRIANGLE), out=tmp_path / "out", scheduler=cluster,
+                       progress=True)
+    bar = capsys.readouterr().err
+    assert "12/12" in bar and "run" in bar          # the progress bar: done of the total
     assert list(df.run_id) == list(range(12)) and (df.status == "ok").all()
     scale = df["loads.B.1"] / -98.1
     np.testing.assert_allclose(df.N_follower, TABLE_3_2_FOLLOWER * scale, rtol=1e-5)

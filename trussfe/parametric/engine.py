@@ -16,6 +16,7 @@ is resumed only by the study that made it.  At the end the parts become
 """
 from __future__ import annotations
 
+import contextlib
 import json
 import logging
 import math
@@ -24,7 +25,7 @@ import sys
 import time
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, Iterator
 
 from ..errors import InputError, TrussfeError
 from .design import design
@@ -222,9 +223,29 @@ def _client(scheduler: str | None, workers: int | None):
             raise InputError("--scheduler", f"cannot reach a Dask scheduler at "
                                             f"'{scheduler}' ({exc})") from None
     n = workers or os.cpu_count() or 1
-    cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                           dashboard_address=":0", silence_logs=logging.ERROR)
+    with worker_allocator():
+        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                               dashboard_address=":0", silence_logs=logging.ERROR)
     return Client(cluster), cluster
+
+
+#: glibc thresholds of a local cluster's worker processes, set before they start (see
+#: :mod:`trussfe.allocator`): numpy's temporaries of a few MB stay on the heap.  Dask's own
+#: default trims the heap above 64 KiB, which also pins the mmap threshold at 128 KiB, so every
+#: larger temporary is a fresh mapping and a page fault per page.
+#: 32 MiB is the largest mmap threshold every glibc accepts from the environment.
+WORKER_MALLOC = {"MALLOC_TRIM_THRESHOLD_": 2**30, "MALLOC_MMAP_THRESHOLD_": 32 * 2**20}
+
+
+@contextlib.contextmanager
+def worker_allocator() -> Iterator[None]:
+    """Dask's ``distributed.nanny.pre-spawn-environ`` with :data:`WORKER_MALLOC`, for the
+    worker processes started inside the block (a variable set in the environment wins)."""
+    import dask
+
+    with dask.config.set({f"distributed.nanny.pre-spawn-environ.{k}": v
+                          for k, v in WORKER_MALLOC.items()}):
+        yield
 
 
 def run_study(study: Study, folder: str | Path, *, scheduler: str | None = None,
