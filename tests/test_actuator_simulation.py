@@ -143,7 +143,7 @@ def test_actuators_command(tmp_path, capsys):
                  "--json", str(out)]) == 0
     text = capsys.readouterr().out
     assert "M7_8: G_ls 0.00025266 m/rad (self-locking" in text
-    assert "flag: voltage:" in text
+    assert "finding: voltage:" in text
     import json
     d = json.loads(out.read_text())["actuators"]["M7_8"]
     assert_allclose(d["motor_current"]["value"], d["motor_torque"]["value"] / 0.0398, rtol=1e-12)
