@@ -195,7 +195,9 @@ def _triangle_data(D, load, E):
 
 def test_the_table_does_not_depend_on_the_number_of_workers(tmp_path, cluster):
     f = _write(tmp_path, TRIANGLE)
-    two = trussfe.study(f, scheduler=cluster)
+    ticks = []
+    two = trussfe.study(f, scheduler=cluster, progress=lambda d, t: ticks.append((d, t)))
+    assert ticks == [(k, 12) for k in range(1, 13)]
     one = trussfe.study(f, workers=1)
     _assert_same(one, two)
 

@@ -20,7 +20,7 @@ from .spec import Study, read_study
 
 def study(study_file: str | os.PathLike, *, out: str | os.PathLike | None = None,
           scheduler: str | None = None, workers: int | None = None, resume: bool = False,
-          progress: bool = False, plots: bool = False):
+          progress=False, plots: bool = False):
     """Run a study file and return its results table (``trussfe study``).
 
     Parameters
@@ -36,8 +36,9 @@ def study(study_file: str | os.PathLike, *, out: str | os.PathLike | None = None
         Worker processes of the local cluster (default one per core).
     resume : bool
         Continue the study stored in ``out``, running only the missing runs.
-    progress : bool
-        Progress bar on stderr.
+    progress : bool or callable
+        True: a progress bar on stderr (runs done, failed, the time left); a callable is
+        called as ``progress(done, total)`` after every run, as the analyses' ``progress``.
     plots : bool
         Write ``<output>.png`` into ``out``.
 

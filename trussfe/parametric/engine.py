@@ -27,7 +27,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Iterator
 
-from ..errors import InputError, TrussfeError
+from ..errors import InputError
 from .design import design
 from .runner import run_one
 from .spec import Study
@@ -249,7 +249,7 @@ def worker_allocator() -> Iterator[None]:
 
 
 def run_study(study: Study, folder: str | Path, *, scheduler: str | None = None,
-              workers: int | None = None, resume: bool = False, progress: bool = False,
+              workers: int | None = None, resume: bool = False, progress=False,
               ) -> StudyRun:
     """Run the missing runs of ``study`` and gather ``folder``'s parts into the table.
 
@@ -264,8 +264,9 @@ def run_study(study: Study, folder: str | Path, *, scheduler: str | None = None,
         Worker processes of the local cluster (default: one per core).
     resume : bool
         Continue a study whose folder holds runs already; without it such a folder is refused.
-    progress : bool
-        A progress bar on stderr: runs done, failed, the time left.
+    progress : bool or callable
+        True: a progress bar on stderr (runs done of the total, failed, the time left); a
+        callable is called as ``progress(done, total)`` after every run.
 
     Returns
     -------
@@ -277,12 +278,7 @@ def run_study(study: Study, folder: str | Path, *, scheduler: str | None = None,
     store = PartStore(Path(folder), study, resume=resume)
     done = store.done()
     runs = [r for r in design(study) if r[0] not in done]
-    failed = 0
-    bar = None
-    if progress:
-        from tqdm import tqdm
-        bar = tqdm(total=study.n_runs, initial=study.n_runs - len(runs), unit="run",
-                   file=sys.stderr, dynamic_ncols=True, desc=study.name[:30])
+    bar = _Progress(progress, study.n_runs, study.n_runs - len(runs), study.name)
     complete = False
     client = cluster = None
     try:
@@ -297,20 +293,17 @@ def run_study(study: Study, folder: str | Path, *, scheduler: str | None = None,
             except InputError as err:
                 raise err.with_file(study.source) from None
             store.append([row])
-            failed += row["status"] != "ok"
             runs = runs[1:]
-            if bar is not None:
-                bar.update(1)
+            bar.update(row["status"] != "ok")
         if runs:
             if client is None:
                 client, cluster = _client(scheduler, workers)
-            failed = _dispatch(study, runs, store, client, bar, failed)
+            _dispatch(study, runs, store, client, bar)
         complete = True
     except KeyboardInterrupt:
         pass
     finally:
-        if bar is not None:
-            bar.close()
+        bar.close()
         if client is not None:
             client.close()
         if cluster is not None:
@@ -319,7 +312,35 @@ def run_study(study: Study, folder: str | Path, *, scheduler: str | None = None,
                     folder=Path(folder), complete=complete)
 
 
-def _dispatch(study, runs, store, client, bar, failed) -> int:
+class _Progress:
+    """Runs done and failed: a tqdm bar on stderr (``progress=True``) with the count done of
+    the total, the failed runs and the time left, or a ``progress(done, total)`` callback."""
+
+    def __init__(self, progress, total: int, done: int, name: str):
+        self.total, self.done, self.failed = total, done, 0
+        self.callback = progress if callable(progress) else None
+        self.bar = None
+        if progress is True:
+            from tqdm import tqdm
+            self.bar = tqdm(total=total, initial=done, unit="run", file=sys.stderr,
+                            dynamic_ncols=True, desc=name[:30], mininterval=0.5)
+
+    def update(self, failed: bool) -> None:
+        self.done += 1
+        self.failed += bool(failed)
+        if self.bar is not None:
+            if self.failed:
+                self.bar.set_postfix(failed=self.failed, refresh=False)
+            self.bar.update(1)
+        if self.callback is not None:
+            self.callback(self.done, self.total)
+
+    def close(self) -> None:
+        if self.bar is not None:
+            self.bar.close()
+
+
+def _dispatch(study, runs, store, client, bar: _Progress) -> None:
     from dask.distributed import as_completed
     from distributed.scheduler import KilledWorker
 
@@ -341,17 +362,12 @@ def _dispatch(study, runs, store, client, bar, failed) -> int:
                        "error": f"the worker processes running it died ({exc})"[:500]}
             fut.release()
             pending.append(row)
-            failed += row["status"] != "ok"
-            if bar is not None:
-                bar.update(1)
-                if failed:
-                    bar.set_postfix(failed=failed, refresh=False)
+            bar.update(row["status"] != "ok")
             if len(pending) >= FLUSH_ROWS or time.monotonic() - last >= FLUSH_SECONDS:
                 store.append(pending)
                 pending, last = [], time.monotonic()
     finally:
         store.append(pending)       # what finished is kept, also when interrupted
-    return failed
 
 
 def write_results(run: StudyRun, folder: Path, *, plots: bool = True,
@@ -373,5 +389,5 @@ def write_results(run: StudyRun, folder: Path, *, plots: bool = True,
     return doc
 
 
-__all__ = ["PartStore", "StudyRun", "TrussfeError", "require_dask", "run_study", "schema",
+__all__ = ["PartStore", "StudyRun", "require_dask", "run_study", "schema", "worker_allocator",
            "write_results"]

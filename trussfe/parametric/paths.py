@@ -180,14 +180,12 @@ def get_values(data: Any, path: str, where: dict | None = None) -> list:
         star = toks.index("*")
         head = _walk(data, toks[:star], 0, "") if star else [data]
         out: list = []
-        hits = 0
         for container in head:
             items = container.values() if isinstance(container, dict) else container
             for item in items:
                 if isinstance(item, dict) and all(
                         item.get(k) in (v if isinstance(v, list) else [v])
                         for k, v in where.items()):
-                    hits += 1
                     if star == len(toks) - 1:
                         out.append(item)
                     else:

@@ -10,7 +10,6 @@ running an analysis is checked here, so a bad study is refused before any run st
 """
 from __future__ import annotations
 
-import copy
 import hashlib
 import inspect
 import json
@@ -22,7 +21,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import InputError
-from .paths import REDUCTIONS, PathError, set_value, tokens
+from .paths import REDUCTIONS, PathError, tokens
 
 #: Distributions of a Monte Carlo parameter and the numbers each needs.
 DISTRIBUTIONS = {"uniform": ("low", "high"), "normal": ("mean", "std"),
@@ -231,8 +230,8 @@ def _parse(data: dict, path: Path) -> Study:
     name = head.get("name", path.stem)
     if not isinstance(name, str):
         raise _err("study.name", f"expected a string, got {name!r}")
-    study = Study(file=path.resolve(), source=str(path), name=name, analyses=analyses, options=options,
-                  model_file=model_file, model_data=model_data, catalogue=catalogue,
+    study = Study(file=path.resolve(), source=str(path), name=name, analyses=analyses,
+                  options=options, model_file=model_file, model_data=model_data, catalogue=catalogue,
                   catalogue_args=catalogue_args, motion_file=motion_file,
                   motion_data=motion_data, parameters=params, outputs=outputs,
                   samples=samples, seed=seed)
@@ -578,7 +577,3 @@ def _check_inputs(study: Study) -> None:
     values = {p.name: p.representative() for p in study.parameters}
     build_inputs(study, values)
 
-
-def plain_copy(data: Any) -> Any:
-    """A deep copy of TOML data (tables and lists are copied, values shared)."""
-    return copy.deepcopy(data)
