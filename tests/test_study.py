@@ -85,10 +85,12 @@ def cluster():
     """One local Dask cluster of two single-threaded worker processes, shared by the tests
     that do not kill workers (starting a cluster takes seconds)."""
     from dask.distributed import LocalCluster
-    c = LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                     dashboard_address=":0")
-    yield c.scheduler_address
-    c.close()
+    from trussfe.parametric.engine import environment_kept
+    with environment_kept():          # Dask's nanny writes its workers' variables into ours
+        c = LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                         dashboard_address=":0")
+        yield c.scheduler_address
+        c.close()
 
 
 @pytest.fixture(scope="module")
@@ -194,12 +196,16 @@ def _triangle_data(D, load, E):
 
 
 def test_the_table_does_not_depend_on_the_number_of_workers(tmp_path, cluster):
+    """... and a study with its own local cluster leaves this process' environment as it
+    found it."""
     f = _write(tmp_path, TRIANGLE)
+    env = dict(os.environ)
     ticks = []
     two = trussfe.study(f, scheduler=cluster, progress=lambda d, t: ticks.append((d, t)))
     assert ticks == [(k, 12) for k in range(1, 13)]
     one = trussfe.study(f, workers=1)
     _assert_same(one, two)
+    assert dict(os.environ) == env
 
 
 def test_a_failed_run_is_a_row_not_a_failed_study(tmp_path, cluster):

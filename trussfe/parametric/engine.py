@@ -238,6 +238,22 @@ WORKER_MALLOC = {"MALLOC_TRIM_THRESHOLD_": 2**30, "MALLOC_MMAP_THRESHOLD_": 32 *
 
 
 @contextlib.contextmanager
+def environment_kept() -> Iterator[None]:
+    """Restore ``os.environ`` at the end of the block: Dask's nanny writes its workers'
+    variables (``OMP_NUM_THREADS=1``, the heap thresholds, ...) into the environment of the
+    process that starts them, which a study must not leave behind in a program using it."""
+    saved = dict(os.environ)
+    try:
+        yield
+    finally:
+        for key in [k for k in os.environ if k not in saved]:
+            del os.environ[key]
+        for key, value in saved.items():
+            if os.environ.get(key) != value:
+                os.environ[key] = value
+
+
+@contextlib.contextmanager
 def worker_allocator() -> Iterator[None]:
     """Dask's ``distributed.nanny.pre-spawn-environ`` with :data:`WORKER_MALLOC`, for the
     worker processes started inside the block (a variable set in the environment wins)."""
@@ -281,6 +297,8 @@ def run_study(study: Study, folder: str | Path, *, scheduler: str | None = None,
     bar = _Progress(progress, study.n_runs, study.n_runs - len(runs), study.name)
     complete = False
     client = cluster = None
+    kept = environment_kept()
+    kept.__enter__()
     try:
         if scheduler and runs:
             # a scheduler that cannot be reached is found before any run
@@ -308,6 +326,7 @@ def run_study(study: Study, folder: str | Path, *, scheduler: str | None = None,
             client.close()
         if cluster is not None:
             cluster.close()
+        kept.__exit__(None, None, None)
     return StudyRun(study=study, table=store.read(), wall_time=time.perf_counter() - start,
                     folder=Path(folder), complete=complete)
 
