@@ -9,7 +9,7 @@ from typing import Any, Callable, ClassVar
 import numpy as np
 
 from ..model.bar_models import BAR_MODELS
-from .model import ModelLike, as_structure
+from .model import ModelLike, as_structure, refuse_member_loads
 from .options import choice
 from .results import Result
 from .rigid_body import SCHEMES, load_motion_for
@@ -54,7 +54,7 @@ def elastic(model: ModelLike, *, motion=None, steps: int | None = None,
     from ..mechanics.conventions import Conventions
 
     choice("--scheme", scheme, SCHEMES)
-    structure = as_structure(model)
+    structure = refuse_member_loads(as_structure(model), "elastic")
     mot = load_motion_for(structure, motion, steps)
     sim, resp, cmp = simulate_elastic(structure, mot, n_sections=sections,
                                       subdivisions=subdivisions,
@@ -105,7 +105,7 @@ def transient(model: ModelLike, *, motion, steps: int | None = None, dt: float |
 
     choice("--bar-model", bar_model, BAR_MODELS)
     choice("--update", update, UPDATES)
-    structure = as_structure(model)
+    structure = refuse_member_loads(as_structure(model), "transient")
     mot = load_motion_for(structure, motion, steps, required=True)
     return TransientResult(structure, transient_response(
         structure, mot, bar_model=bar_model, k=subdivisions, dt=dt, t_end=t_end,

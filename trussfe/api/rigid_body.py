@@ -10,7 +10,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..model.structure import Structure
-from .model import ModelLike, as_structure, resolve_beside
+from .model import ModelLike, as_structure, refuse_member_loads, resolve_beside
 from .options import choice, positive_int
 from .results import Result
 
@@ -50,7 +50,7 @@ def _simulate(model: ModelLike, motion, steps, scheme: str, sections: int,
     from ..rigid.simulate import simulate as run
 
     choice("--scheme", scheme, SCHEMES)
-    structure = as_structure(model)
+    structure = refuse_member_loads(as_structure(model), "simulate")
     mot = load_motion_for(structure, motion, steps)
     return structure, run(structure, mot, conventions=Conventions.from_scheme(scheme),
                           n_sections=sections, progress=progress)
@@ -115,7 +115,7 @@ def actuators(model: ModelLike, *, motion=None, steps: int | None = None) -> Act
     """
     from ..rigid import actuator as _actuator  # noqa: F401  (registers [actuators])
 
-    structure = as_structure(model)
+    structure = refuse_member_loads(as_structure(model), "actuators")
     if not _actuator.actuators_of(structure):
         raise InputError(structure.source or structure.name or "model",
                          "the model has no [actuators] table: give the leadscrew and motor "

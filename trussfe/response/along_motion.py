@@ -120,6 +120,7 @@ def stacked_structure(structure: Structure, coords: np.ndarray) -> Structure:
         materials=list(structure.materials) * nt,
         is_beam=np.tile(structure.is_beam, nt), releases=np.tile(structure.releases, (nt, 1)),
         torsion_releases=np.tile(structure.torsion_releases, (nt, 1)),
+        bending_axis_releases=np.tile(structure.bending_axis_releases, (nt, 1, 1)),
         supports=np.tile(structure.supports, (nt, 1)),
         loads=np.zeros((nt * n, structure.ndof_node)), masses=np.zeros(nt * n),
         gravity=np.zeros(dim), orientation=np.tile(structure.orientation, (nt, 1)),
