@@ -12,6 +12,10 @@ from ..io.figures import subplots
 from ..io.output import atomic_path
 
 
+#: Panels per row of a plot.
+COLUMNS = 4
+
+
 def _file_name(name: str) -> str:
     return re.sub(r"[^A-Za-z0-9_.-]+", "_", name).strip("._") or "output"
 
@@ -29,8 +33,13 @@ def write_plots(run, folder: Path) -> list[str]:
         panels = len(params) + (1 if study.samples > 1 else 0)
         if panels == 0 or not np.isfinite(y).any():
             continue
-        fig, axes = subplots(1, panels, figsize=(4.0 * panels, 3.4), squeeze=False)
-        for ax, p in zip(axes[0], params):
+        ncols = min(panels, COLUMNS)
+        nrows = -(-panels // ncols)
+        fig, axes = subplots(nrows, ncols, figsize=(4.0 * ncols, 3.2 * nrows), squeeze=False)
+        axes = axes.ravel()
+        for ax in axes[panels:]:
+            ax.set_visible(False)
+        for ax, p in zip(axes, params):
             x = ok[p.name].to_numpy(dtype=float)
             if p.is_grid and study.samples == 1:
                 order = np.argsort(x, kind="stable")
@@ -41,11 +50,11 @@ def write_plots(run, folder: Path) -> list[str]:
             ax.set_ylabel(o.name)
             ax.grid(True, alpha=0.3)
         if study.samples > 1:
-            ax = axes[0][-1]
+            ax = axes[panels - 1]
             ax.hist(y[np.isfinite(y)], bins=min(50, max(5, int(np.sqrt(y.size)))))
             ax.set_xlabel(o.name)
             ax.set_ylabel("runs")
-        fig.suptitle(f"{study.name}: {o.name} ({len(ok)} runs ok of {len(df)})", fontsize=9)
+        fig.suptitle(f"{study.name[:60]}\n{o.name} ({len(ok)} of {len(df)} runs ok)", fontsize=8)
         fig.tight_layout()
         name = f"{_file_name(o.name)}.png"
         with atomic_path(Path(folder) / name) as tmp:
