@@ -442,3 +442,31 @@ def test_dome_imperfection_study(tmp_path, cluster):
     mech = [e["load_factor"] for e in doc["events"] if e["kind"] == "mechanism"]
     assert r.mechanism_load == mech[0]
     assert r.max_load_factor == doc["max_load_factor"]
+
+
+def test_ctrl_c_keeps_the_stored_runs_in_one_line(tmp_path):
+    """Ctrl-C on a terminal (SIGINT to the whole process group, local workers included):
+    exit 130, one line saying how many runs are stored, no traceback from any worker."""
+    f = _write(tmp_path, SLEW.replace("count = 8", "count = 40"))
+    out = tmp_path / "out"
+
+    def default_sigint():                   # as a shell in the foreground would start it
+        os.setsid()
+        signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+    proc = subprocess.Popen([sys.executable, "-m", "trussfe", "study", str(f), "--out",
+                             str(out), "--workers", "1", "--no-plots"], env=ENV,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=default_sigint)
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline and proc.poll() is None:
+        if (out / "parts").is_dir() and len(list((out / "parts").glob("*.parquet"))) >= 2:
+            break
+        time.sleep(0.05)
+    os.killpg(proc.pid, signal.SIGINT)
+    stdout, stderr = proc.communicate(timeout=120)
+    assert proc.returncode == 130, stderr
+    assert stderr.startswith("trussfe: error: interrupted; ") and stderr.count("\n") == 1, \
+        stderr
+    assert "--resume continues the study" in stderr and stdout == ""
+    assert not (out / "results.parquet").exists()

@@ -223,7 +223,7 @@ def _client(scheduler: str | None, workers: int | None):
             raise InputError("--scheduler", f"cannot reach a Dask scheduler at "
                                             f"'{scheduler}' ({exc})") from None
     n = workers or os.cpu_count() or 1
-    with worker_allocator():
+    with worker_allocator(), _interrupts_ignored_by_workers():
         cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
                                dashboard_address=":0", silence_logs=logging.ERROR)
     return Client(cluster), cluster
@@ -235,6 +235,25 @@ def _client(scheduler: str | None, workers: int | None):
 #: larger temporary is a fresh mapping and a page fault per page.
 #: 32 MiB is the largest mmap threshold every glibc accepts from the environment.
 WORKER_MALLOC = {"MALLOC_TRIM_THRESHOLD_": 2**30, "MALLOC_MMAP_THRESHOLD_": 32 * 2**20}
+
+
+@contextlib.contextmanager
+def _interrupts_ignored_by_workers() -> Iterator[None]:
+    """Start worker processes that ignore SIGINT: Ctrl-C on a terminal goes to the whole
+    process group, and the study's own process stops the workers (each would otherwise print
+    a traceback).  A child started while SIGINT is ignored keeps ignoring it; this process's
+    handler is restored as soon as the workers have started (from the main thread only)."""
+    import signal
+    import threading
+
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    old = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, old)
 
 
 @contextlib.contextmanager
