@@ -11,8 +11,9 @@ has one function per analysis, available here::
     result = trussfe.static(model)          # result.axial_force, result.to_dict(), ...
 
 ``static``, ``modes``, ``buckling``, ``simulate``, ``actuators``, ``elastic``, ``transient``,
-``mechanism``, ``trace``, ``postcritical``, ``validate`` (:mod:`trussfe.validation`) and
-``study`` (:mod:`trussfe.parametric`) are imported on first use, so that ``import trussfe`` stays light.
+``mechanism``, ``trace``, ``topology``, ``postcritical``, ``validate``
+(:mod:`trussfe.validation`) and ``study`` (:mod:`trussfe.parametric`) are imported on first
+use, so that ``import trussfe`` stays light.
 """
 from importlib.metadata import PackageNotFoundError, version as _version
 
@@ -28,7 +29,7 @@ from .model.structure import Structure, build_structure  # noqa: E402
 
 #: Analyses of the Python API, imported from :mod:`trussfe.api` on first use.
 _API = ("static", "modes", "buckling", "simulate", "actuators", "elastic", "transient",
-        "mechanism", "trace", "postcritical", "model_from_dict")
+        "mechanism", "trace", "topology", "postcritical", "model_from_dict")
 
 __all__ = ["AnalysisError", "InputError", "MechanismError", "TrussfeError", "Material",
            "Section", "Structure", "build_structure", "read_model", "__version__",
