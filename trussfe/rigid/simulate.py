@@ -27,7 +27,7 @@ from .forces import (MemberBodies, NodalForces, forces_from_tensions, member_bod
                      nodal_forces_with_static, pair_loads)
 from .kinematics import Kinematics, _Pattern, compute_kinematics, solve_motion_positions
 from .linalg import SingularStep, is_direct
-from .motion import Motion, rest_motion
+from .motion import Motion, check_stroke, rest_motion
 from .sections import SectionForces, SectionStresses, section_forces, section_stresses
 from ..threads import parallel_map, worker_count
 
@@ -193,6 +193,8 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
         bad = sorted(set(motion.members.tolist()) - set(act_idx.tolist()))[0]
         raise InputError("motion", f"member '{structure.member_ids[bad]}' is not an active "
                          "member of the model (add it to [active_members])")
+    # A motion beyond an actuator's stroke describes a truss that cannot be built.
+    check_stroke(structure, motion)
     bodies = member_bodies(structure)
     opts = dict(n_sections=n_sections, full_length_inertia=conventions.full_length_inertia,
                 shear_factor=conventions.shear_factor)
