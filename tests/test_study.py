@@ -56,16 +56,17 @@ uy_B = "nodes.B.displacement.1"
 max_vm = {{ path = "members.*.max_von_mises", reduce = "max" }}
 """
 
-#: Third-order slews of the double-octahedral bay, ~0.05 s each: long enough to interrupt.
+#: 90 third-order slews of the double-octahedral bay, 150 steps each (~0.05 s on a free core):
+#: a study long enough to be interrupted mid-way.
 SLEW = f"""
 [study]
 name = "slew"
 analysis = "simulate"
 model = "{MESHES / 'double_octahedron_actuators.toml'}"
-options = {{ motion = "{MESHES / 'double_octahedron_motion_slew.toml'}", steps = 30 }}
+options = {{ motion = "{MESHES / 'double_octahedron_motion_slew.toml'}", steps = 150 }}
 
 [parameters]
-duration = {{ path = "motion.duration", from = 1.0, to = 6.0, count = 8 }}
+duration = {{ path = "motion.duration", from = 1.0, to = 6.0, count = 30 }}
 payload = {{ paths = ["masses.N7", "masses.N8", "masses.N9"], values = [0.0, 10.0, 20.0], factor = 0.3333333333333333 }}
 
 [outputs]
@@ -448,7 +449,7 @@ def test_dome_imperfection_study(tmp_path, cluster):
 def test_ctrl_c_keeps_the_stored_runs_in_one_line(tmp_path):
     """Ctrl-C on a terminal (SIGINT to the whole process group, local workers included):
     exit 130, one line saying how many runs are stored, no traceback from any worker."""
-    f = _write(tmp_path, SLEW.replace("count = 8", "count = 40"))
+    f = _write(tmp_path, SLEW)
     out = tmp_path / "out"
 
     def default_sigint():                   # as a shell in the foreground would start it
