@@ -11,9 +11,10 @@ has one function per analysis, available here::
     result = trussfe.static(model)          # result.axial_force, result.to_dict(), ...
 
 ``static``, ``modes``, ``buckling``, ``simulate``, ``actuators``, ``elastic``, ``transient``,
-``mechanism``, ``trace``, ``topology``, ``postcritical`` and ``validate``
-(:mod:`trussfe.validation`) are imported on first use, so that ``import trussfe`` stays light;
-so is ``show``, which draws a model (and its static results) to a PNG.
+``mechanism``, ``trace``, ``topology``, ``postcritical``, ``validate``
+(:mod:`trussfe.validation`) and ``study`` (:mod:`trussfe.parametric`) are imported on first
+use, so that ``import trussfe`` stays light; so is ``show``, which draws a model (and its
+static results) to a PNG.
 """
 from importlib.metadata import PackageNotFoundError, version as _version
 
@@ -33,7 +34,7 @@ _API = ("static", "modes", "buckling", "simulate", "actuators", "elastic", "tran
 
 __all__ = ["AnalysisError", "InputError", "MechanismError", "TrussfeError", "Material",
            "Section", "Structure", "build_structure", "read_model", "__version__",
-           *_API, "validate"]
+           *_API, "validate", "study"]
 
 
 def __getattr__(name: str):
@@ -43,6 +44,9 @@ def __getattr__(name: str):
     if name == "validate":
         from .validation.run import validate
         return validate
+    if name == "study":
+        from .parametric import study
+        return study
     raise AttributeError(f"module 'trussfe' has no attribute '{name}'")
 
 
