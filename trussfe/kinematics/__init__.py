@@ -19,3 +19,6 @@ __all__ += ["TraceResult", "compatibility_error", "hortobagyi_step", "pivoted_pa
             "compatibility_from_incidence", "cycle_kinematics", "equivalent_assembly",
             "graph_topology", "incidence_matrix", "reduced_incidence_matrix",
             "bar_angular_velocity", "mechanism_acceleration", "mechanism_velocity"]
+from .order import MechanismOrder, mechanism_order
+
+__all__ += ["MechanismOrder", "mechanism_order"]
