@@ -69,7 +69,7 @@ def test_bricard_is_never_obstructed():
     number; the solved orders stay far below the round-off bound."""
     e = CATALOGUE["mech_bricard"]
     r = mechanism_order(e.coords, e.bars, e.free, max_order=100)
-    assert r.order is None and r.status == "undecided" and r.order_at_least == 100
+    assert r.order is None and r.status == "undecided" and r.checked == 100
     assert r.margin < 0.1
 
 
@@ -155,7 +155,7 @@ def test_recursion_gives_the_papers_order_for_fourteen_pairs():
     # the computation confirms what floating point can: no obstruction up to order 64
     e = CATALOGUE["mech_sec7_chain_14"]
     r = mechanism_order(e.coords, e.bars, e.free)
-    assert r.status == "undecided" and r.order_at_least == 64
+    assert r.status == "undecided" and r.checked == 64
 
 
 def test_removing_a_bar_leaves_a_finite_mechanism():
@@ -192,3 +192,58 @@ def test_max_order_must_allow_a_second_order():
     x, bars = TWO_BARS
     with pytest.raises(ValueError, match="at least 2"):
         mechanism_order(x, bars, MIDDLE_FREE, max_order=1)
+
+
+# ---------------------------------------------------------------- command line and API
+def test_cli_json_is_to_dict(tmp_path, capsys):
+    """``trussfe mechanism --max-order`` writes the ``order`` of docs/json.md, equal to the
+    API's to_dict(); the second output line states it."""
+    import json
+
+    from trussfe import api
+    from trussfe._resources import mesh_path
+    from trussfe.cli import main
+    out = tmp_path / "m.json"
+    p = mesh_path("mech_sec7_chain_3.toml")
+    assert main(["mechanism", str(p), "--max-order", "20", "--json", str(out)]) == 0
+    assert "order: 7 (compatible to order 7, not 8)" in capsys.readouterr().out
+    doc = json.loads(out.read_text())
+    assert doc == api.mechanism(p, max_order=20).to_dict()
+    assert doc["order"] == 7 and doc["order_analysis"]["status"] == "infinitesimal"
+    assert doc["order_analysis"]["checked"] == 7 and doc["order_analysis"]["max_order"] == 20
+    assert doc["order_analysis"]["obstruction"] == pytest.approx(1.0)
+
+
+@pytest.mark.parametrize("name, order, status", [
+    ("mech_fourbar", "infinite", "finite"),
+    ("mech_sec7_chain_14_minus1", "infinite", "finite"),
+    ("mech_octahedron_rigid", None, "rigid"),
+    ("mech_sec8_compound", None, "several_mechanisms"),
+    ("mech_sec7_chain_14", None, "undecided"),
+    ("mech_sec7_chain_1", 1, "infinitesimal"),
+])
+def test_order_in_the_json_of_shipped_models(name, order, status):
+    """The order on shipped models: a four-bar and the 14-pair chain without a bar are finite
+    mechanisms; the 14-pair chain (order 16383) is beyond double precision."""
+    from trussfe import api
+    from trussfe._resources import mesh_path
+    r = api.mechanism(mesh_path(f"{name}.toml"))
+    doc = r.to_dict()
+    assert doc["order"] == order and doc["order_analysis"]["status"] == status
+    assert r.order == (float("inf") if order == "infinite" else order)
+
+
+@pytest.mark.parametrize("value", [1, 0, 4097, 2.5, True, "8"])
+def test_bad_max_order_is_refused(value, capsys):
+    """--max-order outside 2 … 4096: InputError naming the option; exit status 2, one line."""
+    from trussfe import api
+    from trussfe._resources import mesh_path
+    from trussfe.cli import main
+    from trussfe.errors import InputError
+    with pytest.raises(InputError, match="--max-order"):
+        api.mechanism(mesh_path("mech_fourbar.toml"), max_order=value)
+    if isinstance(value, int) and not isinstance(value, bool):
+        rc = main(["mechanism", str(mesh_path("mech_fourbar.toml")), "--max-order", str(value)])
+        err = capsys.readouterr().err
+        assert rc == 2 and err.startswith("trussfe: error:") and "--max-order" in err
+        assert err.count("\n") == 1

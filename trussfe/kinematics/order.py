@@ -39,10 +39,11 @@ self-stress.  Then
   the order ``k = p − 1`` (``"infinitesimal"``).  With one mechanism the order does not depend on
   the choices made: any two solutions of order p differ by a null vector of B, i.e. by a
   multiple of u₁ (a reparametrisation ``t → t + c tᵖ``) or a rigid-body motion, and both
-  transform a k-th order flex into a k-th order flex.  When every order up to ``max_order`` is
-  solvable the order is undecided, reported as at least ``max_order`` (``"undecided"``): a
-  finite computation cannot tell a finite mechanism with self-stress (Bricard's octahedron)
-  from an infinitesimal one of a higher order;
+  transform a k-th order flex into a k-th order flex.  When no order up to ``max_order`` shows
+  an obstruction above round-off the order is undecided (``"undecided"``, ``checked`` the
+  orders solved): a finite computation cannot tell a finite mechanism with self-stress
+  (Bricard's octahedron) from an infinitesimal one of a higher order, nor an obstruction
+  below the round-off of the series from none;
 * ``m ≥ 2``, ``s ≥ 1``: the order depends on the first-order motion chosen in the
   m-dimensional space and on the null-space parts chosen at every later order; it is not
   computed (``"several_mechanisms"``).  Remove mechanisms by supports to ask about one of them.
@@ -62,17 +63,20 @@ size of the terms summed):
   origin): the coefficients of a series grow geometrically with p, and an error of ε_x times
   the largest term is all that floating point can tell from zero.
 
-Entries of u_p below the same round-off level of its largest entry are set to zero: they are the
-smear of the solve over coordinates that do not move at that order, and their products would
-otherwise pass for terms of the self-stressed bars.  An order whose obstruction reaches
-:data:`SUSPECT` of the round-off bound without exceeding it may hide an obstruction; a missed
-one would leave every later order's series wrong, so from such an order on nothing is decided
-and the order is reported undecided, at least the orders before it — never a wrong order.  On
+Entries of u_p (and of Ω) below the same round-off level of their largest entry are set to
+zero: they are the smear of the solve over coordinates that do not move at that order, and their
+products would otherwise pass for terms of the self-stressed bars.  An order at which the terms
+of the self-stressed bars are non-zero but below the round-off bound, or whose obstruction
+reaches :data:`SUSPECT` of the bound without exceeding it, may hide an obstruction; a missed one
+would leave every later order's series wrong, so from such an order on nothing is decided and
+the order is reported undecided, with the orders before it checked — never a wrong order.  On
 Tarnai's chains (:func:`trussfe.models.mechanisms.section7_chain`) the order 2ⁿ − 1 is found
-for n ≤ 6 (orders up to 63); n = 7 is undecided; on 300 chains with random bar lengths and
-angles the order found was 2ⁿ − 1 or undecided.  The result carries η and the ratio to the
-round-off bound at the obstruction, and the largest ratio among the solved orders (the margin
-of the decision).  The rank itself is decided by the rank analysis's relative tolerance.
+for n ≤ 6 (orders up to 63); n = 7 is undecided with 127 orders checked; on 300 chains with
+random bar lengths and angles the order found was 2ⁿ − 1 or undecided.  "Checked" means no
+obstruction above round-off: for n = 8 the leading coefficient of the last pair falls below
+the round-off of the series and orders beyond 255 pass unobstructed.  The result carries η and
+the ratio to the round-off bound at the obstruction, and the largest ratio among the solved
+orders (the margin of the decision).  The rank itself is decided by the rank analysis's relative tolerance.
 """
 from __future__ import annotations
 
@@ -114,7 +118,8 @@ class MechanismOrder:
     status : str
         One of :data:`STATUSES` (module notes).
     checked : int
-        Highest order whose compatibility equation was solved (0 when no series was built).
+        Highest order whose compatibility equation was solved with no obstruction above
+        round-off (0 when no series was built).
     max_order : int
         Highest order that would have been examined.
     obstruction : float
@@ -142,11 +147,6 @@ class MechanismOrder:
     margin: float = float("nan")
     series: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)))
     note: str = ""
-
-    @property
-    def order_at_least(self) -> int | None:
-        """The lower bound of an undecided order (the orders checked), else None."""
-        return self.checked if self.status == "undecided" else None
 
 
 def _series_terms(U: np.ndarray, conn: np.ndarray, fidx: np.ndarray, shape, p: int,
@@ -254,6 +254,7 @@ def mechanism_order(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
     u1 = rank.mechanism_basis[:, 0]
     u1 = u1 / u1[np.argmax(np.abs(u1))]                    # largest entry +1
     u1[np.abs(u1) <= chop] = 0.0
+    Om = np.where(np.abs(Om) <= chop, 0.0, Om)              # bars outside the self-stress
     U = np.zeros((max_order, f))
     U[0] = u1
     margin = 0.0
@@ -279,6 +280,8 @@ def mechanism_order(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
                                   series=U[:p - 1] * Lmax)
         if eta > tolerance and ratio > SUSPECT and not suspect:
             suspect = p
+        if 0.0 < local <= noise and not suspect:
+            suspect = p                 # the self-stressed bars' terms are below round-off
         margin = max(margin, ratio)
         u = Bp @ r
         # entries at round-off level of the largest one are zeros that the solve smeared:
@@ -289,7 +292,8 @@ def mechanism_order(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
         # an obstruction missed at order `suspect` leaves every later order's series wrong
         return MechanismOrder(None, "undecided", suspect - 1, max_order, margin=margin,
                               series=U[:suspect - 1] * Lmax,
-                              note=f"round-off hides whether order {suspect} is obstructed")
+                              note=f"round-off hides whether order {suspect} is "
+                                   "obstructed")
     return MechanismOrder(None, "undecided", max_order, max_order, margin=margin,
                           series=U * Lmax,
                           note=f"no obstruction above round-off up to order {max_order}: a "
