@@ -21,6 +21,7 @@ from ..budget import check_input_file
 from ..errors import InputError, TrussfeError, one_line
 from . import toml_text
 from .extension_tables import TABLES as EXTENSION_TABLES
+from ..model.geometry import member_lengths
 from ..model.ids import IdIndex, IdRange, id_index
 from ..model.sections import Material, Section
 from ..mechanics.releases import parse_end_release
@@ -390,8 +391,7 @@ def _node_ref(key: str, node_index: dict, table: str) -> int:
 def _check_geometry(coords, conn, member_ids, node_ids) -> None:
     """Zero-length and duplicate members (vectorised)."""
     with np.errstate(over="ignore", invalid="ignore"):
-        vec = coords[conn[:, 1]] - coords[conn[:, 0]]
-        length = np.linalg.norm(vec, axis=1)
+        length = member_lengths(coords, conn)
         scale = max(float(np.ptp(coords, axis=0).max()) if len(coords) > 1 else 1.0, 1e-300)
     if not (np.all(np.isfinite(length)) and math.isfinite(scale)):
         i = int(np.flatnonzero(~np.isfinite(length))[0]) if not np.all(

@@ -20,7 +20,7 @@ import scipy.sparse.linalg as spla
 
 from ..errors import AnalysisError
 from ..linalg import factor
-from ..mechanics.geometry import member_vectors
+from ..mechanics.geometry import lengths as member_length_of, member_vectors
 from .compatibility import compatibility_matrix
 
 
@@ -110,7 +110,7 @@ def solve_positions(
     nb, nf = conn.shape[0], free_flat.size
     for it in range(max_iterations + 1):
         vec = member_vectors(x, conn)
-        cur = np.linalg.norm(vec, axis=1)
+        cur = member_length_of(vec)
         r = cur - L
         res = float(np.max(np.abs(r))) if nb else 0.0
         if res <= tol:
@@ -131,7 +131,7 @@ def solve_positions(
         xf[free_flat] += dx
         x = xf.reshape(x.shape)
     vec = member_vectors(x, conn)
-    r = np.linalg.norm(vec, axis=1) - L
+    r = member_length_of(vec) - L
     worst = np.argsort(-np.abs(r))[:3]
     names = ", ".join(f"'{member_ids[i] if member_ids else i}'" for i in worst
                       if np.abs(r[i]) > tol)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 import scipy.sparse as sp
-from ..mechanics.geometry import member_vectors
+from ..mechanics.geometry import member_vectors, unit_vectors
 
 
 def compatibility_matrix(coords: np.ndarray, connectivity: np.ndarray,
@@ -47,7 +47,7 @@ def compatibility_matrix(coords: np.ndarray, connectivity: np.ndarray,
     n, dim = coords.shape
     b = conn.shape[0]
     vec = member_vectors(coords, conn)          # (bar, dim)
-    unit = vec / np.linalg.norm(vec, axis=1)[:, None]
+    unit = unit_vectors(vec)[0]
     rows = np.repeat(np.arange(b), 2 * dim)
     cols = (conn[:, :, None] * dim + np.arange(dim)[None, None, :]).reshape(b, -1)  # (bar, 2*dim)
     vals = np.concatenate([-unit, unit], axis=1)

@@ -31,7 +31,7 @@ import scipy.sparse.csgraph as csg
 
 from ..errors import AnalysisError, InputError
 from ..linalg import factor
-from ..mechanics.geometry import member_vectors
+from ..mechanics.geometry import member_vectors, unit_vectors
 
 
 def incidence_matrix(n_nodes: int, connectivity: np.ndarray) -> sp.csr_matrix:
@@ -140,7 +140,7 @@ def compatibility_from_incidence(coords: np.ndarray, connectivity: np.ndarray) -
     conn = np.asarray(connectivity, dtype=np.int64).reshape(-1, 2)
     Aa = incidence_matrix(n, conn).T.tocsr().astype(float)  # (s, n)
     vec = member_vectors(x, conn)
-    e = vec / np.linalg.norm(vec, axis=1)[:, None]
+    e = unit_vectors(vec)[0]
     blocks = [(-sp.diags(e[:, k]) @ Aa) for k in range(dim)]  # (s, n) per axis
     B = sp.hstack(blocks).tocsr()                           # columns ordered (axis, node)
     perm = (np.arange(n)[:, None] + n * np.arange(dim)[None, :]).ravel()  # to (node, axis)

@@ -19,7 +19,7 @@ import scipy.sparse as sp
 
 from ..errors import AnalysisError
 from ..linalg import factor
-from ..mechanics.geometry import member_vectors
+from ..mechanics.geometry import lengths, member_vectors
 from .compatibility import compatibility_matrix
 
 
@@ -125,7 +125,7 @@ def mechanism_acceleration(coords: np.ndarray, connectivity: np.ndarray, free: n
     col[fidx] = np.arange(fidx.size)
     v = np.asarray(velocity, float).reshape(x.shape)
     vec = member_vectors(x, conn)
-    L = np.linalg.norm(vec, axis=1)
+    L = lengths(vec)
     vrel = member_vectors(v, conn)
     b = conn.shape[0]
     ldot = np.zeros(b) if length_rates is None else np.asarray(length_rates, float)

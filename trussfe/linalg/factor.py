@@ -112,6 +112,12 @@ class Factor:
         which under- or overflows — else None.
     residuals : list of float
         Relative residual ‖A x − b‖/‖b‖ of every refined solve, for reporting.
+    smallest_pivot : float
+        Magnitude of the smallest pivot (NaN where the backend does not return pivots).
+    smallest_pivot_column : int or None
+        The column of ``A`` whose elimination gave that pivot (SuperLU's LU), so that a
+        caller can name the unknown — or the block of a block-diagonal matrix — that is
+        singular; None where unknown.
     """
 
     matrix: object
@@ -126,6 +132,8 @@ class Factor:
     reason: str = ""
     determinant_sign: int | None = None
     _solve_transposed: Callable | None = field(repr=False, default=None)
+    smallest_pivot: float = float("nan")
+    smallest_pivot_column: int | None = None
 
     def solve(self, b: np.ndarray, refine: bool = True, transpose: bool = False) -> np.ndarray:
         """Solve ``A x = b`` (b of shape (n,) or (n, k)); ``Aᵀ x = b`` with ``transpose``
@@ -279,9 +287,20 @@ def _csr(A) -> sp.csr_matrix:
     return sp.csr_matrix(A)
 
 
-def _singular(M, backend: str, kind: str, reason: str, ratio: float = 0.0) -> Factor:
+def _singular(M, backend: str, kind: str, reason: str, ratio: float = 0.0,
+              **pivot) -> Factor:
     return Factor(matrix=M, backend=backend, kind=kind, n=M.shape[0], inertia=None,
-                  pivot_ratio=ratio, is_singular=True, reason=reason, determinant_sign=0)
+                  pivot_ratio=ratio, is_singular=True, reason=reason, determinant_sign=0,
+                  **pivot)
+
+
+def _smallest_pivot(lu, d: np.ndarray) -> dict:
+    """The smallest |pivot| of SuperLU's ``Pr A Pc = L U`` and the column of A it eliminates."""
+    if d.size == 0:
+        return {}
+    j = int(np.argmin(np.abs(d)))
+    column = int(lu.perm_c[j]) if lu.perm_c is not None else j
+    return {"smallest_pivot": float(abs(d[j])), "smallest_pivot_column": column}
 
 
 def permutation_parity(perm: np.ndarray) -> int:
@@ -325,14 +344,15 @@ def _superlu(M: sp.csr_matrix, kind: str) -> Factor:
         return _singular(M, "superlu", kind, str(exc))
     d = lu.U.diagonal()
     ratio = _ratio(d)
+    pivot = _smallest_pivot(lu, d)
     if n and ratio <= SINGULAR_PIVOT:
         a = np.abs(d)
         return _singular(M, "superlu", kind, f"pivot {a.min():.3g} against {a.max():.3g}",
-                         ratio)
+                         ratio, **pivot)
     return Factor(matrix=M, backend="superlu", kind=kind, n=n, inertia=None,
                   pivot_ratio=ratio, is_singular=False, _solve=lu.solve,
                   determinant_sign=_lu_sign(lu, d),
-                  _solve_transposed=lambda b: lu.solve(b, trans="T"))
+                  _solve_transposed=lambda b: lu.solve(b, trans="T"), **pivot)
 
 
 def _superlu_symmetric(M: sp.csr_matrix) -> Factor:

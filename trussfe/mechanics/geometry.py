@@ -29,59 +29,18 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..errors import InputError
+from ..model.geometry import lengths, member_lengths, member_vectors, unit_vectors
+
+__all__ = [
+    "VERTICAL", "member_vectors", "lengths", "member_lengths", "unit_vectors", "frame_rotations",
+    "parallel_orientation", "local_axes", "transverse_frames", "stations", "from_end_node",
+]
 
 if TYPE_CHECKING:
     from ..model.structure import Structure
 
 #: |e·Z| above which a member counts as vertical (its default local y is then global X).
 VERTICAL = 1.0 - 1e-9
-
-
-def member_vectors(x: np.ndarray, connectivity: np.ndarray) -> np.ndarray:
-    """End-minus-start difference of a nodal field over every member.
-
-    Parameters
-    ----------
-    x : ndarray, shape (..., n, dim)
-        Node positions, or any nodal field (displacements, velocities, accelerations).
-    connectivity : ndarray of int, shape (m, 2)
-        Start and end node of every member.
-
-    Returns
-    -------
-    ndarray, shape (..., m, dim)
-        ``x[..., end] − x[..., start]``.
-    """
-    return x[..., connectivity[:, 1], :] - x[..., connectivity[:, 0], :]
-
-
-def lengths(d: np.ndarray) -> np.ndarray:
-    """Lengths of member vectors ``d`` (..., m, dim), shape (..., m)."""
-    return np.sqrt(np.einsum("...i,...i->...", d, d))
-
-
-def member_lengths(x: np.ndarray, connectivity: np.ndarray) -> np.ndarray:
-    """Member lengths for node positions ``x`` (..., n, dim), shape (..., m).
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> member_lengths(np.array([[0.0, 0.0], [3.0, 4.0]]), np.array([[0, 1]]))
-    array([5.])
-    """
-    return lengths(member_vectors(x, connectivity))
-
-
-def unit_vectors(d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Unit vectors and lengths of member vectors ``d`` (..., m, dim).
-
-    Returns
-    -------
-    e : ndarray, shape (..., m, dim)
-    L : ndarray, shape (..., m)
-    """
-    L = lengths(d)
-    return d / L[..., None], L
 
 
 def frame_rotations(unit: np.ndarray, orientation: np.ndarray | None = None) -> np.ndarray:

@@ -27,6 +27,7 @@ from typing import Any
 
 import numpy as np
 
+from . import geometry
 from .extensions import freeze_extensions, subset_extensions
 from .ids import IdRange, id_index
 from .properties import MemberProperties, member_properties
@@ -248,17 +249,16 @@ class Structure:
     # ------------------------------------------------------------------ geometry
     def member_vectors(self, coords: np.ndarray | None = None) -> np.ndarray:
         """End-to-end vectors x_end − x_start, shape (m, dim)."""
-        x = self.coords if coords is None else coords
-        return x[self.connectivity[:, 1]] - x[self.connectivity[:, 0]]
+        return geometry.member_vectors(self.coords if coords is None else coords,
+                                       self.connectivity)
 
     def lengths(self, coords: np.ndarray | None = None) -> np.ndarray:
         """Member lengths, m, shape (m,)."""
-        return np.linalg.norm(self.member_vectors(coords), axis=1)
+        return geometry.lengths(self.member_vectors(coords))
 
     def unit_vectors(self, coords: np.ndarray | None = None) -> np.ndarray:
         """Member unit vectors from start to end node, shape (m, dim)."""
-        v = self.member_vectors(coords)
-        return v / np.linalg.norm(v, axis=1)[:, None]
+        return geometry.unit_vectors(self.member_vectors(coords))[0]
 
     @property
     def member_mass(self) -> np.ndarray:

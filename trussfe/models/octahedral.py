@@ -30,6 +30,7 @@ import numpy as np
 
 from ..errors import AnalysisError, InputError
 from ..kinematics.assembly import solve_positions
+from ..model.geometry import lengths as member_length_of
 from ..model.structure import Structure
 from ..model.active import ActiveMember
 from .materials import ALUMINIUM, octahedral_tube
@@ -253,7 +254,7 @@ def _bays_local(act: np.ndarray, bay0: np.ndarray, base_side: float,
     scale = float(lengths.max())
     for _ in range(max_iterations):
         vec = x[:, b] - x[:, a]                                     # (bay, member, xyz)
-        cur = np.linalg.norm(vec, axis=2)
+        cur = member_length_of(vec)
         r = cur - lengths
         bad = np.max(np.abs(r), axis=1) > tolerance * scale
         if not bad.any():
@@ -271,7 +272,7 @@ def _bays_local(act: np.ndarray, bay0: np.ndarray, base_side: float,
         step = np.max(np.abs(dx), axis=1, keepdims=True)
         dx *= np.minimum(1.0, 0.1 * scale / np.maximum(step, 1e-300))
         x[np.flatnonzero(bad), 3:, :] += dx.reshape(-1, 6, 3)
-    worst = int(np.argmax(np.max(np.abs(np.linalg.norm(x[:, b] - x[:, a], axis=2) - lengths),
+    worst = int(np.argmax(np.max(np.abs(member_length_of(x[:, b] - x[:, a]) - lengths),
                                  axis=1)))
     raise AnalysisError("double_octahedral_chain", f"no assembly exists for the active "
                                                    f"lengths of bay {worst + 1}: "

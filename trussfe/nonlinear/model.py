@@ -371,7 +371,7 @@ class NonlinearModel:
         pts = [self.t_conn.ravel()]
         w = [np.repeat(half_t, 2)]
         if len(self.b_conn):
-            L0 = np.linalg.norm(self.X[self.b_conn[:, 1]] - self.X[self.b_conn[:, 0]], axis=1)
+            L0 = member_lengths(self.X, self.b_conn)
             pts.append(self.b_conn.ravel())
             w.append(np.repeat(0.5 * (s.density * s.area)[self.b_member] * L0, 2))
         mass = np.bincount(np.concatenate(pts), np.concatenate(w), minlength=self.n_points)

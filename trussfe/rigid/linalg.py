@@ -23,9 +23,9 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse as sp
-import scipy.sparse.linalg as spla
 from scipy.sparse.csgraph import connected_components, maximum_bipartite_matching
 
+from ..linalg.factor import Factor, factor
 from ..threads import parallel_map, worker_count
 
 #: Largest system solved as a dense stack.
@@ -114,18 +114,27 @@ def batched_solve(rows: np.ndarray, cols: np.ndarray, vals: np.ndarray, shape: t
         R = (rows[None, :] + off).ravel()
         C = (cols[None, :] + off).ravel()
         A = sp.csc_matrix((vals[k0:k1].ravel(), (R, C)), shape=(nk * n, nk * n))
-        try:
-            lu = spla.splu(A)
-        except RuntimeError:
-            raise SingularStep(k0) from None
-        d = np.abs(lu.U.diagonal())
-        scale = np.abs(vals[k0:k1]).max()
-        if d.min() <= SINGULAR_RCOND * max(scale, 1e-300):
-            raw = int(lu.perm_c[np.argmin(d)]) if lu.perm_c is not None else int(np.argmin(d))
-            raise SingularStep(k0 + raw // n)
+        f = _step_factor(A, np.abs(vals[k0:k1]).max())
+        if f is None or f.is_singular:
+            # The failing pivot's column lies in the block of the singular step.
+            col = None if f is None else f.smallest_pivot_column
+            raise SingularStep(k0 + (0 if col is None else col // n))
         rr = b[k0:k1].reshape(nk * n, -1)
-        out[k0:k1] = lu.solve(rr).reshape(nk, n, -1)
+        out[k0:k1] = f.solve(rr, refine=False).reshape(nk, n, -1)
     return out[..., 0] if vec else out
+
+
+def _step_factor(A: sp.csc_matrix, scale: float) -> Factor | None:
+    """SuperLU factor of a compatibility matrix (or of a block-diagonal stack of them),
+    marked singular under this module's configuration rule: a pivot at most
+    :data:`SINGULAR_RCOND` times the largest entry ``scale``.  None when SuperLU finds the
+    matrix exactly singular (it then names no pivot)."""
+    f = factor(A, "general", backend="superlu", singular="flag")
+    if f.smallest_pivot_column is None and f.is_singular:
+        return None
+    if f.smallest_pivot <= SINGULAR_RCOND * max(scale, 1e-300):
+        f.is_singular = True
+    return f
 
 
 def check_singular(A: np.ndarray) -> None:
@@ -449,14 +458,10 @@ class CompatSolver:
         scale = np.abs(vals).max()
         self.lus = []
         for k in self.anchors:
-            A = sp.csc_matrix((vals[k], (rows, cols)), shape=(n, n))
-            try:
-                lu = spla.splu(A)
-            except RuntimeError:
-                raise SingularStep(int(k)) from None
-            if np.abs(lu.U.diagonal()).min() <= SINGULAR_RCOND * max(scale, 1e-300):
+            f = _step_factor(sp.csc_matrix((vals[k], (rows, cols)), shape=(n, n)), scale)
+            if f is None or f.is_singular:
                 raise SingularStep(int(k))
-            self.lus.append(lu)
+            self.lus.append(f)
         # All steps' B_k as one block-diagonal CSR matrix, for the residuals.
         off = (np.arange(self.nt) * n)[:, None]
         self._block = sp.csr_matrix((vals.ravel(), ((rows[None, :] + off).ravel(),
@@ -474,8 +479,8 @@ class CompatSolver:
         for j, lu in enumerate(self.lus):
             idx = np.flatnonzero(self.owner == j)
             if idx.size:
-                dx[idx] = lu.solve(np.ascontiguousarray(r[idx].T),
-                                   trans="T" if transpose else "N").T
+                dx[idx] = lu.solve(np.ascontiguousarray(r[idx].T), refine=False,
+                                   transpose=transpose).T
         return dx
 
     def subset(self, k0: int, k1: int) -> "CompatSolver | None":

@@ -1,0 +1,62 @@
+# SPDX-License-Identifier: MIT
+"""Member vectors and lengths: the one computation every layer uses.
+
+They live in the model layer so that :class:`~trussfe.model.structure.Structure` can give its
+members' lengths without importing a solver layer; :mod:`trussfe.mechanics.geometry` re-exports
+them beside the local frames and stations.  Every function is vectorised over members and over
+any leading axes: node arrays have shape ``(..., n, dim)``, member arrays ``(..., m, dim)``.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+
+def member_vectors(x: np.ndarray, connectivity: np.ndarray) -> np.ndarray:
+    """End-minus-start difference of a nodal field over every member.
+
+    Parameters
+    ----------
+    x : ndarray, shape (..., n, dim)
+        Node positions, or any nodal field (displacements, velocities, accelerations).
+    connectivity : ndarray of int, shape (m, 2)
+        Start and end node of every member.
+
+    Returns
+    -------
+    ndarray, shape (..., m, dim)
+        ``x[..., end] − x[..., start]``.
+    """
+    return x[..., connectivity[:, 1], :] - x[..., connectivity[:, 0], :]
+
+
+def lengths(d: np.ndarray) -> np.ndarray:
+    """Lengths of member vectors ``d`` (..., m, dim), shape (..., m).
+
+    The components' squares are summed in order along the last axis (as ``numpy.linalg.norm``
+    does), so a length is the same to the last bit wherever it is computed.
+    """
+    return np.sqrt(np.add.reduce(d * d, axis=-1))
+
+
+def member_lengths(x: np.ndarray, connectivity: np.ndarray) -> np.ndarray:
+    """Member lengths for node positions ``x`` (..., n, dim), shape (..., m).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> member_lengths(np.array([[0.0, 0.0], [3.0, 4.0]]), np.array([[0, 1]]))
+    array([5.])
+    """
+    return lengths(member_vectors(x, connectivity))
+
+
+def unit_vectors(d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Unit vectors and lengths of member vectors ``d`` (..., m, dim).
+
+    Returns
+    -------
+    e : ndarray, shape (..., m, dim)
+    L : ndarray, shape (..., m)
+    """
+    L = lengths(d)
+    return d / L[..., None], L
