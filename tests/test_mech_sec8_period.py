@@ -2,7 +2,6 @@
 """Hortobágyi (1999) §8, Fig. 11: over one period of the compound mechanism the end points of
 the connecting bar travel their trajectories twice (the section-8 construction traced once
 round its loop)."""
-import numpy as np
 
 from trussfe.kinematics.trace import trace_mechanism
 from trussfe.models.mechanisms import CATALOGUE

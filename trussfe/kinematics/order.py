@@ -46,7 +46,9 @@ self-stress.  Then
   below the round-off of the series from none;
 * ``m ≥ 2``, ``s ≥ 1``: the order depends on the first-order motion chosen in the
   m-dimensional space and on the null-space parts chosen at every later order; it is not
-  computed (``"several_mechanisms"``).  Remove mechanisms by supports to ask about one of them.
+  computed (``"several_mechanisms"``).  Remove mechanisms by supports to ask about one of them;
+* more than :data:`DENSE_LIMIT` coordinates or bars with ``m = 1``, ``s ≥ 1``: not computed
+  (``"too_large"``; the series uses a dense pseudo-inverse).
 
 Tolerance
 ---------
@@ -69,14 +71,16 @@ products would otherwise pass for terms of the self-stressed bars.  An order at 
 of the self-stressed bars are non-zero but below the round-off bound, or whose obstruction
 reaches :data:`SUSPECT` of the bound without exceeding it, may hide an obstruction; a missed one
 would leave every later order's series wrong, so from such an order on nothing is decided and
-the order is reported undecided, with the orders before it checked — never a wrong order.  On
-Tarnai's chains (:func:`trussfe.models.mechanisms.section7_chain`) the order 2ⁿ − 1 is found
-for n ≤ 6 (orders up to 63); n = 7 is undecided with 127 orders checked; on 300 chains with
+the order is reported undecided, with the orders before it checked: an undecided answer rather
+than a wrong one.  On Tarnai's chains (:func:`trussfe.models.mechanisms.section7_chain`) the
+order 2ⁿ − 1 is found for n ≤ 6 (orders up to 63); n = 7 is undecided with 127 orders checked
+(``max_order`` ≥ 128); on 300 chains with
 random bar lengths and angles the order found was 2ⁿ − 1 or undecided.  "Checked" means no
 obstruction above round-off: for n = 8 the leading coefficient of the last pair falls below
 the round-off of the series and orders beyond 255 pass unobstructed.  The result carries η and
 the ratio to the round-off bound at the obstruction, and the largest ratio among the solved
-orders (the margin of the decision).  The rank itself is decided by the rank analysis's relative tolerance.
+orders (the margin of the decision).  The rank itself is decided by the rank analysis's
+relative tolerance.
 """
 from __future__ import annotations
 

@@ -316,9 +316,9 @@ def section7_chain(n: int, remove: bool = False,
     chain whose infinitesimal mechanism has order 2ⁿ − 1.
 
     Pair j (j = 1 … n) is two collinear bars ``A_j–X_j–X_{j+1}`` of lengths a_j, b_j (default
-    1 m each; ``lengths`` gives the n pairs (a_j, b_j)) along the unit vector e_j, with A_j fixed; the end X_{j+1} of pair j is the middle joint of pair
-    j + 1, whose axis e_{j+1} is perpendicular to e_j (e_j alternates between x and y: a
-    staircase).  The last end X_{n+1} is fixed.  Joints X_1 … X_n are free: 2n coordinates,
+    1 m each; ``lengths`` gives the n pairs (a_j, b_j)) along the unit vector e_j, with A_j
+    fixed; the end X_{j+1} of pair j is the middle joint of pair j + 1, whose axis e_{j+1} is
+    perpendicular to e_j (e_j alternates between x and y: a staircase).  The last end X_{n+1} is fixed.  Joints X_1 … X_n are free: 2n coordinates,
     2n bars.  Node ids: X_1 … X_{n+1} are "1" … "n+1", A_1 … A_n are "n+2" … "2n+1".
 
     Why the order is 2ⁿ − 1.  To first order only X_1 moves, across its pair (ρ(B) = 2n − 1,
