@@ -12,28 +12,61 @@ command line and the validation suite call these functions.  docs/python.md is t
 """
 from __future__ import annotations
 
+import importlib
 import inspect
 from types import MappingProxyType
+from typing import TYPE_CHECKING
 
-from .along_motion import ElasticResult, TransientResult, elastic, transient
-from .kinematic import MechanismResult, TraceResult, mechanism, trace
-from .linear import BucklingResult, ModesResult, StaticResult, buckling, modes, static
 from .model import ModelLike, as_structure, model_from_dict, read_model
-from .nonlinear_path import PostcriticalResult, postcritical
 from .results import Result
-from .rigid_body import ActuatorsResult, SimulateResult, actuators, simulate
 
-#: The analyses that take a model, by command name (the validation suite's ``analysis``).
-ANALYSES = MappingProxyType({
-    "static": static, "modes": modes, "buckling": buckling, "simulate": simulate,
-    "actuators": actuators, "elastic": elastic, "transient": transient,
-    "mechanism": mechanism, "trace": trace, "postcritical": postcritical})
+#: Where each analysis and result type lives: imported on first use, so that a command loads
+#: only the solver family it runs (start-up time of the command line).
+_LAZY = MappingProxyType({
+    **dict.fromkeys(("ElasticResult", "TransientResult", "elastic", "transient"),
+                    "along_motion"),
+    **dict.fromkeys(("MechanismResult", "TraceResult", "mechanism", "trace"), "kinematic"),
+    **dict.fromkeys(("BucklingResult", "ModesResult", "StaticResult", "buckling", "modes",
+                     "static"), "linear"),
+    **dict.fromkeys(("PostcriticalResult", "postcritical"), "nonlinear_path"),
+    **dict.fromkeys(("ActuatorsResult", "SimulateResult", "actuators", "simulate"),
+                    "rigid_body"),
+})
 
+#: The analyses that take a model (the validation suite's ``analysis``).
+ANALYSIS_NAMES = ("static", "modes", "buckling", "simulate", "actuators", "elastic",
+                  "transient", "mechanism", "trace", "postcritical")
+
+if TYPE_CHECKING:
+    from .along_motion import ElasticResult, TransientResult, elastic, transient
+    from .kinematic import MechanismResult, TraceResult, mechanism, trace
+    from .linear import BucklingResult, ModesResult, StaticResult, buckling, modes, static
+    from .nonlinear_path import PostcriticalResult, postcritical
+    from .rigid_body import ActuatorsResult, SimulateResult, actuators, simulate
+
+
+def __getattr__(name: str):
+    if name in _LAZY:
+        value = getattr(importlib.import_module(f"{__name__}.{_LAZY[name]}"), name)
+        globals()[name] = value
+        return value
+    if name == "ANALYSES":
+        # by command name; importing every solver family, so made on first use
+        value = MappingProxyType({a: __getattr__(a) for a in ANALYSIS_NAMES})
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))
 
 
 def option_names(analysis: str) -> tuple[str, ...]:
     """The keyword options of one of :data:`ANALYSES`, in signature order."""
-    return tuple(p.name for p in inspect.signature(ANALYSES[analysis]).parameters.values()
+    if analysis not in ANALYSIS_NAMES:
+        raise KeyError(analysis)
+    return tuple(p.name for p in inspect.signature(__getattr__(analysis)).parameters.values()
                  if p.kind is inspect.Parameter.KEYWORD_ONLY)
 
 
@@ -50,7 +83,7 @@ def check_options(analysis: str, options) -> None:
                                              f"{_suggest(key, known)}")
 
 
-__all__ = ["ANALYSES", "ActuatorsResult", "BucklingResult", "ElasticResult",
+__all__ = ["ANALYSES", "ANALYSIS_NAMES", "ActuatorsResult", "BucklingResult", "ElasticResult",
            "MechanismResult", "ModelLike", "ModesResult", "PostcriticalResult", "Result",
            "SimulateResult", "StaticResult", "TraceResult", "TransientResult",
            "actuators", "as_structure", "buckling", "check_options", "elastic",

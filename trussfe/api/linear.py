@@ -7,9 +7,7 @@ from typing import ClassVar
 
 import numpy as np
 
-from ..fem.buckling import solve_buckling
 from ..linalg.pardiso import available as pardiso_available
-from ..fem.modal import solve_modes
 from ..fem.static import solve_static
 from .model import ModelLike, as_structure
 from .options import choice, positive_int
@@ -80,6 +78,8 @@ def modes(model: ModelLike, *, count: int | None = None, mass: str = "consistent
         ``frequencies_hz`` (mode,), ``shapes`` (mode, node, dim), ``effective_mass``, …
     """
     structure = as_structure(model)
+    from ..fem.modal import solve_modes         # imported on first use: start-up
+
     return ModesResult(structure, solve_modes(structure, count=count, mass=mass,
                                               bar_model=bar_model, subdivisions=subdivisions))
 
@@ -105,6 +105,8 @@ def buckling(model: ModelLike, *, count: int = 4, bar_model: str = "pinned-beam"
         ``load_factors`` (mode,), ``shapes`` (mode, node, dim), ``euler_load`` (member,), …
     """
     structure = as_structure(model)
+    from ..fem.buckling import solve_buckling   # imported on first use: start-up
+
     return BucklingResult(structure, solve_buckling(structure, count=count,
                                                     bar_model=bar_model,
                                                     subdivisions=subdivisions))

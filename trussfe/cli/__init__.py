@@ -46,18 +46,48 @@ class _Parser(argparse.ArgumentParser):
         raise SystemExit(2)
 
 
-def build_parser() -> argparse.ArgumentParser:
-    """The ``trussfe`` argument parser with every discovered command."""
+def command_names() -> list[str]:
+    """The commands, one ``cmd_<name>`` module each (found without importing them)."""
+    return sorted(i.name[4:] for i in pkgutil.iter_modules(__path__)
+                  if i.name.startswith("cmd_"))
+
+
+def _chosen_command(argv: list[str] | None, names: list[str]) -> str | None:
+    """The command ``argv`` runs, when it names one: its first word that is not an option
+    (the top-level options take no value)."""
+    if argv is None:
+        return None
+    for word in argv:
+        if word == "--version":
+            return ""               # prints the version and stops: no command is needed
+        if word == "--":
+            return None
+        if not word.startswith("-"):
+            return word if word in names else None
+    return None
+
+
+def build_parser(argv: list[str] | None = None) -> argparse.ArgumentParser:
+    """The ``trussfe`` argument parser.
+
+    With ``argv`` naming a command, only that command's module is imported and fully
+    registered (the others are bare names, which is all the parser needs from them): a
+    command loads only the solver family it runs, which is most of the start-up time.
+    Without it (or for ``--help``, a misspelt command, ...) every command is registered.
+    """
     parser = _Parser(prog="trussfe", description="Structural analysis of adaptive trusses "
                      "and bar-and-joint mechanisms.")
     parser.add_argument("--version", action="version", version=f"trussfe {__version__}")
     parser.add_argument("-v", "--verbose", action="store_true", help="log progress to stderr")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     sub.required = True
-    for info in sorted(pkgutil.iter_modules(__path__), key=lambda i: i.name):
-        if info.name.startswith("cmd_"):
-            module = importlib.import_module(f"{__name__}.{info.name}")
-            module.register(sub)
+    names = command_names()
+    chosen = _chosen_command(argv, names)
+    for name in names:
+        if chosen is None or name == chosen:
+            importlib.import_module(f"{__name__}.cmd_{name}").register(sub)
+        else:
+            sub.add_parser(name)
     return parser
 
 
@@ -105,8 +135,9 @@ def main(argv: list[str] | None = None) -> int:
     """
     tune_allocator()   # numpy temporaries reuse heap memory (trussfe.allocator): the command only
     try:
-        parser = build_parser()
-        args = parser.parse_args(argv)
+        words = sys.argv[1:] if argv is None else list(argv)
+        parser = build_parser(words)
+        args = parser.parse_args(words)
     except SystemExit as stop:      # --help, --version, or a bad option (message printed)
         return stop.code if isinstance(stop.code, int) else 2
     except KeyboardInterrupt:

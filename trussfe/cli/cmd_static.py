@@ -13,7 +13,6 @@ from .. import api
 from ..model.bar_models import BAR_MODELS
 from ..fem.static import StaticResult
 from ..io.output import write_json
-from ..io.vtk import write_vtu as _write_vtu
 from . import options as opt
 
 
@@ -38,6 +37,8 @@ def register(subparsers) -> None:
 def write_vtu(path: str | Path, result: StaticResult) -> None:
     """Undeformed mesh with point data ``displacement`` and ``reaction`` and cell data
     ``axial_force``, ``axial_stress``, ``strain``, ``von_mises`` (written atomically)."""
+    from ..io.vtk import write_vtu as _write_vtu    # meshio: only when a VTU is asked for
+
     s = result.structure
     dim = s.dim
     point_data = {"displacement": result.displacements[:, :dim],
