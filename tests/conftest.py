@@ -28,7 +28,7 @@ def _solve_static_in_equilibrium(*args, **kwargs):
     bound.apply_defaults()
     a = bound.arguments
     assert_global_equilibrium(result, structure=result.structure, loads=a["loads"],
-                              self_weight=a["self_weight"])
+                              self_weight=a["self_weight"], member_loads=a["member_loads"])
     return result
 
 

@@ -4,6 +4,8 @@
 The applied loads are taken from the structure (nodal forces and moments, the weight of every
 member at its midpoint, the weight of every nodal mass), not from the FE load vector, so that
 a load or reaction lost in the discretisation (a hidden support, a dropped moment) shows.
+Loads along members (``member_loads``) are replaced by their statically equivalent forces and
+couples, computed here from the load data alone.
 Source: statics — the resultant force and the resultant moment about the origin of the loads
 and reactions of a body at rest are zero.
 """
@@ -12,8 +14,51 @@ from __future__ import annotations
 import numpy as np
 
 
+def member_load_resultants(structure, member_loads):
+    """Forces, their points of application and couples (global axes) that are statically
+    equivalent to the member loads: a linearly varying load ``q₁ → q₂`` over a member of
+    length L from ``X_a`` along ``e`` is the force ``(q₁ + q₂)L/2`` with the moment
+    ``X_a × F + e × (q₁L²/6 + q₂L²/3)`` about the origin (∫ s q(s) ds), written as the force
+    at ``X_a`` plus that couple; a point load is its force at ``X_a + aLe`` and its couple."""
+    from trussfe.mechanics.geometry import local_axes
+    s = structure
+    dim = s.dim
+    X = s.coords
+    forces, points, couples = [], [], []
+    if not member_loads:
+        return forces, points, couples
+    R = local_axes(s)
+    L = s.lengths()
+    e = s.unit_vectors()
+    for ld in member_loads:
+        i = ld.member
+        Xa = X[s.connectivity[i, 0]]
+        glob = (lambda v: np.asarray(v, float)) if ld.axes == "global" else \
+            (lambda v: R[i].T @ np.asarray(v, float))
+        if ld.kind == "point":
+            if ld.force:
+                forces.append(glob(ld.force)[None])
+                points.append((Xa + ld.at * L[i] * e[i])[None])
+            if ld.moment:
+                c = np.asarray(ld.moment, float)
+                c = c if dim == 2 else glob(c)
+                couples.append(c[None])
+            continue
+        q1, q2 = glob(ld.q_start), glob(ld.q_end)
+        F = 0.5 * (q1 + q2) * L[i]
+        first = q1 * L[i] ** 2 / 6 + q2 * L[i] ** 2 / 3            # ∫ s q(s) ds
+        forces.append(F[None])
+        points.append(Xa[None])
+        if dim == 2:
+            couples.append(np.array([[e[i, 0] * first[1] - e[i, 1] * first[0]]]))
+        else:
+            couples.append(np.cross(e[i], first)[None])
+    return forces, points, couples
+
+
 def resultants(structure, reactions: np.ndarray, loads: np.ndarray | None = None,
-               gravity: np.ndarray | None = None, self_weight: bool = True):
+               gravity: np.ndarray | None = None, self_weight: bool = True,
+               member_loads=None):
     """Resultant force and moment about the origin of loads + reactions (+ self-weight).
 
     Returns ``(force, moment, force_scale, moment_scale)``; the scales are the sums of the
@@ -34,6 +79,11 @@ def resultants(structure, reactions: np.ndarray, loads: np.ndarray | None = None
         mid = 0.5 * (X[s.connectivity[:, 0]] + X[s.connectivity[:, 1]])
         forces += [w, s.masses[:, None] * g[None, :]]
         points += [mid, X]
+    ml = s.extensions.get("member_loads", ()) if member_loads is None else member_loads
+    mf, mp, mc = member_load_resultants(s, ml)
+    forces += mf
+    points += mp
+    couples += mc
     F = sum(f.sum(axis=0) for f in forces)
     fscale = sum(np.abs(f).sum() for f in forces)
     if dim == 2:

@@ -294,7 +294,8 @@ def test_validation_case_with_an_unknown_option_is_an_error(tmp_path, capsys):
 OUTPUTS = {"help", "model", "json", "vtk", "npz", "plots", "plot", "vtk_every", "out",
            "no_progress"}
 #: API options without a command-line option (documented in docs/python.md).
-API_ONLY = {"simulate": {"progress"}, "trace": {"progress"}, "postcritical": {"max_step"},
+API_ONLY = {"simulate": {"progress"}, "trace": {"progress"}, "postcritical": {"max_step", "progress"},
+            "elastic": {"progress"}, "transient": {"progress"},
             "validate": {"progress"}}
 #: Command-line destinations spelt differently in the API.
 RENAMED = {"validate": {"cases_selected": "case"}}

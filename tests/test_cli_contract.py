@@ -101,7 +101,7 @@ def test_interrupt_in_analysis_leaves_nothing(tmp_path, capsys, monkeypatch):
 
     @contextlib.contextmanager
     def bar(steps):
-        def tick(k):
+        def tick(k, total):
             if k == 3:
                 raise KeyboardInterrupt
         yield tick

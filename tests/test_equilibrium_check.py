@@ -43,3 +43,20 @@ def test_the_check_passes_and_fails_when_it_should(equilibrium):
     weightless = static.solve_static(_frame(), self_weight=False)
     with pytest.raises(AssertionError):
         equilibrium(dataclasses.replace(r, reactions=weightless.reactions))
+
+
+def test_the_check_counts_member_loads(equilibrium):
+    """Member loads are applied loads of the check: a frame under a trapezoidal load, a point
+    force and a couple along its members balances with them, and does not without them (or
+    with a load's couple dropped)."""
+    from trussfe.model import MemberLoad
+    s = _frame().with_extensions(member_loads=[
+        MemberLoad(0, "trapezoidal", (0.0, 100.0, -200.0), (50.0, 0.0, -600.0)),
+        MemberLoad(1, "point", at=0.3, force=(10.0, 0.0, -40.0), moment=(0.0, 25.0, 5.0),
+                   axes="local")])
+    r = static.solve_static(s)
+    equilibrium(r)
+    with pytest.raises(AssertionError):
+        equilibrium(r, member_loads=())
+    with pytest.raises(AssertionError):
+        equilibrium(r, member_loads=s.extensions["member_loads"][:1])

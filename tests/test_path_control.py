@@ -195,9 +195,13 @@ def test_direction_at_a_limit_point_from_the_inertia():
     assert _next_sign(1.0, 2, 2, False, np.array([-1.0, 0.0]), du) == 1.0
     assert _next_sign(1.0, None, 1, True, np.array([-1.0, 0.0]), du) == -1.0
 
-    class F:
-        negative = -1
-    assert _inertia(F()) is None and _inertia(None) is None
+    import scipy.sparse as sp
+    from trussfe.linalg import factor
+    K = sp.csr_matrix(np.diag([2.0, -1.0, 3.0]))
+    assert _inertia(factor(K, "symmetric")) == 1
+    # a general LU does not count negative pivots: unknown, never a count
+    assert factor(K, "general").inertia is None
+    assert _inertia(factor(K, "general")) is None and _inertia(None) is None
 
 
 def test_unknown_inertia_is_not_reported_as_a_count():

@@ -96,6 +96,33 @@ BAD = [
      "members.BC.orientation", "non-zero"),
     ("load on missing node", ('B = [0.0, -1000.0]', 'Q = [0.0, -1000.0]'), "loads.Q",
      "node 'Q' is not defined"),
+    # loads along members, per-axis releases and shear-deformable sections
+    ("member load on missing member", ('[model]\n', 'member_loads = [{ member = "XY", '
+                                       'kind = "uniform", q = [0.0, -1.0] }]\n[model]\n'),
+     "member_loads[0].member", "member 'XY' is not defined"),
+    ("member load position outside [0, 1]",
+     ('[model]\n', 'member_loads = [{ member = "AB", kind = "point", at = 1.5, '
+                    'F = [0.0, -1.0] }]\n[model]\n'), "member_loads[0] (member AB).at",
+     "[0, 1]"),
+    ("member load unknown kind",
+     ('[model]\n', 'member_loads = [{ member = "AB", kind = "parabolic", q = [0.0, -1.0] }]'
+                    '\n[model]\n'), "member_loads[0] (member AB).kind", "unknown member-load kind"),
+    ("member load unknown axes",
+     ('[model]\n', 'member_loads = [{ member = "AB", kind = "uniform", q = [0.0, -1.0], '
+                    'axes = "polar" }]\n[model]\n'), "member_loads[0] (member AB).axes",
+     "unknown axes"),
+    ("member load vector length",
+     ('[model]\n', 'member_loads = [{ member = "AB", kind = "uniform", q = [0.0, -1.0, 0.0] }]'
+                    '\n[model]\n'), "member_loads[0] (member AB).q", "expected 2 numbers, got 3"),
+    ("member load not an array", ('[model]\n', 'member_loads = 3\n[model]\n'),
+     "member_loads", "expected an array of tables"),
+    ("release name that does not exist",
+     ('section = "tube", material = "al" }\nBC', 'section = "tube", material = "al", '
+      'type = "beam", releases = { end = ["mq"] } }\nBC'), "members.AB.releases.end",
+     "unknown release 'mq'"),
+    ("Timoshenko section with zero shear area",
+     ('inner_diameter = 0.022225', 'inner_diameter = 0.022225\nshear_area_y = 0.0'),
+     "sections.tube.shear_area_y", "positive shear area"),
 ]
 
 

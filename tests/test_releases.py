@@ -241,6 +241,8 @@ _VARIANTS = {
     "torsion released": (FRAME, {'releases = ["end"]':
                                  'releases = { end = ["bending", "torsion"] }'}),
     "twist only released": (FRAME, {'releases = ["end"]': 'releases = { end = ["torsion"] }'}),
+    "my released alone": (FRAME, {'releases = ["end"]': 'releases = { end = ["my"] }'}),
+    "mz released alone": (FRAME, {'releases = ["end"]': 'releases = { end = ["mz"], start = ["t"] }'}),
     "rotational support": (HINGE, {'H = ["x", "y", "z"]': 'H = ["x", "y", "z", "rx", "ry", "rz"]'}),
     "both ends released": (FRAME, {'releases = ["end"]': 'releases = ["start", "end"]',
                                    'B = [0.0, 0.0, -100.0, 0.0, 100.0, 0.0]':

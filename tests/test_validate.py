@@ -262,7 +262,8 @@ def test_fuzz_case_reader(data):
 
 
 def test_compare_semantics():
-    """|v − r| ≤ atol + rtol·|r|; documented deviations are never failures."""
+    """|v − r| ≤ atol + rtol·|r|; a documented deviation passes only while it holds: outside
+    the reference's tolerance and within the explained value's."""
     from trussfe.validation.cases import Quantity
     from trussfe.validation.engine import compare
 
@@ -276,9 +277,33 @@ def test_compare_semantics():
     z = Quantity(name="z", path="x", reference=0.0, atol=1e-9)
     r = compare(z, 5e-10)
     assert r.status == "pass" and r.rel_error is None
-    d = Quantity(name="d", path="x", reference=100.0, rtol=1e-3, expect="differ")
-    assert compare(d, 103.4).status == "differs" and not compare(d, 103.4).failed
-    assert compare(d, 100.0).status == "agrees" and not compare(d, 100.0).failed
+    d = Quantity(name="d", path="x", reference=100.0, rtol=1e-3, expect="differ",
+                 explained=103.38, explained_source="x 46/44.498", explained_rtol=2e-4)
+    held = compare(d, 103.39)
+    assert held.status == "differs" and not held.failed
+    assert held.explained_rel_error == pytest.approx(0.01 / 103.38)
+    gone = compare(d, 100.05)                        # back within the stated source's tolerance
+    assert gone.status == "fail" and "gone" in gone.message
+    wrong = compare(d, 105.0)                        # deviates, but not as explained
+    assert wrong.status == "fail" and "explained" in wrong.message
+    bare = Quantity(name="b", path="x", reference=100.0, rtol=1e-3, expect="differ")
+    assert compare(bare, 103.0).failed                # a deviation must say what explains it
+
+
+@pytest.mark.parametrize("extra, message", [
+    ('expect = "differ"', "needs 'explained'"),
+    ('expect = "differ"\nexplained = 2.2', "needs 'explained_source'"),
+    ('expect = "differ"\nexplained = 2.2\nexplained_source = "s"', "explained value's tolerance"),
+    ('explained = 2.2', "applies to a documented deviation"),
+    ('kind = "recorded"', "'independent' or 'regression'"),
+])
+def test_documented_deviation_needs_its_explanation(tmp_path, extra, message):
+    """A case file's documented deviation must name its explained value, source and
+    tolerance; the explained keys and an unknown kind are refused elsewhere."""
+    body = CASE_PY.format(id="c", func="numbers", value=2.0) + extra + "\n"
+    _write_case(tmp_path, "c.toml", body)
+    with pytest.raises(InputError, match=message):
+        load_case(tmp_path / "c.toml")
 
 
 def test_command_runs_cases_that_write_working_files(tmp_path):
@@ -292,3 +317,22 @@ def test_command_runs_cases_that_write_working_files(tmp_path):
     assert (out / "report.html").is_file()
     assert any(p.name.startswith("hortobagyi-section6-unfolding") for p in
                (out / "figures").iterdir())
+
+
+def test_report_labels_regression_values_and_explanations(tmp_path):
+    """The report marks references recorded from trussfe's own output as regression values,
+    counts them, and shows each documented deviation's explained value and its source."""
+    cases = load_cases(default_cases_dir(), ["hortobagyi-section4", "lacy-table-5-2-stated-load"])
+    results = run_cases(cases, progress=False)
+    assert all(r.passed for r in results)
+    md, page = write_report(results, tmp_path / "out")
+    text = md.read_text(encoding="utf-8")
+    n_reg = sum(q.kind == "regression" for c in cases for q in c.quantities)
+    n_dev = sum(q.expect == "differ" for c in cases for q in c.quantities)
+    assert n_reg == 2 and n_dev == 7
+    assert f"{n_dev} documented deviations, each checked against its explanation; " \
+           f"{n_reg} regression values" in text
+    assert text.count("regression value (trussfe's own output)") == n_reg
+    assert text.count("explained: ") == n_dev and "× 46.0/44.498" in text
+    assert text.count("differs as documented") == n_dev
+    assert "regression values" in page.read_text(encoding="utf-8")

@@ -4,12 +4,12 @@ and :func:`transient` (linearised dynamics about the moving configuration)."""
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, ClassVar
+from typing import Any, Callable, ClassVar
 
 import numpy as np
 
 from ..model.bar_models import BAR_MODELS
-from .model import ModelLike, as_structure
+from .model import ModelLike, as_structure, refuse_member_loads
 from .options import choice
 from .results import Result
 from .rigid_body import SCHEMES, load_motion_for
@@ -20,7 +20,7 @@ UPDATES = ("per-step", "frozen")
 
 def elastic(model: ModelLike, *, motion=None, steps: int | None = None,
             scheme: str = "exact", sections: int = 7,
-            subdivisions: int | None = None) -> ElasticResult:
+            subdivisions: int | None = None, progress: Callable[[int, int], None] | None = None) -> ElasticResult:
     """Pinned-beam FE model in the current configuration at every step of a motion, under
     gravity and the d'Alembert loads of the rigid-body motion (``trussfe elastic``),
     compared with the rigid-body model's internal forces.
@@ -40,6 +40,10 @@ def elastic(model: ModelLike, *, motion=None, steps: int | None = None,
     subdivisions : int, optional
         Elements per member (default ``sections - 1``).
 
+    progress : callable, optional
+        Called as ``progress(done, total)`` during the run (a progress bar; the command line
+        draws one on a terminal).
+
     Returns
     -------
     ElasticResult
@@ -50,18 +54,20 @@ def elastic(model: ModelLike, *, motion=None, steps: int | None = None,
     from ..mechanics.conventions import Conventions
 
     choice("--scheme", scheme, SCHEMES)
-    structure = as_structure(model)
+    structure = refuse_member_loads(as_structure(model), "elastic")
     mot = load_motion_for(structure, motion, steps)
     sim, resp, cmp = simulate_elastic(structure, mot, n_sections=sections,
                                       subdivisions=subdivisions,
-                                      conventions=Conventions.from_scheme(scheme))
+                                      conventions=Conventions.from_scheme(scheme),
+                                      progress=progress)
     return ElasticResult(structure, resp, rigid=sim, comparison=cmp)
 
 
 def transient(model: ModelLike, *, motion, steps: int | None = None, dt: float | None = None,
               t_end: float | None = None, bar_model: str = "pinned-beam",
               subdivisions: int | None = None, update: str = "per-step",
-              damping: tuple[float, float] | None = None) -> TransientResult:
+              damping: tuple[float, float] | None = None,
+              progress: Callable[[int, int], None] | None = None) -> TransientResult:
     """Elastic vibration superposed on a prescribed motion (``trussfe transient``):
     linearised FE dynamics about the moving configuration, Newmark average acceleration.
 
@@ -85,6 +91,10 @@ def transient(model: ModelLike, *, motion, steps: int | None = None, dt: float |
     damping : (alpha, beta), optional
         Rayleigh damping C = alpha M + beta K.
 
+    progress : callable, optional
+        Called as ``progress(done, total)`` during the run (a progress bar; the command line
+        draws one on a terminal).
+
     Returns
     -------
     TransientResult
@@ -95,11 +105,11 @@ def transient(model: ModelLike, *, motion, steps: int | None = None, dt: float |
 
     choice("--bar-model", bar_model, BAR_MODELS)
     choice("--update", update, UPDATES)
-    structure = as_structure(model)
+    structure = refuse_member_loads(as_structure(model), "transient")
     mot = load_motion_for(structure, motion, steps, required=True)
     return TransientResult(structure, transient_response(
         structure, mot, bar_model=bar_model, k=subdivisions, dt=dt, t_end=t_end,
-        damping=damping, update=update))
+        damping=damping, update=update, progress=progress))
 
 
 @dataclass(frozen=True, eq=False, repr=False)

@@ -57,7 +57,7 @@ MAX_ORDER_LIMIT = 4096
 
 def trace(model: ModelLike, *, drive: str | Sequence[str], step: float | Sequence[float],
           steps: int, branch: int = 0, tolerance: float = 1e-10,
-          frozen: bool = False, progress: Callable[[int], None] | None = None) -> TraceResult:
+          frozen: bool = False, progress: Callable[[int, int], None] | None = None) -> TraceResult:
     """Follow the motion of an inextensional bar-and-joint mechanism (``trussfe trace``),
     with its bifurcation and limit points.
 
@@ -77,7 +77,7 @@ def trace(model: ModelLike, *, drive: str | Sequence[str], step: float | Sequenc
     frozen : bool
         Keep B11 of the predicted state (the paper's iteration) instead of Newton's refresh.
     progress : callable, optional
-        Called with the step number before every step (a progress bar; it may raise
+        Called as ``progress(step, steps)`` before every step (a progress bar; it may raise
         ``KeyboardInterrupt`` to stop the trace).
 
     Returns

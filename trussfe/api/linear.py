@@ -19,7 +19,8 @@ SOLVERS = ("auto", "superlu", "pardiso")
 
 def static(model: ModelLike, *, bar_model: str = "truss", subdivisions: int | None = None,
            solver: str = "auto") -> StaticResult:
-    """Linear static analysis under the model's loads and gravity (``trussfe static``).
+    """Linear static analysis under the model's loads, member loads and gravity
+    (``trussfe static``).
 
     Parameters
     ----------

@@ -107,6 +107,16 @@ def as_structure(model: ModelLike) -> Structure:
                     f"not {type(model).__name__}")
 
 
+def refuse_member_loads(structure: Structure, command: str) -> Structure:
+    """The structure, when it has no ``member_loads``; an :class:`InputError` naming the
+    command otherwise (an analysis along a motion applies nodal loads only, and must not drop
+    loads along members silently)."""
+    if structure.extensions.get("member_loads"):
+        raise InputError("member_loads", f"loads along members are applied by static and "
+                         f"buckling only, not by {command}; apply them as nodal loads")
+    return structure
+
+
 def model_folder(structure: Structure) -> Path | None:
     """Folder of the file a structure was read from (``None`` if built in Python)."""
     return Path(structure.source).parent if structure.source else None
@@ -123,4 +133,5 @@ def resolve_beside(path: str | os.PathLike, structure: Structure) -> Path:
     return p
 
 
-__all__ = ["ModelLike", "as_structure", "model_from_dict", "read_model", "resolve_beside"]
+__all__ = ["ModelLike", "as_structure", "model_from_dict", "read_model",
+           "refuse_member_loads", "resolve_beside"]

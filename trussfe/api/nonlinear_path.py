@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import ClassVar
+from typing import Callable, ClassVar
 
 import numpy as np
 
@@ -20,7 +20,8 @@ def postcritical(model: ModelLike, *, control: str | None = None, steps: int | N
                  bar_model: str | None = None, subdivisions: int | None = None,
                  imperfection: float | None = None,
                  branch: bool | None = None,
-                 max_step: float | None = None) -> PostcriticalResult:
+                 max_step: float | None = None,
+                 progress: Callable[[int, int], None] | None = None) -> PostcriticalResult:
     """Follow the equilibrium path of the model under its ``[loads]`` scaled by a load
     factor λ (``trussfe postcritical``): co-rotational elements, limit and bifurcation
     points, member buckling, yield and fracture (``[failure]``), the hand-over to mechanism
@@ -52,6 +53,10 @@ def postcritical(model: ModelLike, *, control: str | None = None, steps: int | N
         Largest arc-length increment (the ``[postcritical]`` setting; no command-line
         option).
 
+    progress : callable, optional
+        Called as ``progress(done, total)`` during the run (a progress bar; the command line
+        draws one on a terminal).
+
     Returns
     -------
     PostcriticalResult
@@ -79,7 +84,7 @@ def postcritical(model: ModelLike, *, control: str | None = None, steps: int | N
         structure, control=control, steps=steps, step=step, max_load_factor=max_load_factor,
         max_displacement=max_displacement, monitor=monitor, bar_model=bar_model,
         subdivisions=subdivisions, imperfection=imperfection, branch=branch,
-        max_step=max_step))
+        max_step=max_step, progress=progress))
 
 
 @dataclass(frozen=True, eq=False, repr=False)

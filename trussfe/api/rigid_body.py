@@ -4,13 +4,13 @@ from __future__ import annotations
 
 import os
 from dataclasses import dataclass
-from typing import ClassVar
+from typing import Callable, ClassVar
 
 import numpy as np
 
 from ..errors import InputError
 from ..model.structure import Structure
-from .model import ModelLike, as_structure, resolve_beside
+from .model import ModelLike, as_structure, refuse_member_loads, resolve_beside
 from .options import choice, positive_int
 from .results import Result
 
@@ -44,12 +44,13 @@ def load_motion_for(structure: Structure, motion, steps: int | None, *,
     return load_motion(resolve_beside(motion, structure), structure, steps=steps)
 
 
-def _simulate(model: ModelLike, motion, steps, scheme: str, sections: int, progress: bool):
+def _simulate(model: ModelLike, motion, steps, scheme: str, sections: int,
+              progress: Callable[[int, int], None] | None):
     from ..mechanics.conventions import Conventions
     from ..rigid.simulate import simulate as run
 
     choice("--scheme", scheme, SCHEMES)
-    structure = as_structure(model)
+    structure = refuse_member_loads(as_structure(model), "simulate")
     mot = load_motion_for(structure, motion, steps)
     return structure, run(structure, mot, conventions=Conventions.from_scheme(scheme),
                           n_sections=sections, progress=progress)
@@ -57,7 +58,7 @@ def _simulate(model: ModelLike, motion, steps, scheme: str, sections: int, progr
 
 def simulate(model: ModelLike, *, motion=None, steps: int | None = None,
              scheme: str = "exact", sections: int = 7,
-             progress: bool = False) -> SimulateResult:
+             progress: Callable[[int, int], None] | None = None) -> SimulateResult:
     """Rigid-body dynamic force analysis along a motion of the active members
     (``trussfe simulate``; Lacy chapters 2–4).
 
@@ -75,8 +76,9 @@ def simulate(model: ModelLike, *, motion=None, steps: int | None = None,
         Kinematics: exact, or Lacy's backward differences.
     sections : int
         Sections per member for the internal forces.
-    progress : bool
-        Progress bar on stderr.
+    progress : callable, optional
+        Called as ``progress(done, total)`` during the run (a progress bar; the command line
+        draws one on a terminal).
 
     Returns
     -------
@@ -113,12 +115,12 @@ def actuators(model: ModelLike, *, motion=None, steps: int | None = None) -> Act
     """
     from ..rigid import actuator as _actuator  # noqa: F401  (registers [actuators])
 
-    structure = as_structure(model)
+    structure = refuse_member_loads(as_structure(model), "actuators")
     if not _actuator.actuators_of(structure):
         raise InputError(structure.source or structure.name or "model",
                          "the model has no [actuators] table: give the leadscrew and motor "
                          "data of the actuators to analyse (see docs/actuators.md)")
-    structure, res = _simulate(structure, motion, steps, "exact", 7, False)
+    structure, res = _simulate(structure, motion, steps, "exact", 7, None)
     return ActuatorsResult(structure, res)
 
 

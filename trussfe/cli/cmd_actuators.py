@@ -43,5 +43,5 @@ def _run(args: argparse.Namespace) -> int:
               f"{tq['time']:.4g} s, voltage {v['value']:.4g} V at {v['time']:.4g} s "
               f"({a['motor_voltage_frictionless']['value']:.4g} V without friction)")
         for f in a["flags"]:
-            print(f"  flag: {f}")
+            print(f"  finding: {f}")
     return 0

@@ -10,6 +10,7 @@ import numpy as np
 from .. import api
 from ..io.output import write_json
 from . import options as opt
+from .progress import progress_bar
 
 
 def register(subparsers) -> None:
@@ -62,8 +63,10 @@ def write_vtk(directory, sim, resp, stem: str = "elastic") -> Path:
 
 
 def _run(args: argparse.Namespace) -> int:
-    result = api.elastic(args.model, motion=args.motion, steps=args.steps, scheme=args.scheme,
-                         sections=args.sections, subdivisions=args.subdivisions)
+    with progress_bar("elastic") as tick:
+        result = api.elastic(args.model, motion=args.motion, steps=args.steps, scheme=args.scheme,
+                             sections=args.sections, subdivisions=args.subdivisions,
+                             progress=tick)
     sim, resp, cmp = result.rigid, result.solution, result.comparison
     if args.json:
         write_json(args.json, result.to_dict())

@@ -21,6 +21,7 @@ from ..model.bar_models import BAR_MODELS, DEFAULT_POSTCRITICAL_SUBDIVISIONS
 from ..nonlinear.path import CONTROLS, PathResult
 from ..nonlinear.plot import write_plot
 from . import options as opt
+from .progress import progress_bar
 
 
 def register(subparsers) -> None:
@@ -87,11 +88,13 @@ def write_vtk(directory: str | Path, result: PathResult) -> Path:
 
 
 def _main(args) -> int:
-    res = api.postcritical(args.model, control=args.control, steps=args.steps, step=args.step,
-                           max_load_factor=args.max_load_factor,
-                           max_displacement=args.max_displacement, monitor=args.monitor,
-                           bar_model=args.bar_model, subdivisions=args.subdivisions,
-                           imperfection=args.imperfection, branch=args.branch)
+    with progress_bar("postcritical") as tick:
+        res = api.postcritical(args.model, control=args.control, steps=args.steps, step=args.step,
+                               max_load_factor=args.max_load_factor,
+                               max_displacement=args.max_displacement, monitor=args.monitor,
+                               bar_model=args.bar_model, subdivisions=args.subdivisions,
+                               imperfection=args.imperfection, branch=args.branch,
+                               progress=tick)
     result = res.solution
     doc = res.to_dict()
     if args.json:

@@ -4,12 +4,12 @@ from __future__ import annotations
 
 import argparse
 import logging
-import sys
 from pathlib import Path
 
 from .. import api
 from ..io.output import write_json
 from . import options as opt
+from .progress import progress_bar
 
 log = logging.getLogger(__name__)
 
@@ -38,8 +38,9 @@ def register(subparsers) -> None:
 def _run(args: argparse.Namespace) -> int:
     from ..rigid.output import write_npz, write_plots, write_vtk
 
-    result = api.simulate(args.model, motion=args.motion, steps=args.steps, scheme=args.scheme,
-                          sections=args.sections, progress=sys.stderr.isatty())
+    with progress_bar("simulate") as tick:
+        result = api.simulate(args.model, motion=args.motion, steps=args.steps,
+                              scheme=args.scheme, sections=args.sections, progress=tick)
     res = result.solution
     if args.json:
         write_json(args.json, result.to_dict())

@@ -101,6 +101,14 @@ def _main(args: argparse.Namespace) -> int:
     # all outputs are produced before any is renamed into place
     if args.vtk:
         write_vtu(args.vtk, result)
+        if np.any(result.fe.is_frame) or result.member_loads is not None:
+            # section forces along beams and loaded members: OUT_stations.vtu beside OUT.vtu
+            from ..io.vtk import write_stations       # meshio: only when a VTU is asked for
+            from ..io.vtk_results import static_station_fields
+            xi, fields = static_station_fields(result)
+            vtk = Path(args.vtk)
+            write_stations(vtk.with_name(vtk.stem + "_stations.vtu"), result.structure, xi,
+                           point_data=fields)
     if args.json:
         write_json(args.json, doc)
     sys.stdout.write(_table(result) + "\n")

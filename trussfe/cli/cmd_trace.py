@@ -7,16 +7,14 @@ reports every state, the bifurcation points and the limit points (docs/json.md, 
 from __future__ import annotations
 
 import argparse
-import contextlib
-import os
 import sys
-from typing import Callable, Iterator
 
 import numpy as np
 
 from .. import api
 from ..io.output import atomic_path, write_json
 from . import options as opt
+from .progress import progress_bar
 
 
 def register(subparsers) -> None:
@@ -76,24 +74,9 @@ def _plot(path: str, s, r) -> None:
 PROGRESS_STEPS = 1000
 
 
-@contextlib.contextmanager
-def _progress_bar(steps: int) -> Iterator[Callable[[int], None] | None]:
-    """A tqdm bar on stderr for a long trace, only when stderr is a terminal (a log file or
-    pipe gets no carriage-return noise); closed however the trace ends, Ctrl-C included."""
-    if steps < PROGRESS_STEPS or not sys.stderr.isatty():
-        yield None
-        return
-    from tqdm import tqdm
-
-    try:                    # a terminal that reports no width (a bare pty): 80 columns
-        width = os.get_terminal_size(sys.stderr.fileno()).columns or 80
-    except (OSError, ValueError, AttributeError):
-        width = 80
-    with tqdm(total=steps, desc="trace", unit="step", leave=False, file=sys.stderr,
-              mininterval=0.5, ncols=width) as bar:
-        def tick(k: int) -> None:
-            bar.update(k - bar.n)
-        yield tick
+def _progress_bar(steps: int):
+    """The progress bar of a long trace (:func:`trussfe.cli.progress.progress_bar`)."""
+    return progress_bar("trace", enabled=None if steps >= PROGRESS_STEPS else False)
 
 
 def _run(args: argparse.Namespace) -> int:

@@ -11,6 +11,7 @@ from .. import api
 from ..errors import InputError
 from ..io.output import atomic_path, write_json
 from . import options as opt
+from .progress import progress_bar
 
 
 def register(subparsers) -> None:
@@ -89,10 +90,11 @@ def _plot(path, res) -> None:
 def _run(args: argparse.Namespace) -> int:
     if args.vtk_every < 1:          # before a long analysis, not after it
         raise InputError("--vtk-every", f"must be a positive integer, got {args.vtk_every}")
-    result = api.transient(args.model, motion=args.motion, steps=args.steps, dt=args.dt,
-                           t_end=args.t_end, bar_model=args.bar_model,
-                           subdivisions=args.subdivisions, update=args.update,
-                           damping=args.damping)
+    with progress_bar("transient") as tick:
+        result = api.transient(args.model, motion=args.motion, steps=args.steps, dt=args.dt,
+                               t_end=args.t_end, bar_model=args.bar_model,
+                               subdivisions=args.subdivisions, update=args.update,
+                               damping=args.damping, progress=tick)
     res = result.solution
     if args.json:
         write_json(args.json, result.to_dict())

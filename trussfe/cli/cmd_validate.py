@@ -2,9 +2,9 @@
 """``trussfe validate [--out DIR] [--case ID ...] [--cases DIR]``: run the validation suite
 and write ``DIR/report.md`` and ``DIR/report.html``.
 
-Exit status: 0 when every check is within its tolerance (documented deviations are shown, not
-failed), 1 when a check misses its tolerance or a case cannot be run, 2 on bad input (a
-malformed case file, an unknown case id).
+Exit status: 0 when every check holds (a documented deviation holds while it stays outside
+its reference's tolerance and within its explained value's), 1 when a check misses or a case
+cannot be run, 2 on bad input (a malformed case file, an unknown case id).
 """
 from __future__ import annotations
 

@@ -26,11 +26,10 @@ import logging
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.linalg as sla
-import scipy.sparse.linalg as spla
 
 from ..errors import AnalysisError, InputError
 from ..mechanics.euler import member_euler_loads
+from ..linalg.eigen import DENSE_BUCKLING_LIMIT, buckling_pairs
 from ..model.structure import Structure
 from .discretisation import FEModel
 from .solver import factorise
@@ -38,8 +37,6 @@ from .static import StaticResult, solve_static
 
 log = logging.getLogger(__name__)
 
-#: Free-DOF count up to which the eigenproblem is solved densely.
-DENSE_BUCKLING_LIMIT = 600
 
 #: Axial forces below this fraction of the largest applied load count as "unloaded".
 UNLOADED_TOLERANCE = 1e-12
@@ -155,7 +152,9 @@ def solve_buckling(structure: Structure, count: int = 4, bar_model: str = "pinne
         static = solve_static(structure, bar_model=bar_model, subdivisions=subdivisions,
                               self_weight=self_weight)
     fe = static.fe
-    N = element_axial_force(fe, static.u)
+    # the static result's own element forces: the fixed-end forces of member loads are
+    # subtracted there (element_axial_force(fe, u) would leave them in)
+    N = static.element_axial_force
     fscale = np.abs(static.f).max() if static.f.size else 0.0
     if fscale == 0.0 or np.abs(N).max() <= UNLOADED_TOLERANCE * max(fscale, 1e-300):
         raise AnalysisError(item, "the structure is unloaded (no member carries an axial "
@@ -166,23 +165,17 @@ def solve_buckling(structure: Structure, count: int = 4, bar_model: str = "pinne
     n = free.size
     Kff = K[free][:, free].tocsr()
     Kgff = Kg[free][:, free].tocsr()
-    if n <= DENSE_BUCKLING_LIMIT or count >= n - 1:
-        theta, V = sla.eigh(Kgff.toarray(), Kff.toarray())
-        order = np.argsort(-np.abs(theta))[:count]
-        theta, V = theta[order], V[:, order]
-    else:
-        fac = factorise(K, free, fe=fe, item=item)
-        op = spla.LinearOperator((n, n), matvec=fac.solve, dtype=float)
-        theta, V = spla.eigsh(Kgff, k=count, M=Kff, Minv=op, which="LM")
-    tiny = np.abs(theta) <= 1e-12 * np.abs(theta).max()
-    if np.any(tiny) or theta.size < count:
+    solve = None
+    if n > DENSE_BUCKLING_LIMIT and count < n - 1:
+        solve = factorise(K, free, fe=fe, item=item).solve
+    mu, V = buckling_pairs(Kff, Kgff, count, solve=solve)
+    tiny = np.abs(mu) <= 1e-12 * np.abs(mu).max()
+    if np.any(tiny) or mu.size < count:
         found = int(np.sum(~tiny))
         raise AnalysisError(item, f"asked for {count} load factors but only {found} finite "
                             f"ones exist (the geometric stiffness has rank {found} on the free "
                             "DOFs); use a smaller --count")
-    lam = -1.0 / theta
-    order = np.argsort(np.abs(lam), kind="stable")
-    lam, V = lam[order], V[:, order]
+    lam = 1.0 / mu
     V = V / V[np.argmax(np.abs(V), axis=0), np.arange(V.shape[1])]
     shapes = np.zeros((fe.n_dof, V.shape[1]))
     shapes[free] = V

@@ -54,6 +54,7 @@ from skfem import Basis, ElementLineHermite, ElementLineP1, MeshLine1, asm
 from ..budget import require
 from ..errors import InputError
 from ..mechanics.geometry import local_axes, member_vectors, unit_vectors
+from ..mechanics.member_loads import deflection_shapes, rotation_shapes, shear_parameter
 from ..mechanics.mass import mass_per_length, twist_inertia_per_length
 from ..mechanics.dof_numbering import frame_members, member_end_rotations, number_dofs
 from ..mechanics.releases import JOINT, OWN
@@ -635,8 +636,59 @@ class FEModel:
         """Block-diagonal local stiffness of one element group (field DOF space); assembled
         once and kept, since static recovery and every later solve reuse it."""
         if g._K_local is None:
-            g._K_local = self._block_local(g, self._stiffness_spec(g))
+            K = self._block_local(g, self._stiffness_spec(g))
+            if g.kind == "frame" and self.timoshenko:
+                K = (K + self._shear_correction(g)).tocsr()
+            g._K_local = K
         return g._K_local
+
+    @property
+    def timoshenko(self) -> bool:
+        """True when a frame member has a shear area (a Timoshenko beam)."""
+        s = self.structure
+        return bool(np.any(self.is_frame & (np.isfinite(s.shear_area_y)
+                                            | np.isfinite(s.shear_area_z))))
+
+    def _shear_correction(self, g: _Group) -> sp.csr_matrix:
+        """Shear flexibility of the Timoshenko elements of a frame group, added to the cubic
+        Euler–Bernoulli bending stiffness.
+
+        The two-node Timoshenko beam stiffness (Przemieniecki, Theory of Matrix Structural
+        Analysis, 1968, ch. 5) in the DOFs ``[v_a, ψ_a, v_b, ψ_b]`` (end deflections and
+        section rotations: the element's rotation DOFs are the section rotations, which a
+        rigid joint shares),
+
+        .. math:: K = \\frac{EI}{(1 + Φ) h³} \\begin{bmatrix} 12 & 6h & −12 & 6h \\\\
+                  6h & (4 + Φ)h² & −6h & (2 − Φ)h² \\\\ −12 & −6h & 12 & −6h \\\\
+                  6h & (2 − Φ)h² & −6h & (4 + Φ)h² \\end{bmatrix},
+                  \\qquad Φ = \\frac{12 EI}{κGA\\,h²},
+
+        differs from the Euler–Bernoulli one (Φ = 0) only in its antisymmetric (shear) mode
+        ``a = [1, h/2, −1, h/2]``: ``K = K_EB − Φ/(1 + Φ) · 12EI/h³ · a aᵀ``.  The element is
+        exact for end loads, so one element has no shear locking.  Bending about z (field
+        ``v``) uses ``shear_area_y``, about y (field ``w``) ``shear_area_z``.
+        """
+        s = self.structure
+        blocks = []
+        mem = self.element_member[g.elements]
+        h = self.element_length[g.elements]
+        for f in g.fields:
+            n = f.basis.N
+            if f.name not in ("v", "w"):
+                blocks.append(sp.csr_matrix((n, n)))
+                continue
+            EI = (s.E * (s.Iz if f.name == "v" else s.Iy))[mem]
+            GAs = (s.G * (s.shear_area_y if f.name == "v" else s.shear_area_z))[mem]
+            phi = shear_parameter(EI, GAs, h)
+            c = -phi / (1.0 + phi) * 12.0 * EI / h**3                  # (el,)
+            a = np.stack([np.ones_like(h), h / 2, -np.ones_like(h), h / 2], axis=1)
+            vals = c[:, None, None] * a[:, :, None] * a[:, None, :]     # (el, 4, 4)
+            edofs = f.basis.element_dofs.T                              # (el, 4)
+            rows = np.broadcast_to(edofs[:, :, None], vals.shape)
+            cols = np.broadcast_to(edofs[:, None, :], vals.shape)
+            blocks.append(sp.csr_matrix((vals.ravel(), (rows.ravel(), cols.ravel())),
+                                        shape=(n, n)))
+        return sp.block_diag(blocks, format="csr")
 
     def local_mass(self, g: _Group) -> sp.csr_matrix:
         """Block-diagonal consistent local mass of one element group."""
@@ -648,7 +700,57 @@ class FEModel:
                                 0.0)
                 return forms.mass, {"rhoA": rhoJ[mem]}
             return forms.mass, {"rhoA": mass_per_length(s.density, s.area)[mem]}
-        return self._block_local(g, spec)
+        M = self._block_local(g, spec)
+        if g.kind == "frame" and self.timoshenko:
+            M = (M + self._timoshenko_mass_correction(g)).tocsr()
+        return M
+
+    def _timoshenko_mass_correction(self, g: _Group) -> sp.csr_matrix:
+        """Consistent mass of the Timoshenko elements of a frame group, as a correction of
+        the cubic Euler–Bernoulli mass assembled by scikit-fem.
+
+        On an element with Φ > 0 the bending mass is that of the element's own shape
+        functions (:func:`~trussfe.mechanics.member_loads.deflection_shapes`,
+        :func:`~trussfe.mechanics.member_loads.rotation_shapes`): translational inertia
+        ``ρA ∫ N Nᵀ dx`` and rotary inertia ``ρI ∫ ψ ψᵀ dx`` (Friedman & Kosmatka 1993), by
+        5-point Gauss–Legendre quadrature (exact: the integrands are of degree 6).
+        Euler–Bernoulli elements (Φ = 0) keep their mass without rotary inertia.
+        """
+        s = self.structure
+        blocks = []
+        mem = self.element_member[g.elements]
+        h = self.element_length[g.elements]
+        gx, gw = np.polynomial.legendre.leggauss(5)
+        xi, w = 0.5 * (gx + 1.0), 0.5 * gw
+        rhoA = mass_per_length(s.density, s.area)[mem]
+        for f in g.fields:
+            n = f.basis.N
+            if f.name not in ("v", "w"):
+                blocks.append(sp.csr_matrix((n, n)))
+                continue
+            I = (s.Iz if f.name == "v" else s.Iy)[mem]
+            GAs = (s.G * (s.shear_area_y if f.name == "v" else s.shear_area_z))[mem]
+            phi = shear_parameter(s.E[mem] * I, GAs, h)
+            timo = phi > 0
+            if not np.any(timo):
+                blocks.append(sp.csr_matrix((n, n)))
+                continue
+            e = np.flatnonzero(timo)
+            he, pe = h[e, None], phi[e, None]
+            NT = deflection_shapes(xi[None, :], he, pe)                 # (el, q, 4)
+            NH = deflection_shapes(xi[None, :], he, 0.0 * pe)
+            psi = rotation_shapes(xi[None, :], he, pe)
+            wq = (w[None, :] * he)[:, :, None, None]
+            vals = (rhoA[e, None, None] * (wq * (NT[..., :, None] * NT[..., None, :]
+                                                 - NH[..., :, None] * NH[..., None, :])).sum(1)
+                    + (s.density[mem][e] * I[e])[:, None, None]
+                    * (wq * psi[..., :, None] * psi[..., None, :]).sum(1))    # (el, 4, 4)
+            edofs = f.basis.element_dofs.T[e]
+            rows = np.broadcast_to(edofs[:, :, None], vals.shape)
+            cols = np.broadcast_to(edofs[:, None, :], vals.shape)
+            blocks.append(sp.csr_matrix((vals.ravel(), (rows.ravel(), cols.ravel())),
+                                        shape=(n, n)))
+        return sp.block_diag(blocks, format="csr")
 
     def local_geometric_stiffness(self, g: _Group, N: np.ndarray) -> sp.csr_matrix:
         """Block-diagonal local geometric stiffness of one group; ``N`` per global element."""

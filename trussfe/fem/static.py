@@ -16,15 +16,18 @@ from __future__ import annotations
 
 import logging
 import time
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from ..errors import AnalysisError, InputError
 from ..mechanics.stress import round_sections, von_mises
+from ..model.member_loads import MemberLoad
 from ..model.structure import DOF_NAMES, Structure
 from ..linalg import SingularMatrixError
 from .discretisation import FEModel, discretise
+from .member_loads import MemberLoadVectors, loaded_member_stations, member_load_vector
 from .solver import factorise, factorise_truss, raise_mechanism, solve_free
 from .truss_band import internal_forces
 
@@ -75,6 +78,8 @@ class StaticResult:
         ‖K u − f‖ / ‖f‖ over the free DOFs.
     backend : str
         Linear-solver backend that factorised K_ff (:mod:`trussfe.linalg.factor`).
+    member_loads : MemberLoadVectors or None
+        The member loads applied (:mod:`trussfe.fem.member_loads`), None without any.
     timings : dict
         Wall-clock seconds of the steps: ``assemble`` (load vector and stiffness: the sparse
         K, or for a long truss the bars' blocks that go to band storage), ``factorise``,
@@ -98,6 +103,7 @@ class StaticResult:
     element_axial_force: np.ndarray
     residual: float
     backend: str = ""
+    member_loads: MemberLoadVectors | None = None
     timings: dict = field(default_factory=dict)
 
     @property
@@ -143,7 +149,8 @@ def section_forces(fe: FEModel, u: np.ndarray, element_forces: np.ndarray | None
 def solve_static(structure: Structure, bar_model: str = "truss",
                  subdivisions: int | None = None, loads: np.ndarray | None = None,
                  self_weight: bool = True, fe: FEModel | None = None,
-                 backend: str = "auto") -> StaticResult:
+                 backend: str = "auto", member_loads: Sequence[MemberLoad] | None = None
+                 ) -> StaticResult:
     """Linear static analysis of a structure.
 
     Parameters
@@ -160,6 +167,10 @@ def solve_static(structure: Structure, bar_model: str = "truss",
         A discretisation to reuse.
     backend : {"auto", "superlu", "pardiso"}
         Linear-solver backend (:mod:`trussfe.linalg.factor`).
+    member_loads : sequence of MemberLoad, optional
+        Loads along members (default ``structure.extensions["member_loads"]``; ``()`` for
+        none): their equivalent nodal loads join the load vector and their fixed-end forces
+        are subtracted in the recovery of the member forces (:mod:`trussfe.fem.member_loads`).
 
     Returns
     -------
@@ -189,6 +200,11 @@ def solve_static(structure: Structure, bar_model: str = "truss",
         fe = discretise(structure, bar_model=bar_model, subdivisions=subdivisions)
     t0 = time.perf_counter()
     f = fe.load_vector(self_weight=self_weight, loads=loads)
+    if member_loads is None:
+        member_loads = structure.extensions.get("member_loads", ())
+    mlv = member_load_vector(fe, member_loads) if len(member_loads) else None
+    if mlv is not None:
+        f = f + mlv.global_vector
     # a long truss of single bars: K_ff banded straight from the bars, K·u bar by bar
     truss = factorise_truss(fe, backend)
     if truss is not None:
@@ -224,7 +240,12 @@ def solve_static(structure: Structure, bar_model: str = "truss",
         raise AnalysisError(structure.source or structure.name,
                             "the linear solve produced non-finite displacements; the "
                             "stiffness is too ill-conditioned to trust")
-    fel = fe.element_forces(u)
+    if mlv is None:
+        fel = fe.element_forces(u)
+    else:
+        base = (fe.element_self_weight_local() if self_weight
+                else [np.zeros(g.n_local) for g in fe.groups])
+        fel = fe.element_forces(u, [b + ml for b, ml in zip(base, mlv.local)])
     x, F = section_forces(fe, u, fel)
     s = structure
     m = s.n_members
@@ -258,7 +279,7 @@ def solve_static(structure: Structure, bar_model: str = "truss",
         end_forces=ends, station_x=x, section_forces=F, von_mises_s1=s1, von_mises_s2=s2,
         max_von_mises=max_vm,
         element_axial_force=0.5 * (fel[:, 1, 0] - fel[:, 0, 0]), residual=residual,
-        backend=fac.backend)
+        backend=fac.backend, member_loads=mlv)
     t4 = time.perf_counter()
     # wall-clock seconds: load vector and stiffness (sparse K, or the bars' blocks for the
     # band), factorisation (band fill included), solve with refinement and residual, recovery
@@ -275,7 +296,9 @@ def static_json(result: StaticResult, command: str = "static") -> dict:
     rotational DOFs), ``reaction`` (supported nodes: forces) and ``reaction_moment`` (where a
     rotation is supported).  ``members[id]``: ``axial_force``, ``axial_stress``, ``strain``,
     ``max_von_mises``, ``end_forces`` = ``{"start": {N, Vy, Vz, T, My, Mz}, "end": {...}}``
-    (section forces, member axes, N tension positive).
+    (section forces, member axes, N tension positive); for a member carrying member loads,
+    ``stations`` = ``{x, N, Vy, Vz, T, My, Mz}``: the section forces along it
+    (:func:`trussfe.fem.member_loads.loaded_member_stations`).
     """
     fe = result.fe
     s = fe.structure
@@ -293,6 +316,14 @@ def static_json(result: StaticResult, command: str = "static") -> dict:
             d["reaction_moment"] = result.reactions[i, dim:].tolist()
         nodes[nid] = d
     members = {}
+    along = {}
+    if result.member_loads is not None:
+        lm, lx, lF = loaded_member_stations(fe, result.member_loads, result.station_x,
+                                            result.section_forces)
+        for i, x, F in zip(lm, lx, lF):
+            ok = np.isfinite(x)
+            along[int(i)] = {"x": x[ok].tolist(), **{
+                n: F[ok, c].tolist() for c, n in enumerate(SECTION_FORCE_NAMES)}}
     for i, mid in enumerate(s.member_ids):
         members[mid] = {
             "axial_force": float(result.axial_force[i]),
@@ -303,6 +334,8 @@ def static_json(result: StaticResult, command: str = "static") -> dict:
                 end: dict(zip(SECTION_FORCE_NAMES, result.end_forces[i, e].tolist()))
                 for e, end in enumerate(("start", "end"))},
         }
+        if i in along:
+            members[mid]["stations"] = along[i]
     return {
         "units": "SI",
         "command": command,

@@ -20,6 +20,9 @@ from ..model.actuators import ACME_THREAD_ANGLE, Actuator
 from ..model.failure import BUCKLING, YIELD, FailureLaws
 from .failure_laws import build_failure_laws
 from ..model.bar_models import BAR_MODELS
+from ..model.member_loads import AXES as LOAD_AXES
+from ..model.member_loads import KINDS as LOAD_KINDS
+from ..model.member_loads import MemberLoad
 from ..model.postcritical import CONTROLS, SETTING_TYPES, PostcriticalSettings
 from ..model.structure import Structure
 
@@ -292,10 +295,100 @@ def parse_monitor(text: str, structure: Structure, item: str = "--monitor") -> t
         raise InputError(item, f"node '{node}' is not defined")
     return structure.node_index(node), AXES.index(axis)
 
+#: Keys of a member load besides ``member``, ``kind`` and ``axes``, per kind.
+_LOAD_KEYS = {"uniform": ("q",), "trapezoidal": ("q_start", "q_end"), "point": ("at", "F", "M")}
+
+
+def _load_vector(raw: dict, key: str, item: str, size: int) -> tuple[float, ...]:
+    v = raw[key]
+    if not isinstance(v, list) or len(v) != size:
+        n = len(v) if isinstance(v, list) else "not a list"
+        raise InputError(f"{item}.{key}", f"expected {size} numbers, got {n}"
+                         + (f" ({v!r})" if not isinstance(v, list) else ""))
+    out = []
+    for i, x in enumerate(v):
+        if isinstance(x, bool) or not isinstance(x, (int, float)) or not math.isfinite(
+                float(x)):
+            raise InputError(f"{item}.{key}[{i}]", f"expected a finite number, got {x!r}")
+        out.append(float(x))
+    return tuple(out)
+
+
+def parse_member_loads(raw: Any, structure: Structure, base_dir: Path | None = None,
+                       item: str = "member_loads") -> tuple[MemberLoad, ...]:
+    """Read a ``member_loads`` array (:mod:`trussfe.model.member_loads`).
+
+    ``item`` names the array in messages (``member_loads``, or the array of a load case).
+
+    Raises
+    ------
+    InputError
+        Not an array of tables, a member that does not exist, an unknown kind or axes, a
+        position outside [0, 1], a vector of the wrong length, a couple about the axis of a
+        pin-ended bar (it carries no torsion).
+    """
+    if not isinstance(raw, list) or not all(isinstance(t, dict) for t in raw):
+        raise InputError(item, "expected an array of tables { member = .., kind = .., ... }")
+    dim = structure.dim
+    out = []
+    for n, t in enumerate(raw):
+        it = f"{item}[{n}]"
+        if "member" not in t:
+            raise InputError(it, "missing 'member'")
+        mid = str(t["member"])
+        try:
+            k = structure.member_index(mid)
+        except KeyError:
+            raise InputError(f"{it}.member", f"member '{mid}' is not defined in [members]") \
+                from None
+        it = f"{item}[{n}] (member {mid})"
+        kind = t.get("kind")
+        if kind not in LOAD_KINDS:
+            raise InputError(f"{it}.kind", f"unknown member-load kind {kind!r}; use one of "
+                             + ", ".join(LOAD_KINDS))
+        allowed = ("member", "kind", "axes") + _LOAD_KEYS[kind]
+        for key in t:
+            if key not in allowed:
+                raise InputError(f"{it}.{key}", f"unknown key '{key}' for a {kind} load; "
+                                 f"valid: {', '.join(allowed)}")
+        axes = t.get("axes", "global")
+        if axes not in LOAD_AXES:
+            raise InputError(f"{it}.axes", f"unknown axes {axes!r}; use global or local")
+        for key in _LOAD_KEYS[kind]:
+            if key not in t and key not in ("M", "F"):
+                raise InputError(it, f"missing '{key}' (a {kind} load needs "
+                                     f"{' and '.join(_LOAD_KEYS[kind][:2])})")
+        if kind == "uniform":
+            q = _load_vector(t, "q", it, dim)
+            ld = MemberLoad(k, kind, q, q, axes=axes)
+        elif kind == "trapezoidal":
+            ld = MemberLoad(k, kind, _load_vector(t, "q_start", it, dim),
+                            _load_vector(t, "q_end", it, dim), axes=axes)
+        else:
+            a = _num(t, "at", it)
+            if not 0.0 <= a <= 1.0:
+                raise InputError(f"{it}.at", f"must be a fraction of the member length in "
+                                             f"[0, 1], got {t['at']!r}")
+            if "F" not in t and "M" not in t:
+                raise InputError(it, "a point load needs F (a force) and/or M (a couple)")
+            F = _load_vector(t, "F", it, dim) if "F" in t else ()
+            M = _load_vector(t, "M", it, 1 if dim == 2 else 3) if "M" in t else ()
+            if M and dim == 3 and not structure.is_beam[k]:
+                e = structure.unit_vectors()[k] if axes == "global" else (1.0, 0.0, 0.0)
+                if abs(sum(mi * ei for mi, ei in zip(M, e))) > 1e-12 * max(map(abs, M)):
+                    raise InputError(f"{it}.M", "a bar carries no torsion: a couple on a bar "
+                                                "must be perpendicular to it (or make the "
+                                                "member a beam)")
+            ld = MemberLoad(k, kind, at=a, force=F, moment=M, axes=axes)
+        out.append(ld)
+    return tuple(out)
+
+
 #: Extension tables and their readers ``reader(raw, structure, base_dir)``, in reading order.
 TABLES: dict[str, Callable[[Any, Structure, Path], Any]] = {
     "active_members": parse_active_members,
     "actuators": parse_actuators,
     "failure": parse_failure_table,
     "postcritical": parse_settings,
+    "member_loads": parse_member_loads,
 }

@@ -12,6 +12,7 @@ import contextvars
 import difflib
 import logging
 import math
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -137,7 +138,54 @@ def parse_section(name: str, raw: Any) -> Section:
     expl_keys = ("area", "Iy", "Iz", "J", "c")
     if not isinstance(raw, dict):
         raise InputError(item, "expected a table with outer_diameter/inner_diameter or area")
-    _check_keys(raw, tube_keys + expl_keys, item)
+    _check_keys(raw, tube_keys + expl_keys + SHEAR_KEYS, item)
+    section = _section_properties(item, raw, tube_keys, expl_keys)
+    return _shear_deformation(item, raw, section)
+
+
+#: Keys of a section that make it shear-deformable (a Timoshenko beam).
+SHEAR_KEYS = ("shear_area_y", "shear_area_z", "beam_theory", "shear_coefficient")
+#: Beam theories a section may name.
+BEAM_THEORIES = ("euler-bernoulli", "timoshenko")
+
+
+def _shear_deformation(item: str, raw: dict, section: Section) -> Section:
+    """The section with its shear areas: given (``shear_area_y``, ``shear_area_z``, m²), or
+    ``shear_coefficient`` κ times the area under ``beam_theory = "timoshenko"``."""
+    theory = raw.get("beam_theory")
+    if theory is not None and theory not in BEAM_THEORIES:
+        raise InputError(f"{item}.beam_theory", f"unknown beam theory {theory!r}; use "
+                                                "euler-bernoulli or timoshenko")
+    given = [k for k in ("shear_area_y", "shear_area_z") if k in raw]
+    if theory == "euler-bernoulli" and (given or "shear_coefficient" in raw):
+        raise InputError(f"{item}.beam_theory", "an euler-bernoulli section has no shear "
+                                                "area: remove the shear keys or use timoshenko")
+    if "shear_coefficient" in raw and theory != "timoshenko":
+        raise InputError(f"{item}.shear_coefficient", 'needs beam_theory = "timoshenko"')
+    areas = {}
+    for k in given:
+        v = raw[k]
+        if isinstance(v, (int, float)) and not isinstance(v, bool) and v <= 0:
+            raise InputError(f"{item}.{k}", f"a Timoshenko section needs a positive shear "
+                                            f"area, got {v!r}")
+        areas[k] = _number(v, f"{item}.{k}", positive=True)
+    if theory == "timoshenko" and len(areas) < 2:
+        if "shear_coefficient" not in raw:
+            if not areas:
+                raise InputError(f"{item}.beam_theory", "a timoshenko section needs "
+                                 "shear_area_y and shear_area_z (m²) or shear_coefficient")
+        else:
+            kappa = _number(raw["shear_coefficient"], f"{item}.shear_coefficient",
+                            positive=True)
+            for k in ("shear_area_y", "shear_area_z"):
+                areas.setdefault(k, kappa * section.area)
+    if not areas:
+        return section
+    return replace(section, **areas)
+
+
+def _section_properties(item: str, raw: dict, tube_keys, expl_keys) -> Section:
+    name = item.split(".", 1)[1]
     if "outer_diameter" in raw:
         extra = [k for k in raw if k in expl_keys and k != "c"]
         if extra:
@@ -195,22 +243,27 @@ def _parse_member(mid: str, raw: Any, node_index: dict, sections: dict, material
         raise InputError(f"{item}.type", f"unknown member type '{mtype}'{_suggest(mtype, ('bar', 'beam'))}")
     rel = raw.get("releases", [])
     if isinstance(rel, dict):
-        # per-end form: { start = ["bending", "torsion"], end = [...] }
+        # per-end form: { start = ["bending", "torsion"] or ["my", "mz", "t"], end = [...] }
         _check_keys(rel, ("start", "end"), f"{item}.releases")
-        bend, tors = [False, False], [False, False]
+        axes, tors = [[False, False], [False, False]], [False, False]
         for e, key in enumerate(("start", "end")):
             if key in rel:
                 try:
-                    bend[e], tors[e] = parse_end_release(rel[key], dim)
+                    my, mz, tors[e] = parse_end_release(rel[key], dim)
                 except ValueError as exc:
                     raise InputError(f"{item}.releases.{key}", str(exc)) from None
-        flags = (tuple(bend), tuple(tors))
+                axes[e] = [my, mz]
+        # both bending moments released: the ``releases`` flag; one alone: per axis
+        bend = [mz if dim == 2 else (my and mz) for my, mz in axes]
+        one = [[a and not b for a in ax] for ax, b in zip(axes, bend)]
+        flags = (tuple(bend), tuple(tors), one)
     elif not isinstance(rel, list) or any(r not in ("start", "end") for r in rel):
         raise InputError(f"{item}.releases", "expected a list of \"start\" and/or \"end\", "
                                              "or a table { start = [...], end = [...] } of "
                                              "\"bending\" and/or \"torsion\"")
     else:
-        flags = (("start" in rel, "end" in rel), (False, False))
+        flags = (("start" in rel, "end" in rel), (False, False),
+                 [[False, False], [False, False]])
     if rel and mtype != "beam":
         raise InputError(f"{item}.releases", "releases apply to beams only (a bar is pinned "
                                              "at both ends already)")
@@ -286,7 +339,7 @@ def _parse_model(data: dict, base_dir: Path, source: str) -> Structure:
 
     if "mesh" in model:
         (node_ids, coords, member_ids, conn, secs, mats, beam, rel, orient,
-         group_code) = _mesh_geometry(str(model["mesh"]), base_dir, dim, data, sections,
+         group_code, axis_rel) = _mesh_geometry(str(model["mesh"]), base_dir, dim, data, sections,
                                       materials)
     else:
         nodes = _table(data, "nodes", required=True)
@@ -307,7 +360,8 @@ def _parse_model(data: dict, base_dir: Path, source: str) -> Structure:
         secs = [p[1] for p in parsed]
         mats = [p[2] for p in parsed]
         beam = np.array([p[3] for p in parsed], dtype=bool)
-        rel = np.array([p[4] for p in parsed], dtype=bool).reshape(-1, 2, 2)
+        rel = np.array([p[4][:2] for p in parsed], dtype=bool).reshape(-1, 2, 2)
+        axis_rel = np.array([p[4][2] for p in parsed], dtype=bool).reshape(-1, 2, 2)
         orient = np.array([p[5] for p in parsed]).reshape(-1, 3)
         group_code = None
 
@@ -332,11 +386,12 @@ def _parse_model(data: dict, base_dir: Path, source: str) -> Structure:
         i = _node_ref(k, node_index, "masses")
         masses[i] = _number(v, f"masses.{k}", nonneg=True)
 
-    for a in (coords, conn, supports, loads, masses, beam, rel, orient):
+    for a in (coords, conn, supports, loads, masses, beam, rel, orient, axis_rel):
         a.flags.writeable = False           # the reader's own arrays: the model need not copy
     s = Structure(name=name, dim=dim, node_ids=node_ids, coords=coords, member_ids=member_ids,
                   connectivity=conn, sections=secs, materials=mats, is_beam=beam,
                   releases=rel[:, 0], torsion_releases=rel[:, 1],
+                  bending_axis_releases=axis_rel,
                   supports=supports, loads=loads, masses=masses, gravity=gravity,
                   orientation=orient, source=source, member_groups=group_code)
     # each table is read against the model holding the ones before it (actuators need the
@@ -520,6 +575,7 @@ def _mesh_geometry(mesh_name, base_dir, dim, data, sections, materials):
     sec_of, mat_of = {}, {}
     beam_of = np.zeros(len(names), dtype=bool)
     rel_of = np.zeros((len(names), 2, 2), dtype=bool)
+    axis_of = np.zeros((len(names), 2, 2), dtype=bool)
     orient_of = np.full((len(names), 3), np.nan)
     for c in used:
         gname = names[c]
@@ -531,8 +587,9 @@ def _mesh_geometry(mesh_name, base_dir, dim, data, sections, materials):
             raise InputError(f"groups.{gname}", "expected a table { section, material }")
         raw = dict(g)
         raw["nodes"] = ["0", "1"]
-        _, sec_of[c], mat_of[c], beam_of[c], rel_of[c], orient_of[c] = _parse_member(
+        _, sec_of[c], mat_of[c], beam_of[c], flags, orient_of[c] = _parse_member(
             f"groups.{gname}", raw, {"0": 0, "1": 1}, sections, materials, dim)
+        rel_of[c], axis_of[c] = flags[:2], flags[2]
     # per-member lists by one object-array gather (no Python loop over millions of cells)
     sec_obj = np.empty(len(names), dtype=object)
     mat_obj = np.empty(len(names), dtype=object)
@@ -542,7 +599,8 @@ def _mesh_geometry(mesh_name, base_dir, dim, data, sections, materials):
     node_ids = IdRange(coords.shape[0])
     member_ids = IdRange(m)
     return (node_ids, coords, member_ids, conn, tuple(sec_obj[code].tolist()),
-            tuple(mat_obj[code].tolist()), beam_of[code], rel_of[code], orient_of[code], code)
+            tuple(mat_obj[code].tolist()), beam_of[code], rel_of[code], orient_of[code], code,
+            axis_of[code])
 
 
 def _read_mesh(path: Path):

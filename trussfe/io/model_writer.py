@@ -97,9 +97,12 @@ def _unique_names(objs: list, kind: str) -> dict[int, str]:
 
 def _section_table(sec: Section) -> dict:
     if sec.is_tube:
-        return {"outer_diameter": sec.outer_diameter, "inner_diameter": sec.inner_diameter}
-    out = {"area": sec.area}
-    for key in ("Iy", "Iz", "J", "c"):
+        out = {"outer_diameter": sec.outer_diameter, "inner_diameter": sec.inner_diameter}
+        keys = ("shear_area_y", "shear_area_z")
+    else:
+        out = {"area": sec.area}
+        keys = ("Iy", "Iz", "J", "c", "shear_area_y", "shear_area_z")
+    for key in keys:
         v = getattr(sec, key)
         if not math.isnan(v):
             out[key] = v
@@ -159,11 +162,14 @@ def model_toml(structure: Structure, *, mesh: str | None = None, header: str = "
         if s.is_beam[i]:
             d["type"] = "beam"
             rel = [e for e, r in zip(("start", "end"), s.releases[i]) if r]
-            if s.torsion_releases[i].any():          # per-end form: bending and/or torsion
+            axes = s.bending_axis_releases[i]
+            if s.torsion_releases[i].any() or axes.any():   # per-end form
                 d["releases"] = {e: [w for w, r in (("bending", s.releases[i, k]),
+                                                    ("my", axes[k, 0]), ("mz", axes[k, 1]),
                                                     ("torsion", s.torsion_releases[i, k])) if r]
                                  for k, e in enumerate(("start", "end"))
-                                 if s.releases[i, k] or s.torsion_releases[i, k]}
+                                 if s.releases[i, k] or s.torsion_releases[i, k]
+                                 or axes[k].any()}
             elif rel:
                 d["releases"] = rel
         if s.orientation is not None and np.all(np.isfinite(s.orientation[i])):
@@ -226,6 +232,7 @@ def _mesh_groups(s: Structure) -> dict[str, np.ndarray]:
     key = ((sec * (mat.max(initial=0) + 1) + mat) * 2 + s.is_beam) * 4 \
         + s.releases[:, 0] * 2 + s.releases[:, 1]
     key = key * 4 + s.torsion_releases[:, 0] * 2 + s.torsion_releases[:, 1]
+    key = key * 16 + s.bending_axis_releases.reshape(-1, 4) @ np.array([8, 4, 2, 1])
     uniq, first, inverse = np.unique(key, return_index=True, return_inverse=True)
     if len(uniq) == 1:
         return {"default": np.arange(s.n_members)}

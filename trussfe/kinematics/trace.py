@@ -679,7 +679,7 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
                     branch: int = 0, tolerance: float = 1e-10, max_iterations: int = 30,
                     newton: bool = True, rank_tolerance: float | None = None,
                     names: list[str] | None = None,
-                    progress: Callable[[int], None] | None = None) -> TraceResult:
+                    progress: Callable[[int, int], None] | None = None) -> TraceResult:
     """Follow the finite motion of a mechanism (Hortobágyi sections 3–6).
 
     Parameters
@@ -717,7 +717,7 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
     names : list of str, optional
         Coordinate names ``"node:axis"`` for events and messages.
     progress : callable, optional
-        Called with the step number before every step (a progress bar; it may raise
+        Called as ``progress(step, steps)`` before every step (a progress bar; it may raise
         ``KeyboardInterrupt`` to stop the trace).
 
     Returns
@@ -761,7 +761,7 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
     trace = _Trace(setup, branch, tolerance, max_iterations, newton)
     for k in range(1, steps + 1):
         if progress is not None:
-            progress(k)
+            progress(k, steps)
         trace.step(k)
     return trace.result()
 

@@ -231,3 +231,68 @@ def nearest_zero_mode(K: sp.spmatrix) -> tuple[float, np.ndarray]:
         return float(w[i]), v[:, i]
     w, v = spla.eigsh(sp.csc_matrix(K), k=1, sigma=0.0, which="LM")
     return float(w[0]), v[:, 0] / np.linalg.norm(v[:, 0])
+
+
+#: Order up to which a buckling eigenproblem is solved densely (LAPACK); above it, by ARPACK.
+#: Dense is also deterministic in the modes' signs (ARPACK's depend on its start vector),
+#: which matters where a mode becomes an imperfection.
+DENSE_BUCKLING_LIMIT = 800
+
+
+def buckling_pairs(K: sp.spmatrix, Kg: sp.spmatrix, count: int, *,
+                   positive_only: bool = False, solve: Callable | None = None,
+                   dense_limit: int = DENSE_BUCKLING_LIMIT) -> tuple[np.ndarray, np.ndarray]:
+    """Eigenpairs of the linear buckling problem ``(K + λ K_g) φ = 0``, K positive definite.
+
+    Solved as ``−K_g φ = μ K φ`` with ``λ = 1/μ``, so that the smallest load factors are the
+    largest ``|μ|`` — the end of the spectrum ARPACK converges to fastest — and ``K`` is the
+    positive definite "mass".  Both finite-element models (the linear core and the
+    co-rotational model about its reference state) solve their buckling problem here.
+
+    Parameters
+    ----------
+    K, Kg : sparse matrix, shape (n, n)
+        Elastic and geometric stiffness on the free DOFs (``Kg`` of the reference load).
+    count : int
+        Number of pairs wanted.
+    positive_only : bool
+        Only ``μ > 0`` (``λ > 0``: the reference load's own sense), ascending ``λ``; else the
+        ``count`` largest ``|μ|`` of either sign, by ascending ``|λ|``.
+    solve : callable, optional
+        ``K⁻¹ b`` from an existing factorisation, for ARPACK's generalized mode (otherwise
+        ARPACK factorises ``K`` itself).
+    dense_limit : int
+        Largest order solved densely.
+
+    Returns
+    -------
+    mu : ndarray, shape (k,)
+        ``μ = 1/λ`` in the order above (``k ≤ count``; with ``positive_only`` only the
+        positive ones found, tiny ones, ``μ ≤ 1e-12 max |μ|``, excluded).
+    V : ndarray, shape (n, k)
+        The modes, as the eigen-solver returns them (callers scale them).
+
+    Examples
+    --------
+    A pinned–pinned bar as two springs: K = diag(2, 2), K_g = −diag(1, 0.5):
+
+    >>> mu, V = buckling_pairs(sp.diags([2.0, 2.0]), sp.diags([-1.0, -0.5]), 2)
+    >>> (1.0 / mu).round(12).tolist()
+    [2.0, 4.0]
+    """
+    n = K.shape[0]
+    if n <= dense_limit or count >= n - 1:
+        mu, V = sla.eigh(-Kg.toarray(), K.toarray())
+    elif positive_only:
+        k = min(max(2 * count, count + 4), n - 2)
+        op = None if solve is None else spla.LinearOperator((n, n), matvec=solve, dtype=float)
+        mu, V = spla.eigsh(-Kg.tocsc(), k=k, M=K.tocsc(), Minv=op, which="LA")
+    else:
+        op = None if solve is None else spla.LinearOperator((n, n), matvec=solve, dtype=float)
+        mu, V = spla.eigsh(-Kg.tocsc(), k=count, M=K.tocsc(), Minv=op, which="LM")
+    if positive_only:
+        pos = mu > 1e-12 * np.abs(mu).max() if mu.size else np.zeros(0, bool)
+        order = np.argsort(-mu[pos])[:count]
+        return mu[pos][order], V[:, pos][:, order]
+    order = np.argsort(-np.abs(mu), kind="stable")[:count]
+    return mu[order], V[:, order]

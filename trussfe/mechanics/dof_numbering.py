@@ -55,6 +55,9 @@ def member_end_rotations(structure: Structure, bar_model: str,
         d = s.member_vectors()
         axis = d / np.sqrt(np.einsum("ij,ij->i", d, d))[:, None]
     released = np.where(s.is_beam[:, None], s.releases, True) & frame[:, None]
+    # per bending axis (my, mz): both where released, one where a beam releases one alone
+    released = released[:, :, None] | (s.bending_axis_releases & (s.is_beam & frame)[:, None,
+                                                                                     None])
     return end_rotations(dim, s.connectivity, axis, frame, s.is_beam & (dim == 3), released,
                          s.torsion_releases & s.is_beam[:, None], s.supports[:, dim:])
 

@@ -24,8 +24,11 @@ The rules
   axis.  A joint where only bars and released ends meet is a ball joint: it carries no moment
   of any kind, and the twist of a released end arriving there is ``OWN``.  Holding it would be
   a support nobody asked for.
-* Torsion can be released explicitly (``releases = { end = ["torsion"] }``): the twist of that
-  end is then ``OWN`` whatever the joint.
+* Torsion can be released explicitly (``releases = { end = ["torsion"] }``, or ``"t"``): the
+  twist of that end is then ``OWN`` whatever the joint.
+* One bending moment can be released alone (``"my"``: about the member's local y axis,
+  ``"mz"``: about z): that bending rotation is ``OWN``, the other stays ``JOINT`` — the end
+  is a hinge about one axis, and still gives its joint rotational stiffness.
 * A member whose twist is ``OWN`` at both ends could spin about its own axis: its start twist
   is held (``JOINT`` where the start joint has rotations, ``HELD`` otherwise) so that it
   cannot, and nothing else — with the end free, that hold never carries a moment.
@@ -96,8 +99,11 @@ def end_rotations(dim: int, connectivity: np.ndarray, axis: np.ndarray, frame: n
         Members that bend (beams; bars too under the pinned-beam bar model).
     twist : ndarray of bool, shape (m,)
         Members with a torsion field (3-D beams).
-    bending_released, torsion_released : ndarray of bool, shape (m, 2)
-        Ends released in bending (a pinned-beam bar: both) and in torsion.
+    bending_released : ndarray of bool, shape (m, 2) or (m, 2, 2)
+        Ends released in bending (a pinned-beam bar: both): both bending moments, or per
+        bending axis ``[..., (my, mz)]`` (the moment about local y, about local z).
+    torsion_released : ndarray of bool, shape (m, 2)
+        Ends released in torsion.
     rotation_supports : ndarray of bool, shape (n, r)
         Supported rotations of every joint (global axes).
 
@@ -122,18 +128,24 @@ def end_rotations(dim: int, connectivity: np.ndarray, axis: np.ndarray, frame: n
     frame = np.asarray(frame, dtype=bool)
     twist = np.asarray(twist, dtype=bool) & frame & (dim == 3)
     sup = np.asarray(rotation_supports, dtype=bool)
-    rigid = frame[:, None] & ~np.asarray(bending_released, dtype=bool)     # (m, 2)
+    rel = np.asarray(bending_released, dtype=bool)
+    if rel.ndim == 2:                                   # both bending axes together
+        rel = np.repeat(rel[:, :, None], 2, axis=2)
+    if dim == 2:
+        rel = np.repeat(rel[:, :, 1:], 2, axis=2)       # the one bending axis is z
+    # an end that transmits any bending moment gives its joint rotational stiffness
+    rigid = frame[:, None] & ~np.all(rel, axis=2)                          # (m, 2)
     rigid_joint = np.zeros(n, dtype=bool)
     rigid_joint[conn[rigid]] = True
     ncomp = 1 if dim == 2 else 3
     state = np.full((m, 2, ncomp), HELD, dtype=np.int8)
-    bend = np.where(rigid, JOINT, OWN).astype(np.int8)
+    bend = np.where(rel, OWN, JOINT).astype(np.int8)                       # (m, 2, 2)
     if dim == 2:
-        state[frame, :, 0] = bend[frame]
+        state[frame, :, 0] = bend[frame, :, 1]
         held = sup & rigid_joint[:, None]
         return EndRotations(state, rigid_joint, held)
-    state[frame, :, 1] = bend[frame]
-    state[frame, :, 2] = bend[frame]
+    state[frame, :, 1] = bend[frame, :, 0]
+    state[frame, :, 2] = bend[frame, :, 1]
     # torsion: through a rigid joint, or a joint whose supported rotations contain the axis
     ax = np.abs(np.asarray(axis, dtype=float))                              # (m, 3)
     along_support = np.all((ax[:, None, :] < _ALONG) | sup[conn], axis=2)   # (m, 2)
@@ -151,17 +163,36 @@ def end_rotations(dim: int, connectivity: np.ndarray, axis: np.ndarray, frame: n
     return EndRotations(state, joint_rotation, held)
 
 
-def parse_end_release(value, dim: int) -> tuple[bool, bool]:
-    """``(bending, torsion)`` released by one end's list of the per-end release form.
+#: Names of one end's releases: both bending moments, torsion, everything, and one axis each
+#: (``my``/``mz``: the bending moment about the member's local y/z axis; ``t``: torsion).
+RELEASE_NAMES = ("bending", "torsion", "all", "my", "mz", "t")
 
-    ``value`` is a list of ``"bending"`` and/or ``"torsion"``; ``"all"`` releases both.
+
+def parse_end_release(value, dim: int) -> tuple[bool, bool, bool]:
+    """``(my, mz, torsion)`` released by one end's list of the per-end release form.
+
+    ``value`` is a list of ``"bending"`` (``my`` and ``mz``), ``"my"``, ``"mz"``,
+    ``"torsion"`` (or ``"t"``) and ``"all"`` (everything).  In 2-D the one bending moment is
+    ``mz`` (``"bending"`` and ``"mz"`` mean the same); ``my`` and torsion need a 3-D model.
     Raises ValueError with the reason when the list is not of that form.
+
+    Examples
+    --------
+    >>> parse_end_release(["my", "t"], 3), parse_end_release(["bending"], 2)
+    ((True, False, True), (False, True, False))
     """
-    if not isinstance(value, list) or any(v not in ("bending", "torsion", "all")
-                                          for v in value):
-        raise ValueError('expected a list of "bending", "torsion" or "all"')
-    bending = "bending" in value or "all" in value
-    torsion = "torsion" in value or ("all" in value and dim == 3)
-    if "torsion" in value and dim != 3:
+    if not isinstance(value, list) or any(v not in RELEASE_NAMES for v in value):
+        bad = next((v for v in value if v not in RELEASE_NAMES), value) \
+            if isinstance(value, list) else value
+        raise ValueError(f"unknown release {bad!r}: expected a list of "
+                         + ", ".join(f'"{n}"' for n in RELEASE_NAMES))
+    every = "all" in value
+    both = "bending" in value or every
+    my = (both or "my" in value) and dim == 3
+    mz = both or "mz" in value
+    torsion = "torsion" in value or "t" in value or (every and dim == 3)
+    if dim != 3 and ("torsion" in value or "t" in value):
         raise ValueError("a torsion release needs a 3-D model")
-    return bending, torsion
+    if dim != 3 and "my" in value:
+        raise ValueError('a 2-D model bends about z only: release "mz" (or "bending")')
+    return my, mz, torsion

@@ -22,9 +22,11 @@ Von Mises at two points of the section (Lacy eqs. 2.24 and 2.25):
 Convention ``"lacy-per-axis"`` is the thesis' 3-D form (Lacy eqs. 4.75/4.76): each moment
 component is taken at its own extreme fibre together with the shear of the component that
 peaks there, S2 = max over the two axes of sqrt((|σ_T| + |σ_My|)² + 3 τ_y²) and
-sqrt((|σ_T| + |σ_Mz|)² + 3 τ_z²), τ_y = κ Vy / A, τ_z = κ Vz / A.  For the thesis' tubes it
-differs from ``"combined"`` only by the shear term, which the thesis notes is negligible.
-Neither form has a torsion term (the thesis has none).
+sqrt((|σ_T| + |σ_Mz|)² + 3 τ_z²), τ_y = κ Vy / A, τ_z = κ Vz / A.  On a tube it agrees with
+``"combined"`` up to the shear term (negligible, as the thesis notes) when the moment is about
+one member axis; when it has components about both, the per-axis form takes the larger one
+where the tube's extreme fibre carries their resultant (up to √2 more), so its value depends on
+the member frame.  Neither form has a torsion term (the thesis has none).
 """
 from __future__ import annotations
 

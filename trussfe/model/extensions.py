@@ -7,6 +7,7 @@ table              value                                           data module
 active_members     tuple of :class:`~.active.ActiveMember`         :mod:`trussfe.model.active`
 actuators          tuple of :class:`~.actuators.Actuator`          :mod:`trussfe.model.actuators`
 failure            :class:`~.failure.FailureLaws`                  :mod:`trussfe.model.failure`
+member_loads       tuple of :class:`~.member_loads.MemberLoad`     :mod:`trussfe.model.member_loads`
 postcritical       :class:`~.postcritical.PostcriticalSettings`    :mod:`trussfe.model.postcritical`
 =================  ==============================================  ==========================
 
@@ -25,10 +26,12 @@ import numpy as np
 from .active import ActiveMember
 from .actuators import Actuator
 from .failure import FailureLaws
+from .member_loads import MemberLoad
 from .postcritical import PostcriticalSettings
 
 #: Extension tables, in the order a model file lists them.
-EXTENSION_TABLES = ("active_members", "actuators", "failure", "postcritical")
+EXTENSION_TABLES = ("active_members", "actuators", "failure", "postcritical",
+                    "member_loads")
 
 
 def _members(items, cls, table: str, m: int) -> tuple:
@@ -62,6 +65,8 @@ def freeze_extensions(tables: Mapping[str, Any], n_members: int) -> Mapping[str,
             value = _members(value, ActiveMember, key, n_members)
         elif key == "actuators":
             value = _members(value, Actuator, key, n_members)
+        elif key == "member_loads":
+            value = _members(value, MemberLoad, key, n_members)
         elif key == "failure":
             if not isinstance(value, FailureLaws) or value.n_members != n_members:
                 raise ValueError(f"extensions['failure']: expected FailureLaws of "
@@ -81,12 +86,12 @@ def freeze_extensions(tables: Mapping[str, Any], n_members: int) -> Mapping[str,
 def subset_extensions(tables: Mapping[str, Any], keep: np.ndarray) -> dict[str, Any]:
     """The extension tables of the members ``keep`` (indices, ascending), renumbered.
 
-    Active members and actuators of members not kept are dropped.
+    Active members, actuators and member loads of members not kept are dropped.
     """
     new_index = {int(old): new for new, old in enumerate(keep)}
     out: dict[str, Any] = {}
     for key, value in tables.items():
-        if key in ("active_members", "actuators"):
+        if key in ("active_members", "actuators", "member_loads"):
             value = tuple(replace(a, member=new_index[a.member]) for a in value
                           if a.member in new_index)
         elif key == "failure":

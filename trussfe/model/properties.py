@@ -16,7 +16,7 @@ import numpy as np
 from .sections import Material, Section
 
 #: Section attributes spread over the members, and the material ones.
-SECTION_PROPERTIES = ("area", "Iy", "Iz", "J", "c")
+SECTION_PROPERTIES = ("area", "Iy", "Iz", "J", "c", "shear_area_y", "shear_area_z")
 MATERIAL_PROPERTIES = ("E", "G", "density", "yield_strength")
 
 
@@ -29,6 +29,9 @@ class MemberProperties:
     area, Iy, Iz, J, c : ndarray
         Area (m²), second moments about local y and z (m⁴), torsion constant (m⁴), outer-fibre
         distance (m); ``nan`` where the section does not define the value.
+    shear_area_y, shear_area_z : ndarray
+        Effective shear areas κA for shear along local y and z, m² (``nan``: no shear
+        deformation).
     E, G, density, yield_strength : ndarray
         Young's and shear moduli (Pa), density (kg/m³), yield strength (Pa, ``nan`` if unknown).
     """
@@ -38,6 +41,8 @@ class MemberProperties:
     Iz: np.ndarray
     J: np.ndarray
     c: np.ndarray
+    shear_area_y: np.ndarray
+    shear_area_z: np.ndarray
     E: np.ndarray
     G: np.ndarray
     density: np.ndarray

@@ -29,6 +29,10 @@ class Section:
         Distance from the neutral axis to the outermost fibre, m (``nan`` if unknown).
     outer_diameter, inner_diameter : float
         Tube diameters, m (``nan`` for explicit sections).
+    shear_area_y, shear_area_z : float
+        Effective shear areas κA for shear along the local y and z axes, m² (``nan``: no
+        shear deformation, an Euler–Bernoulli beam).  Bending about z (deflection along y)
+        uses ``shear_area_y``; bending about y uses ``shear_area_z``.
     """
 
     name: str
@@ -39,6 +43,8 @@ class Section:
     c: float = math.nan
     outer_diameter: float = math.nan
     inner_diameter: float = math.nan
+    shear_area_y: float = math.nan
+    shear_area_z: float = math.nan
 
     @classmethod
     def tube(cls, name: str, outer_diameter: float, inner_diameter: float = 0.0) -> "Section":
@@ -66,6 +72,11 @@ class Section:
     def is_tube(self) -> bool:
         """True for a section defined by its tube diameters."""
         return not math.isnan(self.outer_diameter)
+
+    @property
+    def is_timoshenko(self) -> bool:
+        """True for a shear-deformable (Timoshenko) section: a shear area is given."""
+        return not (math.isnan(self.shear_area_y) and math.isnan(self.shear_area_z))
 
     @property
     def radius_of_gyration(self) -> float:

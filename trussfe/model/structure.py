@@ -65,6 +65,9 @@ class Structure:
     torsion_releases : ndarray of bool, shape (m, 2)
         Explicit torsion releases of a 3-D beam at its start and end (what a release frees:
         :mod:`trussfe.mechanics.releases`).
+    bending_axis_releases : ndarray of bool, shape (m, 2, 2)
+        Releases of one bending moment alone, per end and axis ``(my, mz)`` (about local y,
+        about local z) of a 3-D beam; ``releases`` releases both.
     orientation : ndarray, shape (m, 3)
         For 3-D beams, a vector in the local x–y plane (``nan`` row: default orientation).
     supports : ndarray of bool, shape (n, ndof)
@@ -111,6 +114,7 @@ class Structure:
     gravity: np.ndarray
     orientation: np.ndarray | None = None
     torsion_releases: np.ndarray | None = None
+    bending_axis_releases: np.ndarray | None = None
     extensions: Mapping[str, Any] = field(default_factory=dict)
     source: str = ""
     member_groups: InitVar[np.ndarray | None] = None
@@ -145,6 +149,10 @@ class Structure:
         tors = np.zeros((m, 2), dtype=bool) if self.torsion_releases is None \
             else self.torsion_releases
         put(self, "torsion_releases", _frozen_array(tors, bool, (m, 2), "torsion_releases"))
+        axes = np.zeros((m, 2, 2), dtype=bool) if self.bending_axis_releases is None \
+            else self.bending_axis_releases
+        put(self, "bending_axis_releases", _frozen_array(axes, bool, (m, 2, 2),
+                                                         "bending_axis_releases"))
         orient = np.full((m, 3), np.nan) if self.orientation is None else self.orientation
         put(self, "orientation", _frozen_array(orient, float, (m, 3), "orientation"))
         put(self, "supports", _frozen_array(self.supports, bool, (n, ndof), "supports"))
@@ -225,6 +233,16 @@ class Structure:
     def c(self) -> np.ndarray:
         """Outer-fibre distance, m, shape (m,)."""
         return self._properties.c
+
+    @property
+    def shear_area_y(self) -> np.ndarray:
+        """Effective shear area κA for shear along local y, m² (nan: none), shape (m,)."""
+        return self._properties.shear_area_y
+
+    @property
+    def shear_area_z(self) -> np.ndarray:
+        """Effective shear area κA for shear along local z, m² (nan: none), shape (m,)."""
+        return self._properties.shear_area_z
 
     @property
     def E(self) -> np.ndarray:
@@ -348,17 +366,19 @@ class Structure:
             materials=self._per_member(self.materials, materials, "materials"))
 
     def with_member_data(self, *, is_beam=None, releases=None, orientation=None,
-                         torsion_releases=None) -> "Structure":
+                         torsion_releases=None, bending_axis_releases=None) -> "Structure":
         """The structure with other member types, moment releases or beam orientations.
 
-        Each argument is either a whole array (shapes (m,), (m, 2), (m, 3)) or a mapping
+        Each argument is either a whole array (shapes (m,), (m, 2), (m, 3); (m, 2, 2) for
+        ``bending_axis_releases``) or a mapping
         member (index or id) → the value of that member, e.g.
         ``releases={"M1": (True, False)}`` releases the start of beam M1.
         """
         changes = {}
         for key, value in (("is_beam", is_beam), ("releases", releases),
                            ("orientation", orientation),
-                           ("torsion_releases", torsion_releases)):
+                           ("torsion_releases", torsion_releases),
+                           ("bending_axis_releases", bending_axis_releases)):
             if value is None:
                 continue
             if isinstance(value, Mapping):
@@ -408,6 +428,7 @@ imperfection=None, branch=None, max_displacement=None)}
             materials=tuple(self.materials[i] for i in idx),
             is_beam=self.is_beam[idx], releases=self.releases[idx],
             torsion_releases=self.torsion_releases[idx],
+            bending_axis_releases=self.bending_axis_releases[idx],
             orientation=self.orientation[idx],
             extensions=subset_extensions(self.extensions, idx)), props)
 

@@ -20,11 +20,9 @@ that model (:func:`apply_imperfection`), including the points inside members.
 from __future__ import annotations
 
 import numpy as np
-import scipy.linalg as sla
-from scipy.sparse.linalg import eigsh
-
 from ..errors import AnalysisError
 from ..linalg import factor
+from ..linalg.eigen import buckling_pairs
 from .model import NonlinearModel
 
 
@@ -53,22 +51,14 @@ def linear_buckling(model: NonlinearModel, count: int = 1):
     u0[free] = lu.solve(model.load[free])
     Nt, Nb = model.linear_axial_forces(u0)
     Kg = model.reference_tangent(Nt, Nb)[free][:, free] - K
-    n = len(free)
-    # -Kg φ = μ K φ with K positive definite; λ = 1/μ for μ > 0
-    if n <= 800:
-        mu, vec = sla.eigh(-Kg.toarray(), K.toarray())
-    else:
-        k = min(max(2 * count, count + 4), n - 2)
-        mu, vec = eigsh(-Kg.tocsc(), k=k, M=K.tocsc(), which="LA")
-    pos = mu > 1e-12 * np.abs(mu).max()
-    if not pos.any():
+    mu, vec = buckling_pairs(K, Kg, count, positive_only=True)
+    if not mu.size:
         raise AnalysisError(model.structure.source or model.structure.name,
                             "no positive buckling load factor: the load puts no member in "
                             "compression")
-    order = np.argsort(-mu[pos])[:count]
-    lam = 1.0 / mu[pos][order]
+    lam = 1.0 / mu
     modes = np.zeros((model.ndof, len(lam)))
-    modes[free] = vec[:, pos][:, order]
+    modes[free] = vec
     tr = model.n_points * model.dim
     modes /= np.abs(modes[:tr]).max(axis=0)
     return lam, modes

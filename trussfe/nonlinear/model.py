@@ -99,6 +99,19 @@ class NonlinearModel:
         if int(subdivisions) < 1:
             raise InputError("subdivisions", f"must be at least 1, got {subdivisions}")
         s = structure
+        # the co-rotational elements are Euler–Bernoulli beams under nodal loads: refuse what
+        # they would otherwise silently drop
+        if s.extensions.get("member_loads"):
+            raise InputError("member_loads", "loads along members are not applied by the "
+                             "co-rotational (post-critical) analysis; apply them as nodal "
+                             "loads at the joints")
+        timo = (s.is_beam | (bar_model == "pinned-beam")) & (
+            np.isfinite(s.shear_area_y) | np.isfinite(s.shear_area_z))
+        if np.any(timo):
+            i = int(np.flatnonzero(timo)[0])
+            raise InputError(f"sections.{s.sections[i].name}", "the co-rotational "
+                             "(post-critical) beams have no shear deformation: remove the "
+                             "shear areas (Timoshenko) of this section for this analysis")
         self.structure = s
         self.dim = s.dim
         self.bar_model = bar_model

@@ -28,6 +28,8 @@ from __future__ import annotations
 import logging
 from dataclasses import dataclass, field
 
+from typing import Callable
+
 import numpy as np
 
 from ..errors import AnalysisError, InputError, MechanismError
@@ -307,14 +309,10 @@ def _dead_load_state(st, max_cuts: int) -> np.ndarray:
 
 
 def _inertia(fac) -> int | None:
-    """Negative pivots of a factor, or None when unknown (no factor, or a factorisation that
-    had to pivot off the diagonal and did not count them)."""
-    if fac is None:
-        return None
-    neg = getattr(fac, "negative", None)
-    if neg is None:
-        neg = getattr(fac, "inertia", None)
-    return None if neg is None or neg < 0 else int(neg)
+    """Negative pivots of a factor (:attr:`trussfe.linalg.Factor.inertia`), or None when
+    unknown (no factor, or a factorisation that had to pivot off the diagonal and did not
+    count them)."""
+    return None if fac is None or fac.inertia is None else int(fac.inertia)
 
 
 def _crossed(neg0: int | None, neg1: int | None) -> bool:
@@ -404,7 +402,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                 branch_step: float = 0.01,
                 max_displacement: float | None = None,
                 max_failures: int | None = None,
-                max_step: float | None = None) -> PathResult:
+                max_step: float | None = None,
+                progress: Callable[[int, int], None] | None = None) -> PathResult:
     """Follow the equilibrium path of a structure under ``λ f``.
 
     Parameters
@@ -446,6 +445,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
     max_step : float, optional
         Largest increment the step control may grow to (default 8 × the first one; the step
         grows by at most 2× per step).
+    progress : callable, optional
+        Called as ``progress(done, total)`` as the run advances (a progress bar).
 
     Returns
     -------
@@ -529,6 +530,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
     rejected = 0
     k = 0
     while k < steps:
+        if progress is not None:
+            progress(k, steps)
         if max_load_factor is not None and lam >= max_load_factor * (1 - 1e-12):
             out.termination = f"reached the maximum load factor {max_load_factor:g}"
             break

@@ -37,6 +37,8 @@ from __future__ import annotations
 import logging
 from dataclasses import dataclass, field, replace
 
+from typing import Callable
+
 import numpy as np
 
 from ..errors import AnalysisError, InputError
@@ -118,6 +120,7 @@ def stacked_structure(structure: Structure, coords: np.ndarray) -> Structure:
         materials=list(structure.materials) * nt,
         is_beam=np.tile(structure.is_beam, nt), releases=np.tile(structure.releases, (nt, 1)),
         torsion_releases=np.tile(structure.torsion_releases, (nt, 1)),
+        bending_axis_releases=np.tile(structure.bending_axis_releases, (nt, 1, 1)),
         supports=np.tile(structure.supports, (nt, 1)),
         loads=np.zeros((nt * n, structure.ndof_node)), masses=np.zeros(nt * n),
         gravity=np.zeros(dim), orientation=np.tile(structure.orientation, (nt, 1)),
@@ -208,7 +211,8 @@ def elastic_along_motion(structure: Structure, kin: Kinematics, *,
                          bodies: MemberBodies | None = None, subdivisions: int = 6,
                          positions: np.ndarray | None = None, n_sections: int = 7,
                          gravity: bool = True, loads: bool = True,
-                         block_elements: int = BLOCK_ELEMENTS) -> ElasticResponse:
+                         block_elements: int = BLOCK_ELEMENTS,
+                         progress: Callable[[int, int], None] | None = None) -> ElasticResponse:
     """Quasi-static FE response at every step of a motion (module notes).
 
     Parameters
@@ -231,6 +235,8 @@ def elastic_along_motion(structure: Structure, kin: Kinematics, *,
         Include gravity / the external nodal loads.
     block_elements : int
         Steps are solved in blocks of about this many elements.
+    progress : callable, optional
+        Called as ``progress(done, total)`` as the run advances (a progress bar).
 
     Returns
     -------
@@ -264,6 +270,8 @@ def elastic_along_motion(structure: Structure, kin: Kinematics, *,
         k1 = min(nt, k0 + step)
         parts.append(_solve_block(structure, kin.coords[k0:k1], ml.select(slice(k0, k1)),
                                   positions, int(subdivisions)))
+        if progress is not None:
+            progress(k1, nt)
     disp, react, secs, sx, st = ([p[i] for p in parts] for i in range(5))
     T = np.concatenate([s[0] for s in secs])
     V = np.concatenate([s[1] for s in secs])
@@ -346,7 +354,8 @@ _MOMENT_FLOOR = 1e-6
 def simulate_elastic(structure: Structure, motion=None, *,
                      conventions: Conventions = PHYSICAL, n_sections: int = 7,
                      subdivisions: int | None = None,
-                     gravity: bool = True, loads: bool = True):
+                     gravity: bool = True, loads: bool = True,
+                     progress: Callable[[int, int], None] | None = None):
     """Rigid-body simulation and FE response along the same motion, compared.
 
     Parameters
@@ -364,6 +373,8 @@ def simulate_elastic(structure: Structure, motion=None, *,
         Elements per member (default ``max(n_sections − 1, 2)``).
     gravity, loads : bool
         Passed to :func:`elastic_along_motion` (the rigid model always has both).
+    progress : callable, optional
+        ``progress(done, total)``, through the rigid-body run and then the FE response.
 
     Returns
     -------
@@ -382,10 +393,11 @@ def simulate_elastic(structure: Structure, motion=None, *,
     from ..rigid.simulate import simulate
 
     sim = simulate(structure, motion, n_sections=n_sections, actuators=False,
-                   conventions=replace(conventions, full_length_inertia=False))
+                   conventions=replace(conventions, full_length_inertia=False),
+                   progress=progress)
     k = subdivisions if subdivisions is not None else max(int(n_sections) - 1, 2)
     resp = elastic_along_motion(structure, sim.kinematics, bodies=sim.bodies,
                                 positions=sim.sections.position, subdivisions=k,
-                                gravity=gravity, loads=loads)
+                                gravity=gravity, loads=loads, progress=progress)
     cmp = compare_with_rigid(sim.sections, resp, sim.forces.reactions)
     return sim, resp, cmp

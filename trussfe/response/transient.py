@@ -60,6 +60,8 @@ import dataclasses
 import logging
 from dataclasses import dataclass, field
 
+from typing import Callable
+
 import numpy as np
 import scipy.linalg as sla
 import scipy.sparse.linalg as spla
@@ -383,7 +385,8 @@ def transient_response(structure: Structure, motion: Motion, *, bar_model: str =
                        k: int | None = None, dt: float | None = None,
                        t_end: float | None = None, damping: tuple[float, float] | None = None,
                        update: str = "per-step", mass: str = "consistent",
-                       block: int | None = None) -> TransientResult:
+                       block: int | None = None,
+                       progress: Callable[[int, int], None] | None = None) -> TransientResult:
     """Elastic vibration of a truss superposed on a prescribed motion of its active members.
 
     Parameters
@@ -411,6 +414,8 @@ def transient_response(structure: Structure, motion: Motion, *, bar_model: str =
         Member mass (the driving loads are exact only with the consistent mass).
     block : int, optional
         Steps assembled at once (default: as many as fit in about 64 MB).
+    progress : callable, optional
+        Called as ``progress(done, total)`` as the run advances (a progress bar).
 
     Returns
     -------
@@ -526,7 +531,8 @@ def transient_response(structure: Structure, motion: Motion, *, bar_model: str =
         nq, mq = _member_forces(B, Uq[sl], B.a_rigid, structure, nb)
         N_dyn[sl], M_dyn[sl], N_qs[sl], M_qs[sl] = nd, md, nq, mq
         log.debug("transient: steps %d-%d of %d", k0, k1 - 1, nt)
-
+        if progress is not None:
+            progress(k1, nt)
     work = np.cumsum(dwork)
     diss = np.cumsum(ddiss)
     par = np.cumsum(dpar)

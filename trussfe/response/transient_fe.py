@@ -98,6 +98,7 @@ def batch_structure(structure: Structure, coords: np.ndarray) -> Structure:
         connectivity=conn, sections=list(s.sections) * nb, materials=list(s.materials) * nb,
         is_beam=np.tile(s.is_beam, nb), releases=np.tile(s.releases, (nb, 1)),
         torsion_releases=np.tile(s.torsion_releases, (nb, 1)),
+        bending_axis_releases=np.tile(s.bending_axis_releases, (nb, 1, 1)),
         supports=np.tile(s.supports, (nb, 1)), loads=np.tile(s.loads, (nb, 1)),
         masses=np.tile(s.masses, nb), gravity=np.array(s.gravity, dtype=float),
         orientation=np.tile(s.orientation, (nb, 1)), extensions=ext, source=s.source)

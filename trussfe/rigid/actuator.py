@@ -213,7 +213,8 @@ def motor_histories(act: Actuator, force: np.ndarray, velocity: np.ndarray,
         flags.append(f"self-locking: G_ls = {gl:.4g} m/rad exceeds μ d_m sec α_T / 2 = "
                      f"{act.self_locking_limit:.4g} m/rad; the static load back-drives the motor")
     for f in flags:
-        log.warning("actuator %s: %s", act.name, f)
+        # an expected finding of the design check, not a failure of the run
+        log.warning("finding: actuator %s: %s", act.name, f)
     out["flags"] = flags
     return out
 
@@ -266,7 +267,7 @@ def actuator_histories(structure: Structure, motion, actuator_force: np.ndarray,
                 # At rest (e.g. ``simulate`` without a motion) eq. 3.1 has nothing to go on.
                 msg = ("gearhead gain: not selected, the motion does not move the actuator; "
                        "give gearhead_gain to get the motor histories")
-                log.warning("actuator %s: %s", act.name, msg)
+                log.warning("note: actuator %s: %s", act.name, msg)
                 out[act.name] = {"force": force[:, j], "flags": [msg],
                                  "gearhead_gain_selected": False}
                 continue

@@ -30,6 +30,8 @@ import logging
 from collections import deque
 from dataclasses import dataclass
 
+from typing import Callable
+
 import numpy as np
 
 from ..errors import AnalysisError
@@ -115,7 +117,8 @@ def _member_lengths(structure: Structure, motion: Motion) -> np.ndarray:
 
 
 def solve_motion_positions(structure: Structure, motion: Motion,
-                           coords0: np.ndarray | None = None, progress: bool = False
+                           coords0: np.ndarray | None = None,
+                           progress: Callable[[int, int], None] | None = None
                            ) -> np.ndarray:
     """Node positions at every step of the motion, warm-started step to step.
 
@@ -125,8 +128,8 @@ def solve_motion_positions(structure: Structure, motion: Motion,
     motion : Motion
     coords0 : ndarray, optional
         Starting guess for the first step (default: the model's coordinates).
-    progress : bool
-        Show a progress bar (tqdm, on stderr).
+    progress : callable, optional
+        Called as ``progress(done, total)`` as the steps are solved one after the other.
 
     Returns
     -------
@@ -178,11 +181,9 @@ def _sequential_positions(structure, motion, L, x0, steps, progress) -> np.ndarr
     ids = [structure.member_ids[i] for i in keep]
     x = x0
     out = np.empty((len(steps),) + x0.shape)
-    it = steps
-    if progress and len(steps) > 500:
-        from tqdm import tqdm
-        it = tqdm(steps, desc="positions", unit="step", leave=False)
-    for j, k in enumerate(it):
+    for j, k in enumerate(steps):
+        if progress is not None:
+            progress(j, len(steps))
         try:
             r = solve_positions(x, conn, L[k, keep], fixed, member_ids=ids,
                                 item=_step_item(motion, k))
@@ -344,7 +345,8 @@ def _count_message(pattern: _Pattern) -> str:
 
 
 def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "exact",
-                       coords: np.ndarray | None = None, progress: bool = False) -> Kinematics:
+                       coords: np.ndarray | None = None,
+                       progress: Callable[[int, int], None] | None = None) -> Kinematics:
     """Kinematics of the structure along the motion.
 
     Parameters
@@ -357,8 +359,8 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
         Exact compatibility equations, or Lacy's backward-difference scheme (Appendix A).
     coords : ndarray, optional
         Node positions (nt, n, dim) if already known.
-    progress : bool
-        Progress bar while solving the positions.
+    progress : callable, optional
+        ``progress(done, total)`` while solving the positions.
 
     Returns
     -------

@@ -10,7 +10,9 @@ from __future__ import annotations
 
 import inspect
 import logging
+import threading
 from dataclasses import dataclass, field
+from typing import Callable
 
 import numpy as np
 
@@ -116,10 +118,23 @@ class SimulationResult:
         }
 
 
+class _Counter:
+    """Counts finished blocks for a ``progress(done, total)`` callback, from any thread."""
+
+    def __init__(self, progress: Callable[[int, int], None], total: int):
+        self.progress, self.total, self.done = progress, total, 0
+        self.lock = threading.Lock()
+
+    def tick(self) -> None:
+        with self.lock:
+            self.done += 1
+            self.progress(self.done, self.total)
+
+
 def simulate(structure: Structure, motion: Motion | None = None, *,
              conventions: Conventions = PHYSICAL, n_sections: int = 7,
              effective_length_factor: np.ndarray | float = 1.0, actuators: bool = True,
-             progress: bool = False) -> SimulationResult:
+             progress: Callable[[int, int], None] | None = None) -> SimulationResult:
     """Rigid-body dynamic force analysis of a truss along a motion (Lacy chapters 2–4).
 
     Parameters
@@ -139,8 +154,10 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
         K of the Euler load π² E I / (K l)² (eq. 2.26 with C = 1/K²; 1 as Lacy).
     actuators : bool
         Run the actuator and motor model when ``[actuators]`` data exist.
-    progress : bool
-        Progress bar on long runs.
+    progress : callable, optional
+        Called as ``progress(done, total)``: over the steps while the positions are solved
+        one after the other, then over the blocks of steps whose forces are computed (from
+        worker threads, one call at a time).
 
     Returns
     -------
@@ -182,10 +199,7 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
         # and the blocks use slices of it.
         X = solve_motion_positions(structure, motion, progress=progress)
         starts = range(0, nt, step)
-        bar = None
-        if progress:
-            from tqdm import tqdm
-            bar = tqdm(total=len(starts), desc="forces", unit="block", leave=False)
+        bar = _Counter(progress, len(starts)) if progress is not None else None
         pattern = _Pattern(structure)
         # With one thread, a direct (stacked-inverse) pattern is cheapest with the kinematics
         # of the whole motion at once (below); with worker threads, independent blocks of
@@ -208,7 +222,7 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
                                             tension[k0:k0 + step])
                 out = _steps(structure, kc, bodies, act_idx, forces=pair, **opts)[1:]
                 if bar is not None:
-                    bar.update()
+                    bar.tick()
                 return out
             parts = parallel_map(rest, range(len(kins)))
             kin = kin_all
@@ -221,13 +235,11 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
                     structure, _slice_motion(motion, k0, min(nt, k0 + step)), scheme=scheme,
                     coords=X[k0:k0 + step]), bodies, act_idx, **opts)
                 if bar is not None:
-                    bar.update()
+                    bar.tick()
                 return out
             parts = parallel_map(block, starts)
             kin, f, fs, sf, ss, st, sts, mid, act_force, act_static, cmoment = (
                 _concat([p[i] for p in parts]) for i in range(len(parts[0])))
-        if bar is not None:
-            bar.close()
     else:
         X = solve_motion_positions(structure, motion, progress=progress) if nt > 1 else None
         (kin, f, fs, sf, ss, st, sts, mid, act_force, act_static,

@@ -179,13 +179,27 @@ def base_simulation_motor(convention: str = "thesis") -> dict:
     """Motor torque, voltage and current of the Base Simulation (Lacy section 3.7, figs.
     3.8–3.10): T = 3 s, 10 kg, 50 steps, thesis kinematics scheme.
 
+    Section 3.7: "The motor torque approaches 0 N-m at approximately 0.5 seconds.  At this
+    point, the follower is vertical ... the torque loading on the motor at this point is due
+    to the angular acceleration of the motor armature."  The instant it names is the one at
+    which the follower is vertical, so the torque is compared there.  The smallest torque
+    itself falls later (0.60 s) inside a plateau of near-zero torque: while the load aids the
+    motion, a leadscrew gain at the self-locking limit (eq. 2.45) takes no with-load torque
+    (eq. 2.36), and only the armature's inertia torque is left, whose smallest value depends
+    on the motion's acceleration, not on the geometry the thesis describes.
+
     Returns
     -------
     dict
-        ``gearhead_gain`` (selected), ``min_torque_time`` (s, thesis: "approaches 0 N·m at
-        approximately 0.5 seconds"), ``force_zero_time`` (s, the actuator force changes sign),
-        ``final_torque`` and ``final_holding_torque`` (N·m: the torque at the end and that
-        needed to hold the final static force), ``max_voltage`` (V), ``max_speed`` (rad/s).
+        ``gearhead_gain`` (selected), ``min_torque_time`` (s, the sample of the smallest
+        torque), ``follower_vertical_time`` (s, interpolated between the samples at which
+        the follower's horizontal component changes sign), ``torque_at_vertical`` (|motor
+        torque| interpolated at that instant, over its peak along the motion),
+        ``leadscrew_torque_at_vertical`` (largest |leadscrew torque| of the two samples
+        around that instant, over the peak motor torque), ``force_zero_time`` (s, the
+        actuator force changes sign), ``final_torque`` and ``final_holding_torque`` (N·m:
+        the torque at the end and that needed to hold the final static force) and their
+        ratio ``final_over_holding``, ``max_voltage`` (V), ``max_speed`` (rad/s).
     """
     from .lacy_rigid import L2, L3MIN, triangular_truss
     from ..rigid.motion import third_order_motion
@@ -203,13 +217,26 @@ def base_simulation_motor(convention: str = "thesis") -> dict:
     t = m.time
     # Linear interpolation of the sign change between samples z and z+1.
     tz = t[z] + (t[z + 1] - t[z]) * f[z] / (f[z] - f[z + 1])
+    # The follower (O1 -> B) is vertical where its unit vector's x component changes sign.
+    ux = r.kinematics.unit[:, s.member_index("follower"), 0]
+    v = int(np.flatnonzero(np.sign(ux[1:]) != np.sign(ux[:-1]))[0])
+    w = ux[v] / (ux[v] - ux[v + 1])
+    tv = t[v] + (t[v + 1] - t[v]) * w
+    peak = float(tq.max())
     a = replace(s.extensions["actuators"][0], gearhead_gain=h["gearhead_gain"])
     hold = motor_histories(a, r.static_actuator_force[-1:, 0], np.zeros(1), np.zeros(1),
                            r.static_actuator_force[-1:, 0])
+    holding = float(abs(hold["motor_torque"][0]))
     return {"gearhead_gain": float(h["gearhead_gain"]),
-            "min_torque_time": float(t[int(np.argmin(tq))]), "force_zero_time": float(tz),
+            "min_torque_time": float(t[int(np.argmin(tq))]),
+            "follower_vertical_time": float(tv),
+            "torque_at_vertical": float(((1 - w) * tq[v] + w * tq[v + 1]) / peak),
+            "leadscrew_torque_at_vertical":
+                float(np.abs(h["leadscrew_torque"][v:v + 2]).max() / peak),
+            "force_zero_time": float(tz),
             "final_torque": float(tq[-1]),
-            "final_holding_torque": float(abs(hold["motor_torque"][0])),
+            "final_holding_torque": holding,
+            "final_over_holding": float(tq[-1] / holding),
             "max_voltage": float(h["max_motor_voltage"]),
             "max_speed": float(h["max_motor_speed"])}
 

@@ -59,4 +59,7 @@ def reverse_members(structure: Structure, member_ids: Sequence[str]) -> Structur
     conn[idx] = conn[idx, ::-1]
     releases = structure.releases.copy()
     releases[idx] = releases[idx, ::-1]
-    return structure.variant(connectivity=conn, releases=releases)
+    axes = structure.bending_axis_releases.copy()
+    axes[idx] = axes[idx, ::-1]
+    return structure.variant(connectivity=conn, releases=releases,
+                             bending_axis_releases=axes)

@@ -13,9 +13,15 @@ from ..io.model_file import _suggest
 
 CASE_KEYS = ("id", "title", "model", "catalogue", "parameters", "analysis", "python",
              "options", "notes", "tags", "plot")
-QUANTITY_KEYS = ("name", "path", "reference", "source", "thesis_matlab", "thesis_mscpal",
-                 "rtol", "atol", "expect", "note")
+EXPLAINED_KEYS = ("explained", "explained_source", "explained_rtol", "explained_atol",
+                  "explained_kind")
+QUANTITY_KEYS = ("name", "path", "reference", "source", "kind", "thesis_matlab", "thesis_mscpal",
+                 "rtol", "atol", "expect", "note") + EXPLAINED_KEYS
 EXPECT = ("agree", "differ")
+#: Where a reference comes from: ``independent`` (a source, a closed form, another solver) or
+#: ``regression`` (a value recorded from trussfe's own output: it guards against change, it
+#: does not validate).
+KINDS = ("independent", "regression")
 
 
 @dataclass
@@ -36,8 +42,19 @@ class Quantity:
         Printed values shown beside it.
     rtol, atol : float
         Pass when ``|value − reference| ≤ atol + rtol·|reference|``.
+    kind : {"independent", "regression"}
+        ``regression`` marks a reference recorded from trussfe's own output.
     expect : {"agree", "differ"}
-        ``differ`` marks a documented deviation: shown, never failed.
+        ``differ`` marks a documented deviation: the value must stay *outside* the tolerance
+        of ``reference`` and *within* the tolerance of ``explained``.
+    explained : float or None
+        For a documented deviation: the value the explanation predicts.
+    explained_source : str
+        Where ``explained`` comes from (the explanation, as a formula or a source).
+    explained_rtol, explained_atol : float
+        Its tolerance, read as ``rtol``/``atol``.
+    explained_kind : {"independent", "regression"}
+        As ``kind``, for ``explained``.
     note : str
         Short remark shown in the table.
     """
@@ -50,7 +67,13 @@ class Quantity:
     thesis_mscpal: float | None = None
     rtol: float = 0.0
     atol: float = 0.0
+    kind: str = "independent"
     expect: str = "agree"
+    explained: float | None = None
+    explained_source: str = ""
+    explained_rtol: float = 0.0
+    explained_atol: float = 0.0
+    explained_kind: str = "independent"
     note: str = ""
 
 
@@ -112,6 +135,30 @@ def _quantity(raw: Any, item: str) -> Quantity:
     q.expect = _str(raw.get("expect", "agree"), f"{item}.expect")
     if q.expect not in EXPECT:
         raise InputError(f"{item}.expect", f"must be 'agree' or 'differ'{_suggest(q.expect, EXPECT)}")
+    for key in ("kind", "explained_kind"):
+        value = _str(raw.get(key, "independent"), f"{item}.{key}")
+        if value not in KINDS:
+            raise InputError(f"{item}.{key}", f"must be 'independent' or 'regression'"
+                                              f"{_suggest(value, KINDS)}")
+        setattr(q, key, value)
+    given = [k for k in EXPLAINED_KEYS if k in raw]
+    if q.expect == "agree":
+        if given:
+            raise InputError(f"{item}.{given[0]}", "applies to a documented deviation "
+                                                   "(expect = \"differ\") only")
+        return q
+    # A documented deviation asserts itself: it names the value its explanation predicts.
+    for key in ("explained", "explained_source"):
+        if key not in raw:
+            raise InputError(item, f"a documented deviation (expect = \"differ\") needs "
+                                   f"'{key}'")
+    if "explained_rtol" not in raw and "explained_atol" not in raw:
+        raise InputError(item, "give the explained value's tolerance: explained_rtol and/or "
+                               "explained_atol")
+    q.explained = _num(raw["explained"], f"{item}.explained")
+    q.explained_source = _str(raw["explained_source"], f"{item}.explained_source")
+    q.explained_rtol = _num(raw.get("explained_rtol", 0.0), f"{item}.explained_rtol", nonneg=True)
+    q.explained_atol = _num(raw.get("explained_atol", 0.0), f"{item}.explained_atol", nonneg=True)
     return q
 
 

@@ -92,14 +92,15 @@ def lookup(result: Any, path: str) -> Any:
 
 @dataclass
 class QuantityResult:
-    """A quantity's outcome: ``status`` is ``pass``, ``fail``, ``differs`` (documented
-    deviation outside tolerance), ``agrees`` (documented deviation that is within tolerance)
-    or ``error`` (no value)."""
+    """A quantity's outcome: ``status`` is ``pass``, ``fail``, ``differs`` (a documented
+    deviation that holds: outside the reference's tolerance, within the explained value's)
+    or ``error`` (no value).  A documented deviation that no longer holds is a ``fail``."""
 
     quantity: Quantity
     value: float | None = None
     abs_error: float | None = None
     rel_error: float | None = None
+    explained_rel_error: float | None = None
     status: str = "error"
     message: str = ""
 
@@ -121,7 +122,8 @@ class CaseResult:
 
     @property
     def passed(self) -> bool:
-        """No error and no quantity outside its tolerance (documented deviations excepted)."""
+        """No error and no quantity failed (a documented deviation fails when it no longer
+        holds)."""
         return not self.error and not any(q.failed for q in self.quantities)
 
     @property
@@ -132,8 +134,15 @@ class CaseResult:
         return "pass" if self.passed else "fail"
 
 
+def _within(v: float, reference: float, rtol: float, atol: float) -> bool:
+    return abs(v - reference) <= atol + rtol * abs(reference)
+
+
 def compare(q: Quantity, value: Any) -> QuantityResult:
-    """Compare one value with its reference: pass when ``|v − r| ≤ atol + rtol·|r|``."""
+    """Compare one value with its reference: pass when ``|v − r| ≤ atol + rtol·|r|``.
+
+    A documented deviation (``expect = "differ"``) passes (status ``differs``) only while it
+    holds: outside the reference's tolerance and within ``explained``'s."""
     out = QuantityResult(quantity=q)
     if hasattr(value, "item") and getattr(value, "ndim", None) == 0:
         value = value.item()            # a numpy scalar
@@ -147,11 +156,23 @@ def compare(q: Quantity, value: Any) -> QuantityResult:
     out.value = v
     out.abs_error = abs(v - q.reference)
     out.rel_error = out.abs_error / abs(q.reference) if q.reference != 0 else None
-    ok = out.abs_error <= q.atol + q.rtol * abs(q.reference)
-    if q.expect == "differ":
-        out.status = "agrees" if ok else "differs"
-    else:
+    ok = _within(v, q.reference, q.rtol, q.atol)
+    if q.expect != "differ":
         out.status = "pass" if ok else "fail"
+        return out
+    if q.explained is None:
+        out.status = "fail"
+        out.message = "documented deviation without an explained value"
+        return out
+    explained = float(q.explained)
+    out.explained_rel_error = abs(v - explained) / abs(explained) if explained else None
+    explained_ok = _within(v, explained, q.explained_rtol, q.explained_atol)
+    out.status = "differs" if explained_ok and not ok else "fail"
+    if ok:
+        out.message = "documented deviation gone: the value is within the reference's tolerance"
+    elif not explained_ok:
+        out.message = (f"documented deviation not as explained: {v:.8g} is outside the "
+                       f"tolerance of the explained value {explained:.8g}")
     return out
 
 

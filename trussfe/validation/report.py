@@ -19,14 +19,14 @@ table{border-collapse:collapse;margin:.8em 0;font-size:.9em}
 th,td{border:1px solid #ccc;padding:.25em .5em;text-align:right;vertical-align:top}
 th{background:#f0f0f0} td.l,th.l{text-align:left}
 .pass{color:#11691b;font-weight:600} .fail,.error{color:#b00020;font-weight:600}
-.differs,.agrees{color:#8a5a00;font-weight:600}
+.differs{color:#8a5a00;font-weight:600}
 section.case{border-top:2px solid #ddd;margin-top:2em}
 .notes{background:#fafafa;border-left:4px solid #ccd;padding:.3em 1em}
 code{background:#f3f3f3;padding:0 .2em} img{max-width:100%}
 """
 
 STATUS_TEXT = {"pass": "pass", "fail": "FAIL", "error": "ERROR",
-               "differs": "differs (documented)", "agrees": "agrees (documented deviation)"}
+               "differs": "differs as documented"}
 
 
 def _fmt(x: float | None, digits: int = 6) -> str:
@@ -45,6 +45,22 @@ def _tol(r: QuantityResult) -> str:
     return ", ".join(parts)
 
 
+def _source(r: QuantityResult) -> str:
+    """The source cell: a regression value says so; a documented deviation names the value
+    its explanation predicts, where that comes from, and how close trussfe is to it."""
+    q = r.quantity
+    text = ("regression value (trussfe's own output): " if q.kind == "regression" else "") + \
+        q.source + (f" — {q.note}" if q.note else "")
+    if q.expect == "differ":
+        tol = ", ".join(p for p in (f"rtol {q.explained_rtol:g}" if q.explained_rtol else "",
+                                    f"atol {q.explained_atol:g}" if q.explained_atol else "") if p)
+        text += (f" — explained: {_fmt(q.explained, 8)} "
+                 f"({'regression value: ' if q.explained_kind == 'regression' else ''}"
+                 f"{q.explained_source}), relative error {_fmt(r.explained_rel_error, 3)}, "
+                 f"{tol}")
+    return text
+
+
 def _rows(res: CaseResult) -> list[list[str]]:
     rows = []
     for r in res.quantities:
@@ -52,7 +68,7 @@ def _rows(res: CaseResult) -> list[list[str]]:
         rows.append([q.name, _fmt(q.thesis_matlab), _fmt(q.thesis_mscpal), _fmt(r.value, 8),
                      _fmt(q.reference, 8), _fmt(r.rel_error, 3), _tol(r),
                      STATUS_TEXT[r.status] + (f": {r.message}" if r.message else ""),
-                     q.source + (f" — {q.note}" if q.note else "")])
+                     _source(r)])
     return rows
 
 
@@ -60,10 +76,20 @@ _HEAD = ["quantity", "thesis MATLAB", "thesis MSC/PAL", "trussfe", "reference",
          "relative error", "tolerance", "result", "source"]
 
 
-def _summary(results: list[CaseResult]) -> tuple[int, int, int]:
+def _summary(results: list[CaseResult]) -> tuple[int, int, int, int]:
     n_pass = sum(r.passed for r in results)
-    n_dev = sum(q.status in ("differs", "agrees") for r in results for q in r.quantities)
-    return n_pass, len(results) - n_pass, n_dev
+    qs = [q.quantity for r in results for q in r.quantities]
+    n_dev = sum(q.expect == "differ" for q in qs)
+    n_reg = sum(q.kind == "regression" for q in qs)
+    return n_pass, len(results) - n_pass, n_dev, n_reg
+
+
+def _counts(results: list[CaseResult]) -> tuple[str, str]:
+    """The summary line in two parts: the case counts, then the kinds of check."""
+    n_pass, n_fail, n_dev, n_reg = _summary(results)
+    return (f"{len(results)} cases: {n_pass} pass, {n_fail} fail",
+            f"; {n_dev} documented deviations, each checked against its explanation; "
+            f"{n_reg} regression values (references recorded from trussfe's own output).")
 
 
 def _worst(res: CaseResult) -> str:
@@ -76,11 +102,8 @@ def _worst(res: CaseResult) -> str:
 # ------------------------------------------------------------------ markdown
 def markdown_report(results: list[CaseResult], figure_paths: dict[tuple[str, str], str]) -> str:
     """The Markdown report (figures linked as files in ``figures/``)."""
-    n_pass, n_fail, n_dev = _summary(results)
     out = [f"# trussfe validation report", "",
-           f"trussfe {__version__}. "
-           f"{len(results)} cases: {n_pass} pass, {n_fail} fail; "
-           f"{n_dev} documented deviations shown.", "",
+           f"trussfe {__version__}. {''.join(_counts(results))}", "",
            "| case | title | result | checks | worst relative error |",
            "|---|---|---|---|---|"]
     for r in results:
@@ -157,14 +180,13 @@ def markdown_to_html(text: str) -> str:
 
 def html_report(results: list[CaseResult]) -> str:
     """One self-contained HTML page."""
-    n_pass, n_fail, n_dev = _summary(results)
+    cases, kinds = _counts(results)
     e = html.escape
     parts = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
              "<title>trussfe validation report</title>", f"<style>{_CSS}</style></head><body>",
              "<h1>trussfe validation report</h1>",
              f"<p>trussfe {e(__version__)}. "
-             f'<span id="summary-counts">{len(results)} cases: {n_pass} pass, {n_fail} fail'
-             f"</span>; {n_dev} documented deviations shown.</p>",
+             f'<span id="summary-counts">{e(cases)}</span>{e(kinds)}</p>',
              '<table id="summary"><thead><tr><th class="l">case</th><th class="l">title</th>'
              "<th>result</th><th>checks</th><th>worst relative error</th>"
              "</tr></thead><tbody>"]

@@ -23,8 +23,8 @@ class ValidationResult:
 
     @property
     def passed(self) -> bool:
-        """True when every check is within its tolerance (documented deviations are shown,
-        not failed)."""
+        """True when every check holds: each value within its reference's tolerance, each
+        documented deviation outside it and within its explained value's tolerance."""
         return all(r.passed for r in self.cases)
 
     @property
@@ -43,14 +43,22 @@ class ValidationResult:
         not JSON; this is the same content as data)."""
         from ..io.output import plain
 
+        def row(q) -> dict:
+            d = {"name": q.quantity.name, "path": q.quantity.path, "value": q.value,
+                 "reference": q.quantity.reference, "rel_error": q.rel_error,
+                 "status": q.status, "source": q.quantity.source, "kind": q.quantity.kind,
+                 "expect": q.quantity.expect}
+            if q.quantity.expect == "differ":
+                d.update(explained=q.quantity.explained,
+                         explained_rel_error=q.explained_rel_error,
+                         explained_source=q.quantity.explained_source,
+                         explained_kind=q.quantity.explained_kind)
+            return d
+
         cases = {}
         for r in self.cases:
-            cases[r.case.id] = {
-                "status": r.status, "error": r.error,
-                "quantities": [{"name": q.quantity.name, "path": q.quantity.path,
-                                "value": q.value, "reference": q.quantity.reference,
-                                "rel_error": q.rel_error, "status": q.status,
-                                "source": q.quantity.source} for q in r.quantities]}
+            cases[r.case.id] = {"status": r.status, "error": r.error,
+                                "quantities": [row(q) for q in r.quantities]}
         return plain({"command": "validate", "passed": self.passed, "cases": cases})
 
     def __repr__(self) -> str:

@@ -1,0 +1,232 @@
+# SPDX-License-Identifier: MIT
+"""Member loads on the finite-element discretisation: the global load vector and the
+fixed-end forces that member-force recovery subtracts.
+
+A member load (:mod:`trussfe.model.member_loads`) is cut over the sub-elements of its member:
+a distributed load goes to every sub-element with its intensity at the sub-element's ends, a
+point load to the one sub-element containing it (anywhere along it, not only at its nodes).
+On each sub-element its equivalent end loads are the fixed-end forces of
+:mod:`trussfe.mechanics.member_loads` — Timoshenko (or Euler–Bernoulli) shape functions on
+the bending fields of frames, P1 on the axial and twist fields and on every field of a
+pin-ended bar (whose transverse load goes to its end joints as the reactions of a simply
+supported bar).  They are written in the field DOFs of the element groups, the space of
+:meth:`~trussfe.fem.discretisation.FEModel.element_forces`, so that
+
+* the global load vector is ``f = Σ Tᵀ f_local`` and
+* the end forces of every sub-element are ``Sᵀ (K_local T u − f_local)``: the fixed-end
+  forces subtracted, so end forces and the section forces at every station are exact.
+
+Use per load case: ``v = member_load_vector(fe, loads)``; add ``v.global_vector`` to the
+case's load vector, and pass ``v.local`` (added to the self-weight's
+:meth:`~trussfe.fem.discretisation.FEModel.element_self_weight_local` when the case has
+gravity) to ``element_forces``.  :func:`trussfe.fem.static.solve_static` does both.
+"""
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import InputError
+from ..mechanics.member_loads import (AT_STATION, linear_load_bending, linear_load_p1, point_load_bending,
+                                      point_load_p1, section_forces_along,
+                                      shear_parameter)
+from ..model.member_loads import MemberLoad, load_arrays
+from .discretisation import FEModel
+
+
+@dataclass
+class MemberLoadVectors:
+    """Member loads on a discretisation (see the module notes).
+
+    Attributes
+    ----------
+    global_vector : ndarray, shape (n_dof,)
+        Equivalent nodal loads.
+    local : list of ndarray
+        Per element group of the model (``fe.groups``), the fixed-end forces in its field
+        DOFs.
+    q1, q2, F, C : ndarray, shape (l, 3)
+        The loads in member axes (2-D: zero z components, couples about z only).
+    member : ndarray of int, shape (l,)
+    point : ndarray of bool, shape (l,)
+    at : ndarray, shape (l,)
+        Position of point loads, m from the start node.
+    """
+
+    global_vector: np.ndarray
+    local: list
+    member: np.ndarray
+    point: np.ndarray
+    q1: np.ndarray
+    q2: np.ndarray
+    at: np.ndarray
+    F: np.ndarray
+    C: np.ndarray
+
+
+def local_member_loads(fe: FEModel, loads: Sequence[MemberLoad]):
+    """The loads in member axes, padded to 3 components: ``(member, point, q1, q2, a, F, C)``
+    with ``a`` in m from the start node."""
+    s = fe.structure
+    dim = s.dim
+    try:
+        arr = load_arrays(loads, dim)
+    except ValueError as exc:
+        raise InputError("member_loads", str(exc)) from None
+    mem = arr.member
+    R = fe.rotation[mem] if mem.size else np.zeros((0, dim, dim))
+
+    def to_local(v):
+        return np.where(arr.local[:, None], v, np.einsum("lij,lj->li", R, v))
+
+    pad = lambda v: np.concatenate([v, np.zeros((v.shape[0], 3 - dim))], axis=1)
+    q1, q2, F = (pad(to_local(v)) for v in (arr.q1, arr.q2, arr.F))
+    C = arr.C.copy()
+    if dim == 3:
+        C = np.where(arr.local[:, None], C, np.einsum("lij,lj->li", R, C))
+    L = fe.structure.lengths()[mem] if mem.size else np.zeros(0)
+    return mem, arr.point, q1, q2, arr.at * L, F, C
+
+
+def member_load_vector(fe: FEModel, loads: Sequence[MemberLoad]) -> MemberLoadVectors:
+    """Equivalent nodal loads and fixed-end forces of member loads on a discretisation.
+
+    Parameters
+    ----------
+    fe : FEModel
+    loads : sequence of MemberLoad
+        E.g. ``structure.extensions["member_loads"]`` or the member loads of one load case.
+
+    Returns
+    -------
+    MemberLoadVectors
+
+    Raises
+    ------
+    InputError
+        A couple about the axis of a member that has no torsion field.
+    """
+    s = fe.structure
+    mem, point, q1, q2, a, F, C = local_member_loads(fe, loads)
+    L = s.lengths()
+    k = fe.member_subdivisions
+    first = fe.member_elements[:-1]
+    # (load, element) pairs: distributed loads on every element of their member, point
+    # loads on the element holding them
+    dist = np.flatnonzero(~point)
+    reps = k[mem[dist]]
+    d_load = np.repeat(dist, reps)
+    d_el = first[mem[d_load]] + (np.arange(d_load.size)
+                                 - np.repeat(np.cumsum(reps) - reps, reps))
+    pts = np.flatnonzero(point)
+    h_m = L[mem[pts]] / k[mem[pts]]
+    j = np.clip(np.floor(a[pts] / h_m).astype(np.int64), 0, k[mem[pts]] - 1)
+    p_el = first[mem[pts]] + j
+    xi = np.clip((a[pts] - fe.element_x[p_el, 0]) / fe.element_length[p_el], 0.0, 1.0)
+    twistless = ~fe.twist_member[mem[pts]] & (np.abs(C[pts, 0]) > 0)
+    if s.dim == 3 and np.any(twistless):
+        i = int(mem[pts][np.flatnonzero(twistless)[0]])
+        raise InputError(f"member_loads (member {s.member_ids[i]})",
+                         "a couple about the member axis needs a beam with torsion (a bar "
+                         "carries none)")
+    # intensities at the ends of each loaded element of a distributed load
+    x0, x1 = fe.element_x[d_el, 0], fe.element_x[d_el, 1]
+    Lm = L[mem[d_load]][:, None]
+    dq = (q2 - q1)[d_load]
+    qa = q1[d_load] + dq * (x0[:, None] / Lm)
+    qb = q1[d_load] + dq * (x1[:, None] / Lm)
+    group_of = np.full(fe.n_elements, -1, dtype=np.int64)
+    pos_in = np.zeros(fe.n_elements, dtype=np.int64)
+    for gi, g in enumerate(fe.groups):
+        group_of[g.elements] = gi
+        pos_in[g.elements] = np.arange(g.elements.size)
+    local = [np.zeros(g.n_local) for g in fe.groups]
+    f = np.zeros(fe.n_dof)
+    EI = {"v": s.E * s.Iz, "w": s.E * s.Iy}
+    GAs = {"v": s.G * s.shear_area_y, "w": s.G * s.shear_area_z}
+    # component of the load and of the couple on each field (w: the couple about y does
+    # work on θy = −w', hence the sign); the twist field θ takes the torque as its load
+    # (the couple about x does work on θ itself), not as a couple on a slope
+    comp = {"u": (0, None, 0.0), "v": (1, 2, 1.0), "w": (2, 1, -1.0), "theta": (None, None, 0.0)}
+    for gi, g in enumerate(fe.groups):
+        dsel = group_of[d_el] == gi
+        psel = group_of[p_el] == gi
+        if not (dsel.any() or psel.any()):
+            continue
+        out = local[gi]
+        for fld in g.fields:
+            qc, cc, sign = comp[fld.name]
+            edofs = fld.basis.element_dofs                         # (nbfun, n_el_group)
+            parts = []
+            de, pe = d_el[dsel], p_el[psel]
+            hd, hp = fe.element_length[de], fe.element_length[pe]
+            qa_c = qa[dsel, qc] if qc is not None else np.zeros(de.size)
+            qb_c = qb[dsel, qc] if qc is not None else np.zeros(de.size)
+            P = (F[pts][psel, qc] if qc is not None else
+                 C[pts][psel, 0] if fld.name == "theta" else np.zeros(pe.size))
+            Cc = sign * C[pts][psel, cc] if cc is not None else np.zeros(pe.size)
+            if fld.hermite:
+                mem_d, mem_p = fe.element_member[de], fe.element_member[pe]
+                phi_d = shear_parameter(EI[fld.name][mem_d], GAs[fld.name][mem_d], hd)
+                phi_p = shear_parameter(EI[fld.name][mem_p], GAs[fld.name][mem_p], hp)
+                parts = [(de, linear_load_bending(hd, phi_d, qa_c, qb_c)),
+                         (pe, point_load_bending(xi[psel], hp, phi_p, P, Cc))]
+            else:
+                parts = [(de, linear_load_p1(hd, qa_c, qb_c)),
+                         (pe, point_load_p1(xi[psel], hp, P, Cc))]
+            for els, vals in parts:
+                if els.size:
+                    rows = fld.offset + edofs[:, pos_in[els]].T            # (el, nbfun)
+                    np.add.at(out, rows.ravel(), vals.ravel())
+        f += g.T.T @ out
+    return MemberLoadVectors(global_vector=f, local=local, member=mem, point=point, q1=q1,
+                             q2=q2, at=a, F=F, C=C)
+
+
+def loaded_member_stations(fe: FEModel, v: MemberLoadVectors, station_x: np.ndarray,
+                           section_forces: np.ndarray
+                           ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Section forces along the members that carry member loads, by statics from their start
+    sections (:func:`trussfe.mechanics.member_loads.section_forces_along`).
+
+    The stations are the member's finite-element stations and the positions of its point
+    loads (where the shear force jumps and the moment peaks), so that a pin-ended bar, which
+    has no station inside, shows its simply supported moment under its loads too.
+
+    Parameters
+    ----------
+    fe : FEModel
+    v : MemberLoadVectors
+    station_x, section_forces : ndarray
+        ``StaticResult.station_x`` (m, s) and ``StaticResult.section_forces`` (m, s, 6).
+
+    Returns
+    -------
+    members : ndarray of int, shape (r,)
+        The loaded members, ascending.
+    x : ndarray, shape (r, t)
+        Their stations, m from the start node (NaN-padded).
+    forces : ndarray, shape (r, t, 6)
+        ``[N, Vy, Vz, T, My, Mz]`` at the stations (NaN-padded).
+    """
+    members, row = np.unique(v.member, return_inverse=True)
+    L = fe.structure.lengths()[members]
+    # the FE stations of each loaded member and the positions of its point loads, one row
+    # per member: sorted (NaN last), a position that is already a station dropped
+    prow = row[v.point]
+    order = np.argsort(prow, kind="stable")
+    count = np.bincount(prow, minlength=members.size)
+    rank = np.arange(prow.size) - np.repeat(np.cumsum(count) - count, count)
+    extra = np.full((members.size, int(count.max(initial=0))), np.nan)
+    extra[prow[order], rank] = v.at[v.point][order]
+    x = np.sort(np.concatenate([station_x[members], extra], axis=1), axis=1)
+    same = np.abs(np.diff(x, axis=1)) <= AT_STATION * L[:, None]
+    x[:, 1:][same] = np.nan
+    x = np.sort(x, axis=1)
+    x = x[:, : int(np.isfinite(x).sum(axis=1).max(initial=0))]
+    F = section_forces_along(x, L, section_forces[members, 0], row, v.point, v.q1, v.q2,
+                             v.at, v.F, v.C)
+    F[~np.isfinite(x)] = np.nan
+    return members, x, F
