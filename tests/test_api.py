@@ -206,6 +206,9 @@ CLI_CASES = [
     ("simulate", "triangular_truss_motion_active.toml",
      ["--motion", "triangular_truss_motion_3s.toml", "--steps", "20", "--scheme", "thesis"],
      {"motion": "triangular_truss_motion_3s.toml", "steps": 20, "scheme": "thesis"}),
+    ("simulate", "chain3_motion_active.toml",
+     ["--motion", "chain3_motion_rotation.toml", "--steps", "6", "--method", "bay-by-bay"],
+     {"motion": "chain3_motion_rotation.toml", "steps": 6, "method": "bay-by-bay"}),
     ("actuators", "double_octahedron_actuators.toml",
      ["--motion", "double_octahedron_slew1_rotation.toml", "--steps", "12"],
      {"motion": "double_octahedron_slew1_rotation.toml", "steps": 12}),
@@ -219,6 +222,8 @@ CLI_CASES = [
     ("trace", "mech_fourbar.toml", ["--drive", "2:y", "--step", "0.05", "--steps", "3"],
      {"drive": "2:y", "step": 0.05, "steps": 3}),
     ("postcritical", "postcritical_von_mises.toml", ["--steps", "40"], {"steps": 40}),
+    ("topology", "mech_bennett.toml", [], {}),
+    ("topology", "mech_slider_crank.toml", [], {}),
 ]
 
 

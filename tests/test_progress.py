@@ -72,3 +72,4 @@ def test_command_output_has_no_bar_off_a_terminal(tmp_path, capsys):
     assert main(["postcritical", str(MESHES / "postcritical_von_mises.toml"), "--steps", "20",
                  "--json", str(tmp_path / "p.json")]) == 0
     assert capsys.readouterr().err == ""
+

@@ -88,7 +88,13 @@ def test_builtin_cases_pass_and_report(tmp_path):
     md, page = write_report(results, tmp_path / "out")
     rep = parse_report(page)
     assert [row[0] for row in rep.summary_rows] == [c.id for c in cases]
-    assert all(row[2] == "pass" for row in rep.summary_rows)
+    from trussfe.validation.report import DEVIATES, REPRODUCES, verdict
+    assert [row[2] for row in rep.summary_rows] == [verdict(r) for r in results]
+    assert {row[2] for row in rep.summary_rows} <= {REPRODUCES, DEVIATES}
+    # a documented deviation's error against the stated source is not the "worst error"
+    for row, r in zip(rep.summary_rows, results):
+        if verdict(r) == DEVIATES:
+            assert "of explained" in row[5]
     assert set(rep.sections) == {c.id for c in cases}
     n_quantities = sum(len(c.quantities) for c in cases)
     assert len(rep.quantity_rows) == n_quantities
@@ -330,7 +336,8 @@ def test_report_labels_regression_values_and_explanations(tmp_path):
     n_reg = sum(q.kind == "regression" for c in cases for q in c.quantities)
     n_dev = sum(q.expect == "differ" for c in cases for q in c.quantities)
     assert n_reg == 2 and n_dev == 7
-    assert f"{n_dev} documented deviations, each checked against its explanation; " \
+    assert f"1 reproduce their sources; 1 reproduce them with documented deviations " \
+           f"({n_dev} quantities, each checked against its explanation); " \
            f"{n_reg} regression values" in text
     assert text.count("regression value (trussfe's own output)") == n_reg
     assert text.count("explained: ") == n_dev and "× 46.0/44.498" in text

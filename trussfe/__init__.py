@@ -11,7 +11,7 @@ has one function per analysis, available here::
     result = trussfe.static(model)          # result.axial_force, result.to_dict(), ...
 
 ``static``, ``modes``, ``buckling``, ``simulate``, ``actuators``, ``elastic``, ``transient``,
-``mechanism``, ``trace``, ``postcritical`` and ``validate`` (:mod:`trussfe.validation`) are
+``mechanism``, ``trace``, ``topology``, ``postcritical`` and ``validate`` (:mod:`trussfe.validation`) are
 imported on first use, so that ``import trussfe`` stays light.
 """
 from importlib.metadata import PackageNotFoundError, version as _version
@@ -28,7 +28,7 @@ from .model.structure import Structure, build_structure  # noqa: E402
 
 #: Analyses of the Python API, imported from :mod:`trussfe.api` on first use.
 _API = ("static", "modes", "buckling", "simulate", "actuators", "elastic", "transient",
-        "mechanism", "trace", "postcritical", "model_from_dict")
+        "mechanism", "trace", "topology", "postcritical", "model_from_dict")
 
 __all__ = ["AnalysisError", "InputError", "MechanismError", "TrussfeError", "Material",
            "Section", "Structure", "build_structure", "read_model", "__version__",

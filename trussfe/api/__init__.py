@@ -25,7 +25,8 @@ from .results import Result
 _LAZY = MappingProxyType({
     **dict.fromkeys(("ElasticResult", "TransientResult", "elastic", "transient"),
                     "along_motion"),
-    **dict.fromkeys(("MechanismResult", "TraceResult", "mechanism", "trace"), "kinematic"),
+    **dict.fromkeys(("MechanismResult", "TopologyResult", "TraceResult", "mechanism",
+                     "topology", "trace"), "kinematic"),
     **dict.fromkeys(("BucklingResult", "ModesResult", "StaticResult", "buckling", "modes",
                      "static"), "linear"),
     **dict.fromkeys(("PostcriticalResult", "postcritical"), "nonlinear_path"),
@@ -35,11 +36,12 @@ _LAZY = MappingProxyType({
 
 #: The analyses that take a model (the validation suite's ``analysis``).
 ANALYSIS_NAMES = ("static", "modes", "buckling", "simulate", "actuators", "elastic",
-                  "transient", "mechanism", "trace", "postcritical")
+                  "transient", "mechanism", "trace", "topology", "postcritical")
 
 if TYPE_CHECKING:
     from .along_motion import ElasticResult, TransientResult, elastic, transient
-    from .kinematic import MechanismResult, TraceResult, mechanism, trace
+    from .kinematic import (MechanismResult, TopologyResult, TraceResult, mechanism,
+                            topology, trace)
     from .linear import BucklingResult, ModesResult, StaticResult, buckling, modes, static
     from .nonlinear_path import PostcriticalResult, postcritical
     from .rigid_body import ActuatorsResult, SimulateResult, actuators, simulate
@@ -85,7 +87,7 @@ def check_options(analysis: str, options) -> None:
 
 __all__ = ["ANALYSES", "ANALYSIS_NAMES", "ActuatorsResult", "BucklingResult", "ElasticResult",
            "MechanismResult", "ModelLike", "ModesResult", "PostcriticalResult", "Result",
-           "SimulateResult", "StaticResult", "TraceResult", "TransientResult",
+           "SimulateResult", "StaticResult", "TopologyResult", "TraceResult", "TransientResult",
            "actuators", "as_structure", "buckling", "check_options", "elastic",
            "mechanism", "model_from_dict", "modes", "option_names", "postcritical", "read_model", "simulate",
-           "static", "trace", "transient"]
+           "static", "topology", "trace", "transient"]

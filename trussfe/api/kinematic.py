@@ -106,6 +106,37 @@ def trace(model: ModelLike, *, drive: str | Sequence[str], step: float | Sequenc
                                               "steps": steps, "branch": branch})
 
 
+def topology(model: ModelLike) -> TopologyResult:
+    """Graph description of the assembly (``trussfe topology``; Vlase et al. 2008 §2): the
+    bar-only equivalent mechanism (plates triangulated, the ground closed, sliders as edges),
+    its complete and reduced incidence matrices, spanning tree and cotree, fundamental cycle
+    matrix ``B_f`` (Vlase eq. 2) and complete cycle matrix ``B_a``.
+
+    Parameters
+    ----------
+    model : Structure, path or dict
+        Fully fixed nodes are the ground; a node fixed in all directions but one is a slider
+        (a node free in two directions of space is left free, ``planar_supports``); beams
+        joined rigidly are a plate.
+
+    Returns
+    -------
+    TopologyResult
+        ``incidence`` (joint, edge), ``fundamental_cycles`` and ``complete_cycles``
+        (cycle, edge), ``tree`` and ``cotree`` (edge ids), ``edge_ids``, ``joint_ids``.
+
+    Raises
+    ------
+    InputError
+        A model without members or without a fully fixed node, or a graph in several
+        pieces.
+    """
+    from ..kinematics.model_graph import model_topology
+
+    structure = as_structure(model)
+    return TopologyResult(structure, model_topology(structure))
+
+
 def _free_to_nodes(free: np.ndarray, columns: np.ndarray) -> np.ndarray:
     """Columns over the free coordinates, shape (f, k), as node vectors (k, node, dim)."""
     n, dim = free.shape
@@ -272,3 +303,89 @@ class TraceResult(Result):
         return {"units": "SI", "command": "trace", "model": s.name, "drive": o.get("drive"),
                 "step": o.get("step"), "steps": o.get("steps"), "branch": o.get("branch"),
                 "path": path, "events": r.events}
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class TopologyResult(Result):
+    """Graph of the equivalent bar-only mechanism (:func:`trussfe.topology`); ``solution``
+    is a :class:`trussfe.kinematics.model_graph.ModelTopology`."""
+
+    command: ClassVar[str] = "topology"
+
+    @property
+    def joint_ids(self) -> tuple[str, ...]:
+        """Joints of the equivalent mechanism (rows of :attr:`incidence`): the model's
+        nodes, then the virtual ground point of each slider."""
+        return tuple(self.solution.node_ids)
+
+    @property
+    def edge_ids(self) -> tuple[str, ...]:
+        """Edges (columns of every matrix): member ids, then the added plate, slider and
+        ground edges."""
+        return tuple(self.solution.edge_ids)
+
+    @property
+    def edge_kinds(self) -> tuple[str, ...]:
+        """``"bar"``, ``"plate"``, ``"ground"`` or ``"slider"`` for every edge."""
+        return tuple(str(k) for k in self.solution.assembly.kinds)
+
+    @property
+    def incidence(self) -> np.ndarray:
+        """Complete incidence matrix ``A_a``, shape (joint, edge): +1 where the edge leaves
+        the joint, −1 where it enters."""
+        return self.solution.incidence.toarray()
+
+    @property
+    def reduced_incidence(self) -> np.ndarray:
+        """``A``: ``A_a`` without the row of the reference joint (the tree's root)."""
+        return self.solution.graph.reduced_incidence.toarray()
+
+    @property
+    def tree(self) -> tuple[str, ...]:
+        """Edges of the spanning tree."""
+        return tuple(self.solution.edge_ids[j] for j in self.solution.graph.tree)
+
+    @property
+    def cotree(self) -> tuple[str, ...]:
+        """The links: edges not in the tree, one per fundamental cycle."""
+        return tuple(self.solution.edge_ids[j] for j in self.solution.graph.links)
+
+    @property
+    def fundamental_cycles(self) -> np.ndarray:
+        """``B_f`` (Vlase eq. 2), shape (link, edge)."""
+        return self.solution.graph.cycle_matrix
+
+    @property
+    def complete_cycles(self) -> np.ndarray | None:
+        """``B_a``, every simple cycle, shape (cycle, edge); ``None`` when the cycle space
+        has more than 16 dimensions."""
+        return self.solution.complete_cycles
+
+    def _document(self) -> dict:
+        t = self.solution
+        eq = t.assembly
+        ids = t.node_ids
+        edges = []
+        for j, ((a, b), kind) in enumerate(zip(eq.connectivity, eq.kinds)):
+            edges.append({"id": t.edge_ids[j], "kind": str(kind), "nodes": [ids[a], ids[b]],
+                          "length": float(np.linalg.norm(eq.coords[b] - eq.coords[a]))})
+        g = t.graph
+        Ba = t.complete_cycles
+        return {
+            "units": "SI", "command": "topology", "model": self.structure.name,
+            "counts": {"joints": len(ids), "edges": len(edges),
+                       "tree_edges": int(g.tree.size), "links": int(g.links.size),
+                       "cycles": None if Ba is None else int(Ba.shape[0])},
+            "joints": list(ids),
+            "ground": [ids[i] for i in eq.ground],
+            "reference": ids[g.reference],
+            "plates": t.plates,
+            "planar_supports": t.planar_supports,
+            "edges": edges,
+            "incidence": self.incidence,
+            "reduced_incidence": self.reduced_incidence,
+            "tree": list(self.tree),
+            "cotree": list(self.cotree),
+            "fundamental_cycles": self.fundamental_cycles,
+            "complete_cycles": Ba,
+        }

@@ -18,6 +18,9 @@ from .results import Result
 #: Appendix A (:data:`~trussfe.mechanics.conventions.THESIS`: backward differences and
 #: whole-length section inertia).
 SCHEMES = ("exact", "thesis")
+#: Analysis methods: the whole truss at once, or Lacy's chapter 6 bay by bay
+#: (:mod:`trussfe.rigid.bays`).
+METHODS = ("direct", "bay-by-bay")
 
 
 def load_motion_for(structure: Structure, motion, steps: int | None, *,
@@ -45,19 +48,20 @@ def load_motion_for(structure: Structure, motion, steps: int | None, *,
 
 
 def _simulate(model: ModelLike, motion, steps, scheme: str, sections: int,
-              progress: Callable[[int, int], None] | None):
+              progress: Callable[[int, int], None] | None, method: str = "direct"):
     from ..mechanics.conventions import Conventions
     from ..rigid.simulate import simulate as run
 
     choice("--scheme", scheme, SCHEMES)
+    choice("--method", method, METHODS)
     structure = refuse_member_loads(as_structure(model), "simulate")
     mot = load_motion_for(structure, motion, steps)
     return structure, run(structure, mot, conventions=Conventions.from_scheme(scheme),
-                          n_sections=sections, progress=progress)
+                          n_sections=sections, progress=progress, method=method)
 
 
 def simulate(model: ModelLike, *, motion=None, steps: int | None = None,
-             scheme: str = "exact", sections: int = 7,
+             scheme: str = "exact", sections: int = 7, method: str = "direct",
              progress: Callable[[int, int], None] | None = None) -> SimulateResult:
     """Rigid-body dynamic force analysis along a motion of the active members
     (``trussfe simulate``; Lacy chapters 2–4).
@@ -76,6 +80,13 @@ def simulate(model: ModelLike, *, motion=None, steps: int | None = None,
         Kinematics: exact, or Lacy's backward differences.
     sections : int
         Sections per member for the internal forces.
+    method : {"direct", "bay-by-bay"}
+        ``"direct"``: the whole truss at once.  ``"bay-by-bay"``: a chain of identical bays
+        analysed as Lacy's chapter 6 describes — each bay's kinematics in its base frame
+        carried up the chain (eqs. 6.1–6.13), the forces from the top bay down with each
+        bay's base reactions passed to the bay below (§6.2).  Both give the same results to
+        round-off; ``"bay-by-bay"`` refuses a model that is not such a chain and
+        ``scheme="thesis"``.
     progress : callable, optional
         Called as ``progress(done, total)`` during the run (a progress bar; the command line
         draws one on a terminal).
@@ -85,7 +96,7 @@ def simulate(model: ModelLike, *, motion=None, steps: int | None = None,
     SimulateResult
         ``time`` (step,), ``position`` (step, node, dim), ``axial_force`` (step, member), …
     """
-    structure, res = _simulate(model, motion, steps, scheme, sections, progress)
+    structure, res = _simulate(model, motion, steps, scheme, sections, progress, method)
     return SimulateResult(structure, res)
 
 

@@ -26,6 +26,9 @@ def register(subparsers) -> None:
     p.add_argument("--steps", type=opt.positive_int, help="number of time steps of a generated motion")
     p.add_argument("--scheme", choices=("exact", "thesis"), default="exact",
                    help="kinematics: exact (default) or Lacy's backward differences")
+    p.add_argument("--method", choices=("direct", "bay-by-bay"), default="direct",
+                   help="direct (default): the whole truss at once; bay-by-bay: a chain of "
+                   "identical bays by Lacy's chapter 6 (kinematics up the chain, forces down)")
     p.add_argument("--sections", type=opt.positive_int, default=7,
                    help="sections per member for internal forces (default 7)")
     p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the results as JSON")
@@ -40,7 +43,8 @@ def _run(args: argparse.Namespace) -> int:
 
     with progress_bar("simulate") as tick:
         result = api.simulate(args.model, motion=args.motion, steps=args.steps,
-                              scheme=args.scheme, sections=args.sections, progress=tick)
+                              scheme=args.scheme, sections=args.sections,
+                              method=args.method, progress=tick)
     res = result.solution
     if args.json:
         write_json(args.json, result.to_dict())

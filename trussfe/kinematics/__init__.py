@@ -12,13 +12,15 @@ from .topology import (EquivalentAssembly, GraphTopology, compatibility_from_inc
                        cycle_kinematics, equivalent_assembly, graph_topology, incidence_matrix,
                        reduced_incidence_matrix)
 from .velocity import bar_angular_velocity, mechanism_acceleration, mechanism_velocity
+from .cycles import CycleRates, complete_cycle_matrix, cycle_rates
 
 __all__ += ["TraceResult", "compatibility_error", "hortobagyi_step", "pivoted_partition",
             "trace_mechanism", "trace_structure", "RankResult", "rank_analysis",
             "rigid_body_modes", "structure_rank", "EquivalentAssembly", "GraphTopology",
             "compatibility_from_incidence", "cycle_kinematics", "equivalent_assembly",
             "graph_topology", "incidence_matrix", "reduced_incidence_matrix",
-            "bar_angular_velocity", "mechanism_acceleration", "mechanism_velocity"]
+            "bar_angular_velocity", "mechanism_acceleration", "mechanism_velocity",
+            "CycleRates", "complete_cycle_matrix", "cycle_rates"]
 from .order import MechanismOrder, mechanism_order
 
 __all__ += ["MechanismOrder", "mechanism_order"]

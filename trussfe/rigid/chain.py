@@ -316,15 +316,20 @@ def stack_bays(bay: Structure, n_bays: int) -> Structure:
 
 
 def chain_kinematics(bay: Structure, lengths: np.ndarray, rates: np.ndarray,
-                     accs: np.ndarray) -> ChainKinematics:
+                     accs: np.ndarray, next_base: tuple[int, int, int] = TOP_AS_NEXT_BASE
+                     ) -> ChainKinematics:
     """Kinematics of a stacked chain, bay by bay in bay-fixed frames (Lacy eqs. 6.1–6.13).
 
     Parameters
     ----------
     bay : Structure
-        The bay template (as passed to :func:`stack_bays`).
+        The bay template (as passed to :func:`stack_bays`): base nodes 0–2 (supported), then
+        the bay's six own nodes.
     lengths, rates, accs : ndarray, shape (nt, n_bays, n_active)
         Active lengths and rates of every bay (columns in the bay's active-member order).
+    next_base : tuple of int
+        Template nodes (among 3–8) that are the next bay's base nodes 0, 1, 2 (Lacy §6.2:
+        N7, N9, N8 for the double-octahedral bay).
 
     Returns
     -------
@@ -378,7 +383,7 @@ def chain_kinematics(bay: Structure, lengths: np.ndarray, rates: np.ndarray,
         fr["o"][:, k], fr["vo"][:, k], fr["ao"][:, k] = o, vo, ao
         fr["w"][:, k], fr["al"][:, k] = w, al
         rot[:, k] = R
-        top = np.array([3 + 6 * k + j - 3 for j in TOP_AS_NEXT_BASE])
+        top = np.array([3 + 6 * k + j - 3 for j in next_base])
         base_idx = top
     frames = BayFrames(origin=fr["o"], origin_velocity=fr["vo"], origin_acceleration=fr["ao"],
                        rotation=rot, omega=fr["w"], alpha=fr["al"])
@@ -393,6 +398,12 @@ def thesis_angular_acceleration(frames: BayFrames) -> np.ndarray:
     ``α_n − α_{n−1} − ω_{n−1} × (ω_n − ω_{n−1})``.  Summing these rates as eq. 6.14 does gives
     ``α_n − Σ_j ω_{j−1} × (ω_j − ω_{j−1})``: the returned array, (nt, nb, 3), differs from the
     true ``frames.alpha`` by that sum.
+
+    The sum vanishes when every ω is parallel — identical bays tilting about one fixed axis,
+    as in the chapter's own example (eq. 6.14 exact there to 5e-13) — and not otherwise: on a
+    3-bay chain whose nine actuators move by different amounts (0.01–0.06 m in 2 s) eq. 6.14
+    is off by 3.3 % of the peak angular acceleration for bay 3's frame and by 11.1 % for the
+    chain's top plane (:func:`trussfe.studies.lacy_chain.equation_6_14`).
     """
     w, al = frames.omega, frames.alpha
     wprev = np.concatenate([np.zeros_like(w[:, :1]), w[:, :-1]], axis=1)

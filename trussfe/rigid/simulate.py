@@ -21,6 +21,7 @@ from ..errors import AnalysisError, InputError
 from ..mechanics.conventions import PHYSICAL, Conventions
 from ..model.structure import Structure
 from .active import active_members
+from .bays import METHODS, bay_by_bay_forces, bay_by_bay_kinematics, chain_layout
 from .buckling import BucklingCheck, buckling_check
 from .forces import (MemberBodies, NodalForces, forces_from_tensions, member_bodies,
                      nodal_forces_with_static, pair_loads)
@@ -134,7 +135,8 @@ class _Counter:
 def simulate(structure: Structure, motion: Motion | None = None, *,
              conventions: Conventions = PHYSICAL, n_sections: int = 7,
              effective_length_factor: np.ndarray | float = 1.0, actuators: bool = True,
-             progress: Callable[[int, int], None] | None = None) -> SimulationResult:
+             progress: Callable[[int, int], None] | None = None,
+             method: str = "direct") -> SimulationResult:
     """Rigid-body dynamic force analysis of a truss along a motion (Lacy chapters 2–4).
 
     Parameters
@@ -158,6 +160,11 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
         Called as ``progress(done, total)``: over the steps while the positions are solved
         one after the other, then over the blocks of steps whose forces are computed (from
         worker threads, one call at a time).
+    method : {"direct", "bay-by-bay"}
+        ``"direct"``: the whole truss at once.  ``"bay-by-bay"``: a chain of identical bays
+        analysed as Lacy's chapter 6 describes (:mod:`trussfe.rigid.bays`): kinematics of
+        each bay in its base frame carried up the chain (eqs. 6.1–6.13), forces from the top
+        bay down with the reactions passed on (§6.2); exact kinematics only.
 
     Returns
     -------
@@ -173,6 +180,11 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
         raise InputError("sections", f"need a positive integer number of sections (1 = the "
                          f"midpoint only), got {n_sections}")
     scheme = conventions.kinematics
+    if method not in METHODS:
+        raise InputError("--method", f"unknown method {method!r}; valid: {', '.join(METHODS)}")
+    if method == "bay-by-bay" and scheme != "exact":
+        raise InputError("--method", "bay-by-bay uses the exact kinematics of every bay; it "
+                         "cannot be combined with --scheme thesis")
     if motion is None:
         motion = rest_motion(structure)
     acts = active_members(structure)
@@ -189,7 +201,13 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
             f"an analysis of {nt:,} time steps", "use fewer steps (--steps) or a longer "
             "time step")
     step = max(1, CHUNK_ENTRIES // max(m, 1))
-    if scheme == "exact" and nt > step:
+    if method == "bay-by-bay":
+        layout = chain_layout(structure)
+        kin = bay_by_bay_kinematics(structure, motion, layout)
+        (kin, f, fs, sf, ss, st, sts, mid, act_force, act_static, cmoment) = _steps(
+            structure, kin, bodies, act_idx,
+            forces=bay_by_bay_forces(structure, kin, bodies, layout), **opts)
+    elif scheme == "exact" and nt > step:
         # Positions for the whole motion (warm starts link the steps), then the forces one
         # block of steps at a time: the exact kinematics are independent per step, and blocks
         # that fit in the processor cache are several times faster than whole-motion arrays
@@ -253,7 +271,8 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
                            stresses=st, static_stresses=sts, midpoint_axial_force=mid,
                            actuator_force=act_force, static_actuator_force=act_static,
                            cantilever_moment=cmoment, buckling=buck,
-                           options={"scheme": scheme, "n_sections": int(n_sections),
+                           options={"scheme": scheme, "method": method,
+                                    "n_sections": int(n_sections),
                                     "full_length_inertia": conventions.full_length_inertia,
                                     "shear_factor": conventions.shear_factor})
     if actuators and "actuators" in structure.extensions and act_idx.size:

@@ -21,6 +21,15 @@ sensitivity of the node positions to the active lengths, ``B(x) ∂x/∂q_j = e_
 compatibility matrix of the current assembly and the unit elongation of active member j), the
 same equations that give the velocities.
 
+On a chain of identical bays (``split_over_bays = true``, :func:`~trussfe.rigid.bays.chain_layout`)
+the angle is that of the chain's top plane, and the motion is Lacy's own example of chapter
+6: "a rotation of the top plane of a 3 bay truss [of] 30 degrees about n̂1 and 30 degrees about
+n̂2" done as "a 10 degree, 10 degree rotation on a single bay" — every bay's active members
+take the lengths q(θ/n) of the first bay alone turning by θ/n relative to its base, so each
+bay has the same configuration relative to its base plane (the premise of eqs. 6.5 and 6.12).
+Read as a rotation vector, Lacy's (30°, 30°) is a tilt of 42.43° about (n̂1 + n̂2)/√2, 14.14°
+per bay.
+
 The map θ ↦ q(θ) is solved on a grid of angles by continuation from the rest configuration
 and interpolated by a quintic spline, whose first and second derivatives give
 ``q̇ = q'(θ) θ̇`` and ``q̈ = q''(θ) θ̇² + q'(θ) θ̈``.  The angle follows the thesis' third-order
@@ -40,6 +49,8 @@ Motion-file table::
     top_nodes = ["N7", "N8", "N9"]  # default: the three nodes highest along the base normal
     hold = "height"               # or "mean_length"
     height = 1.1218               # optional value held (default: the model's at rest)
+    split_over_bays = false       # true: a chain's top-plane rotation, shared equally by
+                                  # its n bays (Lacy ch. 6): each bay turns by angle/n
     profile = "third-order"       # or "constant-velocity" with ramp_time = 0.25 (s)
     # or a given profile instead of start/end/duration/steps:
     # time = [0.0, 0.1, ...]
@@ -68,7 +79,7 @@ log = logging.getLogger(__name__)
 _KEYS = ("type", "axis", "start", "end", "duration", "steps", "top_nodes", "hold", "time",
          "angle", "grid", "height", "profile", "ramp_time", "damping_ratio",
          "settling_fraction", "settling_constant",
-         "real_root_factor", "include_end", "first_sample")
+         "real_root_factor", "include_end", "first_sample", "split_over_bays")
 
 
 def rotation_matrix(axis: np.ndarray, angle: float) -> np.ndarray:
@@ -318,7 +329,19 @@ def rotation_motion(spec: dict, structure: Structure, *, steps: int | None = Non
     hold = spec.get("hold", "height")
     if hold not in ("height", "mean_length"):
         raise InputError(f"{item}.hold", f"must be \"height\" or \"mean_length\", got {hold!r}")
-    if "top_nodes" in spec:
+    split = spec_bool(spec, "split_over_bays", item)
+    n_bays = 1
+    chain = structure
+    if split:
+        from .bays import chain_layout
+        if "top_nodes" in spec:
+            raise InputError(f"{item}.top_nodes", "a rotation split over the bays turns each "
+                             "bay's own top plane; top_nodes is not used with it")
+        layout = chain_layout(structure)
+        n_bays = layout.n_bays
+        structure = layout.template
+        top = [6, 7, 8]
+    elif "top_nodes" in spec:
         names = spec["top_nodes"]
         if not isinstance(names, list) or len(names) != 3:
             raise InputError(f"{item}.top_nodes", "expected three node ids")
@@ -363,7 +386,7 @@ def rotation_motion(spec: dict, structure: Structure, *, steps: int | None = Non
         n = steps if steps is not None else spec.get("steps", 50)
         if isinstance(n, bool) or not isinstance(n, int) or n < 1:
             raise InputError(f"{item}.steps", f"must be a positive integer, got {n!r}")
-        _steps_fit(n, structure, item)
+        _steps_fit(n, chain, item)
         last = n + (1 if spec_bool(spec, "include_end", item) else 0)
         t = np.arange(last) * (T / n)
         y, dy, ddy = constant_velocity_profile(t, T, ramp)
@@ -378,7 +401,7 @@ def rotation_motion(spec: dict, structure: Structure, *, steps: int | None = Non
         n = steps if steps is not None else spec.get("steps", 50)
         if isinstance(n, bool) or not isinstance(n, int) or n < 1:
             raise InputError(f"{item}.steps", f"must be a positive integer, got {n!r}")
-        _steps_fit(n, structure, item)
+        _steps_fit(n, chain, item)
         opts = {k: spec_positive(spec, k, item) for k in (
             "damping_ratio", "settling_fraction", "settling_constant", "real_root_factor")
                 if k in spec}
@@ -388,6 +411,7 @@ def rotation_motion(spec: dict, structure: Structure, *, steps: int | None = Non
         y, dy, ddy = third_order_response(t, T, **opts)
         ang, dang, ddang = a0 + (a1 - a0) * y, (a1 - a0) * dy, (a1 - a0) * ddy
     held = None if "height" not in spec else _number(spec, "height", item, positive=True)
+    ang, dang, ddang = ang / n_bays, dang / n_bays, ddang / n_bays
     inv = TopPlaneInverse(structure, top, axis, hold, held)
     # Grid over the swept range; the quintic spline of q(θ) is accurate to round-off for the
     # smooth inverse map of a bay well inside its workspace.
@@ -410,5 +434,12 @@ def rotation_motion(spec: dict, structure: Structure, *, steps: int | None = Non
         dq = d1 * dang[:, None]
         ddq = d2 * (dang ** 2)[:, None] + d1 * ddang[:, None]
     log.info("rotation motion: %d steps, active lengths %.6g … %.6g m", t.size, q.min(), q.max())
+    if split:
+        # Every bay's active members, bay after bay, take the first bay's lengths.
+        return Motion(time=t, members=layout.members[:, layout.active].ravel(),
+                      length=np.tile(q, n_bays), velocity=np.tile(dq, n_bays),
+                      acceleration=np.tile(ddq, n_bays),
+                      source=f"top-plane rotation about {np.round(axis, 6).tolist()} split "
+                             f"over {n_bays} bays")
     return Motion(time=t, members=inv.active, length=q, velocity=dq, acceleration=ddq,
                   source=f"top-plane rotation about {np.round(axis, 6).tolist()}")

@@ -169,3 +169,131 @@ def slider_crank_closed_form(samples: int = 12, omega: float = 2.0, step: float 
                cycle_velocity_max_error=float(cv), cycle_acceleration_max_error=float(ca),
                slider_travel=float(res.coords[:, 2, 0].max() - res.coords[:, 2, 0].min()))
     return out
+
+
+# --------------------------------------------------------------------------- spatial cycles
+def _compare(eq, x, conn, free, *, length_rates=None, length_accs=None, drive_v=None,
+             drive_a=None):
+    """Cycle-equation rates (:func:`~trussfe.kinematics.cycles.cycle_rates`) and the
+    compatibility-matrix rates (``B v = L̇``, ``B a = L̈ − (|v_rel|² − L̇²)/L``) of one state."""
+    from ..kinematics.cycles import cycle_rates
+
+    b = conn.shape[0]
+    ld = np.zeros(b)
+    ldd = np.zeros(b)
+    for j, v in (length_rates or {}).items():
+        ld[j] = v
+    for j, v in (length_accs or {}).items():
+        ldd[j] = v
+    dim = x.shape[1]
+    pv = {i * dim + a: v for (i, a), v in (drive_v or {}).items()}
+    pa = {i * dim + a: v for (i, a), v in (drive_a or {}).items()}
+    v = mechanism_velocity(x, conn, free, pv, ld)
+    a = mechanism_acceleration(x, conn, free, v, pa, ld, ldd)
+    cr = cycle_rates(eq, length_rates=length_rates, length_accelerations=length_accs,
+                     node_velocities=drive_v, node_accelerations=drive_a)
+    n = x.shape[0]
+    return cr, v, a, float(np.abs(cr.velocity[:n] - v).max()), \
+        float(np.abs(cr.acceleration[:n] - a).max())
+
+
+def spatial_cycles_octahedral_bay() -> dict:
+    """Lacy's double-octahedral bay (three active members) by the cycle equations in space
+    against the compatibility matrix, at the equilibrium position and at the first slewed
+    position of Lacy §5.3.
+
+    The three actuators extend at L̇ = (0.10, −0.05, 0.02) m/s with L̈ = (0.3, 0.1, −0.2)
+    m/s² (arbitrary rates: both methods take the same).
+
+    Returns
+    -------
+    dict
+        Per position: ``velocity_difference`` (m/s), ``acceleration_difference`` (m/s²),
+        ``velocity_scale`` and ``acceleration_scale`` (largest joint rate); and
+        ``cycles``: the fundamental cycles s − r of the equivalent mechanism.
+    """
+    from ..kinematics.topology import equivalent_assembly
+    from ..models.octahedral import slew_lengths
+    from .lacy_rigid import double_octahedron
+
+    out = {}
+    for pos in ("equilibrium", "slew1"):
+        s = double_octahedron(tuple(slew_lengths(pos)))
+        x, conn = s.coords, s.connectivity
+        free = ~s.translation_supports
+        acts = [a.member for a in s.extensions["active_members"]]
+        lr = dict(zip(acts, (0.10, -0.05, 0.02)))
+        la = dict(zip(acts, (0.3, 0.1, -0.2)))
+        eq = equivalent_assembly(x, conn, ground=list(np.flatnonzero(~free.any(axis=1))))
+        _, v, a, dv, da = _compare(eq, x, conn, free, length_rates=lr, length_accs=la)
+        out[pos] = {"velocity_difference": dv, "acceleration_difference": da,
+                    "velocity_scale": float(np.abs(v).max()),
+                    "acceleration_scale": float(np.abs(a).max())}
+        out["cycles"] = int(eq.topology.cycle_matrix.shape[0])
+    return out
+
+
+def spatial_cycles_bennett(samples: int = 8, omega: float = 2.0, alpha: float = 0.5) -> dict:
+    """Bennett's linkage (:mod:`trussfe.models.bennett`) by the cycle equations in space,
+    against the compatibility matrix and the closed form, over a turn of the input link.
+
+    Link 1 turns about axis 1 at θ̇₁ = ``omega`` with θ̈₁ = ``alpha``: the drive is the
+    velocity and acceleration of joint A2 (both horizontal components).  Closed form: link
+    2 turns at ω₂ = θ̇₁ z₁ + θ̇₂ z₂ with θ̇₂ = (dθ₂/dθ₁) θ̇₁ (:func:`~trussfe.models.bennett.
+    bennett_rate`), so joint A3 moves at v_A2 + ω₂ × (A3 − A2), and each bar of link 2 turns
+    at ω₂'s part normal to it.
+
+    Returns
+    -------
+    dict
+        ``closure`` (largest |T₁T₂T₃T₄ − I| over the samples), ``bar_length_misfit`` (m, the
+        bars keep their lengths across the samples), ``velocity_difference``,
+        ``acceleration_difference`` (cycle against compatibility, m/s, m/s²),
+        ``closed_form_velocity_error`` (A3, m/s), ``closed_form_omega_error`` (link 2's
+        bars, rad/s), ``velocity_scale``.
+    """
+    from ..kinematics.topology import equivalent_assembly
+    from ..models.bennett import bennett_frames, bennett_linkage, bennett_rate
+
+    out = {"closure": 0.0, "bar_length_misfit": 0.0, "velocity_difference": 0.0,
+           "acceleration_difference": 0.0, "closed_form_velocity_error": 0.0,
+           "closed_form_omega_error": 0.0, "velocity_scale": 0.0}
+    L0 = None
+    for t1 in np.linspace(0.0, 2 * np.pi, samples, endpoint=False) + 0.4:
+        F = bennett_frames(t1)
+        out["closure"] = max(out["closure"], float(np.abs(F[4] - np.eye(4)).max()))
+        x, conn, fixed = bennett_linkage(t1)
+        L = member_lengths(x, conn)
+        L0 = L if L0 is None else L0
+        out["bar_length_misfit"] = max(out["bar_length_misfit"], float(np.abs(L - L0).max()))
+        free = np.ones_like(x, dtype=bool)
+        free[fixed] = False
+        z1 = np.array([0.0, 0.0, 1.0])
+        r = x[2] - x[0]
+        vA2 = omega * np.cross(z1, r)
+        aA2 = alpha * np.cross(z1, r) + omega * np.cross(z1, vA2)
+        dv = {(2, 0): vA2[0], (2, 1): vA2[1]}
+        da = {(2, 0): aA2[0], (2, 1): aA2[1]}
+        eq = equivalent_assembly(x, conn, ground=fixed)
+        cr, v, a, ev, ea = _compare(eq, x, conn, free, drive_v=dv, drive_a=da)
+        out["velocity_difference"] = max(out["velocity_difference"], ev)
+        out["acceleration_difference"] = max(out["acceleration_difference"], ea)
+        out["velocity_scale"] = max(out["velocity_scale"], float(np.abs(v).max()))
+        z2 = F[1, :3, 2]
+        w2 = omega * z1 + bennett_rate(t1) * omega * z2
+        vA3 = vA2 + np.cross(w2, x[4] - x[2])
+        out["closed_form_velocity_error"] = max(out["closed_form_velocity_error"],
+                                                float(np.abs(cr.velocity[4] - vA3).max()))
+        for j in range(8, 12):                      # the bars of link 2 (axis 2 → axis 3)
+            e = x[conn[j, 1]] - x[conn[j, 0]]
+            e /= np.linalg.norm(e)
+            wn = w2 - (w2 @ e) * e
+            out["closed_form_omega_error"] = max(out["closed_form_omega_error"],
+                                                 float(np.abs(cr.omega[j] - wn).max()))
+    return out
+
+
+def validation_spatial_cycles() -> dict:
+    """The validation case ``topology-cycles-3d``: :func:`spatial_cycles_octahedral_bay`
+    and :func:`spatial_cycles_bennett`."""
+    return {"bay": spatial_cycles_octahedral_bay(), "bennett": spatial_cycles_bennett()}
