@@ -30,12 +30,13 @@ def _step_by_step(sim, k):
 
 
 def main() -> None:
-    s = slew1_structure()
     rows = []
-    for name, make in (("slew 1", lambda n: slew1_motion(s, steps=n)),
-                       ("slew 2", lambda n: slew2_motion(s, steps=n))):
+    # The synthetic slew 2 reaches 1.2302 m, 1.2 mm beyond the stroke: run without the limits,
+    # as trussfe.studies.lacy_elastic does.
+    for name, s, make in (("slew 1", slew1_structure(), slew1_motion),
+                          ("slew 2", slew1_structure(stroke=False), slew2_motion)):
         for n in (55, 220, 880):
-            m = make(n)
+            m = make(s, steps=n)
             t0 = time.perf_counter()
             sim = simulate(s, m, actuators=False)
             t_rigid = time.perf_counter() - t0

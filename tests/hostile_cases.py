@@ -254,6 +254,40 @@ MODEL_EDITS = [
      "B = " + "{a=" * 3000 + "1" + "}" * 3000),
     ("active member unknown", "[loads]", "[active_members.nope]\nmin_length = 1\n"
      "max_length = 2\n\n[loads]"),
+    # load cases, springs, rotary inertia
+    ("temperature without thermal_expansion", "[loads]\nB = [0.0, -1000.0]",
+     '[load_cases.hot]\ntemperature = [ { members = ["AB"], delta_T = 40.0 } ]'),
+    ("prescribed displacement on a free DOF", "[loads]\nB = [0.0, -1000.0]",
+     "[load_cases.settle]\nprescribed = { B = { y = -0.005 } }"),
+    ("prescribed unknown DOF", "[loads]\nB = [0.0, -1000.0]",
+     "[load_cases.settle]\nprescribed = { A = { q = -0.005 } }"),
+    ("spring on a fixed DOF", "[loads]", "[springs]\nA = { x = 1.0e6 }\n\n[loads]"),
+    ("spring stiffness negative", "[loads]", "[springs]\nB = { x = -1.0e6 }\n\n[loads]"),
+    ("spring stiffness nan", "[loads]", "[springs]\nB = { x = nan }\n\n[loads]"),
+    ("spring on an unknown node", "[loads]", "[springs]\nQ = { x = 1.0e6 }\n\n[loads]"),
+    ("rotational spring at a pin joint", "[loads]",
+     "[springs]\nB = { rz = 1.0e3 }\n\n[loads]"),
+    ("combination naming a missing case", "[loads]\nB = [0.0, -1000.0]",
+     "[load_cases.a]\nloads = { B = [0.0, -1000.0] }\n\n[combinations]\nULS = { b = 1.5 }"),
+    ("combination factor not a number", "[loads]\nB = [0.0, -1000.0]",
+     '[load_cases.a]\nloads = { B = [0.0, -1000.0] }\n\n[combinations]\nULS = { a = "x" }'),
+    ("combinations without cases", "[loads]", "[combinations]\nULS = { a = 1.5 }\n\n[loads]"),
+    ("unknown key in a load case", "[loads]\nB = [0.0, -1000.0]",
+     "[load_cases.a]\nload = { B = [0.0, -1000.0] }"),
+    ("loads beside load cases", "[loads]",
+     "[load_cases.a]\nloads = { B = [0.0, -1.0] }\n\n[loads]"),
+    ("case gravity without a gravity vector", "[loads]\nB = [0.0, -1000.0]",
+     "[load_cases.dead]\ngravity = true"),
+    ("length error on an unknown member", "[loads]\nB = [0.0, -1000.0]",
+     '[load_cases.fit]\nlength_error = [ { member = "XY", delta = 1e-3 } ]'),
+    ("member load of a case on a missing member", "[loads]\nB = [0.0, -1000.0]",
+     '[load_cases.p]\nmember_loads = [ { member = "XY", kind = "uniform", '
+     'q = [0.0, -800.0] } ]'),
+    ("top-level member loads beside load cases", "[loads]\nB = [0.0, -1000.0]",
+     '[[member_loads]]\nmember = "AB"\nkind = "uniform"\nq = [0.0, -800.0]\n\n'
+     '[load_cases.p]\nloads = { B = [0.0, -1.0] }'),
+    ("rotary inertia negative", "[loads]", "[masses]\nB = { mass = 1.0, inertia = -1.0 }"
+     "\n\n[loads]"),
 ]
 
 #: Whole files: (id, bytes) — the model file is exactly this.
@@ -394,6 +428,10 @@ OPTION_CASES = [
 
 #: Whole argument lists that must be refused: (id, argv, words).
 ARGV_CASES = [
+    ("static case unknown", ["static", "{m}", "--case", "nope"], "--case"),
+    ("static combination unknown", ["static", "{m}", "--combination", "ULS"], "--combination"),
+    ("static case and all", ["static", "{m}", "--case", "default", "--all"], "--all"),
+    ("buckling case unknown", ["buckling", "{m}", "--case", "nope"], "--case"),
     ("trace step nan", ["trace", "{mech}", "--drive", "2:y", "--step", "nan", "--steps", "2"],
      "--step"),
     ("trace step zero", ["trace", "{mech}", "--drive", "2:y", "--step", "0", "--steps", "2"],

@@ -110,8 +110,8 @@ def test_planar_truss_is_rejected():
 
 
 def test_shipped_rotation_motion_file():
-    """meshes/double_octahedron_slew1_rotation.toml through the motion loader: 221 samples from
-    −10° to +10°, M9/10 = M11/12 by symmetry, ending at rest (constant-velocity profile)."""
+    """meshes/double_octahedron_tilt_rotation.toml through the motion loader: 221 samples from
+    −5° to +5°, M9/10 = M11/12 by symmetry, ending at rest (constant-velocity profile)."""
     from pathlib import Path
 
     import trussfe.rigid.actuator  # noqa: F401
@@ -119,7 +119,7 @@ def test_shipped_rotation_motion_file():
     from trussfe.rigid.motion_file import load_motion
     meshes = Path(__file__).resolve().parents[1] / "meshes"
     s = read_model(meshes / "double_octahedron_actuators.toml")
-    m = load_motion(meshes / "double_octahedron_slew1_rotation.toml", s)
+    m = load_motion(meshes / "double_octahedron_tilt_rotation.toml", s)
     assert m.time.size == 221
     assert_allclose(m.time[-1], 5.5, rtol=1e-12)
     assert_allclose(m.length[:, 1], m.length[:, 2], rtol=1e-10)

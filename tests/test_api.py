@@ -186,7 +186,7 @@ def test_motion_analyses_shapes_and_equilibrium():
     assert t.axial_force.shape == t.axial_force_quasi_static.shape == (t.time.size, 2)
 
     a = trussfe.actuators(MESHES / "double_octahedron_actuators.toml",
-                          motion="double_octahedron_slew1_rotation.toml", steps=12)
+                          motion="double_octahedron_tilt_rotation.toml", steps=12)
     assert a.actuator_ids == ("M7_8", "M9_10", "M11_12")
     assert a.force.shape == a.motor_voltage.shape == (13, 3)
     doc = a.to_dict()["actuators"]["M7_8"]
@@ -210,8 +210,8 @@ CLI_CASES = [
      ["--motion", "chain3_motion_rotation.toml", "--steps", "6", "--method", "bay-by-bay"],
      {"motion": "chain3_motion_rotation.toml", "steps": 6, "method": "bay-by-bay"}),
     ("actuators", "double_octahedron_actuators.toml",
-     ["--motion", "double_octahedron_slew1_rotation.toml", "--steps", "12"],
-     {"motion": "double_octahedron_slew1_rotation.toml", "steps": 12}),
+     ["--motion", "double_octahedron_tilt_rotation.toml", "--steps", "12"],
+     {"motion": "double_octahedron_tilt_rotation.toml", "steps": 12}),
     ("elastic", "triangular_truss_motion_active.toml",
      ["--motion", "triangular_truss_motion_3s.toml", "--steps", "10", "--sections", "5"],
      {"motion": "triangular_truss_motion_3s.toml", "steps": 10, "sections": 5}),

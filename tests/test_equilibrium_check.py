@@ -45,6 +45,30 @@ def test_the_check_passes_and_fails_when_it_should(equilibrium):
         equilibrium(dataclasses.replace(r, reactions=weightless.reactions))
 
 
+def test_every_load_case_solve_is_checked_and_springs_count():
+    """conftest.py checks every case and combination of a load-case solution; a spring's
+    force is a reaction: without it a sprung structure is out of balance."""
+    import trussfe
+    import trussfe.fem.load_cases as load_cases
+    from equilibrium import assert_global_equilibrium
+    assert hasattr(load_cases.solve_load_cases, "__wrapped__")
+    s = trussfe.model_from_dict({
+        "model": {"dimension": 2},
+        "materials": {"st": {"E": 2e11}}, "sections": {"s": {"area": 1e-4}},
+        "nodes": {"A": [0, 0], "B": [1, 0], "C": [1, 1]},
+        "members": {"AB": {"nodes": ["A", "B"], "section": "s", "material": "st"},
+                    "AC": {"nodes": ["A", "C"], "section": "s", "material": "st"},
+                    "BC": {"nodes": ["B", "C"], "section": "s", "material": "st"}},
+        "supports": {"A": ["x", "y"]}, "springs": {"B": {"y": 1e5}, "C": {"x": 2e5}},
+        "load_cases": {"p": {"loads": {"C": [100.0, -50.0]}}}})
+    r = load_cases.solve_load_cases(s).cases["p"]
+    assert_global_equilibrium(r, loads=s.extensions["load_cases"].case("p").loads)
+    lost = dataclasses.replace(r, reactions=r.reactions.copy())
+    lost.reactions[1:] = 0.0                               # the spring forces dropped
+    with pytest.raises(AssertionError):
+        assert_global_equilibrium(lost, loads=s.extensions["load_cases"].case("p").loads)
+
+
 def test_the_check_counts_member_loads(equilibrium):
     """Member loads are applied loads of the check: a frame under a trapezoidal load, a point
     force and a couple along its members balances with them, and does not without them (or

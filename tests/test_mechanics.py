@@ -269,3 +269,25 @@ def test_beam_twist_mass_is_rho_j():
     spin[fe.node_dofs[:, 3]] = 1.0                       # θx = 1 at both ends
     assert fe.interior_dofs.size == 0
     assert_allclose(spin @ M @ spin, AL.density * TUBE.J * 2.0, rtol=1e-12)
+
+
+def test_stress_form_is_a_convention_of_the_run():
+    """``Conventions(stress_form="lacy-per-axis")`` makes the rigid-body run report Lacy's
+    per-axis von Mises (eqs. 4.75/4.76), the same as applying that form to the run's section
+    forces; the default run reports the combined form."""
+    from dataclasses import replace
+    from trussfe.mechanics.conventions import PHYSICAL
+    from trussfe.rigid.motion import third_order_motion
+    from trussfe.rigid.sections import section_stresses
+    from trussfe.rigid.simulate import simulate
+    from trussfe.studies.lacy_rigid import double_octahedron
+    s = double_octahedron((1.2289, 1.1079, 1.1079), gravity=-9.81, top_load=46.0)
+    m = third_order_motion(s, [1.2289, 1.1079, 1.1079], [1.1079, 1.2289, 1.2289], 2.0, 10)
+    plain = simulate(s, m)
+    per_axis = simulate(s, m, conventions=replace(PHYSICAL, stress_form="lacy-per-axis"))
+    assert_allclose(per_axis.stresses.von_mises,
+                    section_stresses(s, plain.sections, convention="lacy-per-axis").von_mises,
+                    rtol=1e-14)
+    assert_allclose(plain.stresses.von_mises,
+                    section_stresses(s, plain.sections).von_mises, rtol=1e-14)
+    assert not np.allclose(per_axis.stresses.von_mises, plain.stresses.von_mises, rtol=1e-6)

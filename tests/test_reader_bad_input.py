@@ -252,3 +252,45 @@ def test_bad_mesh_files(tmp_path):
     meshio.write(tmp_path / "g.vtu", meshio.Mesh(pts, [("line", np.array([[0, 1], [1, 2]]))]))
     with pytest.raises(InputError, match="non-zero z"):
         read_model(tmp_path / "m.toml")
+
+
+# load cases, combinations, springs and rotary inertia: fuzzed into a model without [loads]
+CASE_KEYS = ["loads", "gravity", "prescribed", "temperature", "initial_strain",
+             "length_error", "member_loads", "member", "members", "delta_T", "strain",
+             "delta", "A", "B", "C", "AB", "BC", "x", "y", "rz", "mass", "inertia", "dead",
+             "live"]
+case_scalars = st.one_of(
+    st.integers(-3, 3), st.floats(allow_nan=True, allow_infinity=True),
+    st.sampled_from(CASE_KEYS), st.booleans())
+case_values = st.recursive(
+    case_scalars,
+    lambda inner: st.one_of(st.lists(inner, max_size=3),
+                            st.dictionaries(st.sampled_from(CASE_KEYS), inner, max_size=3)),
+    max_leaves=20)
+CASE_BASE = {k: v for k, v in tomllib.loads(GOOD.replace(
+    "density = 2711.5", "density = 2711.5\nthermal_expansion = 2.3e-5")).items()
+    if k != "loads"}
+
+
+@settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.fixed_dictionaries({}, optional={
+    "load_cases": st.dictionaries(st.sampled_from(CASE_KEYS), case_values, max_size=3),
+    "combinations": st.dictionaries(st.sampled_from(CASE_KEYS), case_values, max_size=2),
+    "springs": st.dictionaries(st.sampled_from(CASE_KEYS), case_values, max_size=2),
+    "masses": st.dictionaries(st.sampled_from(CASE_KEYS), case_values, max_size=2)}))
+def test_fuzz_reader_load_case_tables(extra):
+    """Fuzzed [load_cases], [combinations], [springs] and [masses]: a Structure (whose cases
+    solve or are refused in one line) or an InputError, nothing else."""
+    from trussfe.errors import TrussfeError
+    from trussfe.fem.load_cases import solve_load_cases
+    data = {**CASE_BASE, **extra}
+    try:
+        s = parse_model(data, source="fuzz.toml")
+    except InputError as err:
+        assert str(err) and "\n" not in str(err)
+        return
+    assert isinstance(s, Structure)
+    try:
+        solve_load_cases(s)
+    except TrussfeError as err:
+        assert "\n" not in str(err)

@@ -96,12 +96,18 @@ def test_motion_file_reproduces_velocity():
 
 
 def test_no_assembly_names_step_and_members():
-    """Active member longer than follower + base (4 m): no triangle exists."""
+    """Active member longer than follower + base (4 m): no triangle exists.  The truss' own
+    stroke (2.5-4.1 m) refuses 4.5 m first; without stroke limits the assembly fails."""
+    import dataclasses
     s = triangular_truss()
     L = np.array([[2.5], [3.5], [4.5]])
     m = Motion([0, 1, 2], [1], L, np.zeros_like(L), np.zeros_like(L))
-    with pytest.raises(AnalysisError, match=r"step 2 .*no assembly.*'active' = 4\.5"):
+    with pytest.raises(InputError, match=r"step 2 \(t = 2 s\): active member 'active' is 4\.5 m"):
         simulate(s, m)
+    free = s.with_extensions(active_members=[
+        dataclasses.replace(a, max_length=float("nan")) for a in s.extensions["active_members"]])
+    with pytest.raises(AnalysisError, match=r"step 2 .*no assembly.*'active' = 4\.5"):
+        simulate(free, m)
 
 
 def test_singular_position_is_reported_not_garbage():

@@ -23,7 +23,7 @@ def analyse(model, **options):
 
 MESHES = Path(__file__).resolve().parents[1] / "meshes"
 BAY = str(MESHES / "double_octahedron_actuators.toml")
-ROTATION = str(MESHES / "double_octahedron_slew1_rotation.toml")
+ROTATION = str(MESHES / "double_octahedron_tilt_rotation.toml")
 TRIANGLE = str(MESHES / "triangular_truss_motion_active.toml")
 TRIANGLE_MOTION = str(MESHES / "triangular_truss_motion_3s.toml")
 

@@ -27,8 +27,8 @@ _LAZY = MappingProxyType({
                     "along_motion"),
     **dict.fromkeys(("MechanismResult", "TopologyResult", "TraceResult", "mechanism",
                      "topology", "trace"), "kinematic"),
-    **dict.fromkeys(("BucklingResult", "ModesResult", "StaticResult", "buckling", "modes",
-                     "static"), "linear"),
+    **dict.fromkeys(("BucklingResult", "LoadCasesResult", "ModesResult", "StaticResult",
+                     "buckling", "modes", "static"), "linear"),
     **dict.fromkeys(("PostcriticalResult", "postcritical"), "nonlinear_path"),
     **dict.fromkeys(("ActuatorsResult", "SimulateResult", "actuators", "simulate"),
                     "rigid_body"),
@@ -42,7 +42,8 @@ if TYPE_CHECKING:
     from .along_motion import ElasticResult, TransientResult, elastic, transient
     from .kinematic import (MechanismResult, TopologyResult, TraceResult, mechanism,
                             topology, trace)
-    from .linear import BucklingResult, ModesResult, StaticResult, buckling, modes, static
+    from .linear import (BucklingResult, LoadCasesResult, ModesResult, StaticResult,
+                         buckling, modes, static)
     from .nonlinear_path import PostcriticalResult, postcritical
     from .rigid_body import ActuatorsResult, SimulateResult, actuators, simulate
 
@@ -86,6 +87,7 @@ def check_options(analysis: str, options) -> None:
 
 
 __all__ = ["ANALYSES", "ANALYSIS_NAMES", "ActuatorsResult", "BucklingResult", "ElasticResult",
+           "LoadCasesResult",
            "MechanismResult", "ModelLike", "ModesResult", "PostcriticalResult", "Result",
            "SimulateResult", "StaticResult", "TopologyResult", "TraceResult", "TransientResult",
            "actuators", "as_structure", "buckling", "check_options", "elastic",

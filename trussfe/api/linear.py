@@ -3,11 +3,12 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import ClassVar
+from typing import Any, ClassVar
 
 import numpy as np
 
 from ..linalg.pardiso import available as pardiso_available
+from ..fem.load_cases import load_cases_json, solve_load_cases
 from ..fem.static import solve_static
 from .model import ModelLike, as_structure
 from .options import choice, positive_int
@@ -18,9 +19,10 @@ SOLVERS = ("auto", "superlu", "pardiso")
 
 
 def static(model: ModelLike, *, bar_model: str = "truss", subdivisions: int | None = None,
-           solver: str = "auto") -> StaticResult:
-    """Linear static analysis under the model's loads, member loads and gravity
-    (``trussfe static``).
+           solver: str = "auto", case: str | None = None, combination: str | None = None,
+           all_cases: bool = False) -> StaticResult | LoadCasesResult:
+    """Linear static analysis under the model's loads, member loads and gravity, or its load
+    cases and combinations (``trussfe static``).
 
     Parameters
     ----------
@@ -32,32 +34,69 @@ def static(model: ModelLike, *, bar_model: str = "truss", subdivisions: int | No
         Elements per frame member (default 4).
     solver : {"auto", "superlu", "pardiso"}
         Sparse linear solver; ``auto`` takes PARDISO for large models when installed.
+    case : str, optional
+        Analyse this load case alone (``[load_cases.NAME]``; ``"default"`` for the loads of
+        a model without load cases).
+    combination : str, optional
+        Analyse this combination alone (``[combinations]``).
+    all_cases : bool
+        Every case and combination with their envelope.  The default for a model with
+        ``[load_cases]`` when neither ``case`` nor ``combination`` is given.
 
     Returns
     -------
-    StaticResult
-        ``displacement`` and ``reaction`` (node, dim), ``axial_force`` (member,), …
+    StaticResult or LoadCasesResult
+        One case or combination: a :class:`StaticResult` (``displacement`` and ``reaction``
+        (node, dim), ``axial_force`` (member,), …).  All cases: a :class:`LoadCasesResult`
+        (``cases``, ``combinations``: name → :class:`StaticResult`; ``envelope``).
 
     Raises
     ------
     InputError
-        A bad model or option.
+        A bad model or option, an unknown case or combination.
     MechanismError
         The structure is a mechanism.
     """
     positive_int("--subdivisions", subdivisions)
     choice("--solver", solver, SOLVERS)
+    chosen = [o for o, v in (("--case", case), ("--combination", combination),
+                             ("--all", all_cases)) if v not in (None, False)]
+    if len(chosen) > 1:
+        from ..errors import InputError
+        raise InputError(chosen[1], f"give one of --case, --combination and --all, not "
+                                    f"{' and '.join(chosen)}")
     structure = as_structure(model)
     if solver == "pardiso" and not pardiso_available():
         from ..errors import InputError
         raise InputError("--solver", "PARDISO is not available (pip install pypardiso); "
                          "use --solver superlu")
-    return StaticResult(structure, solve_static(structure, bar_model=bar_model,
-                                                subdivisions=subdivisions, backend=solver))
+    if not chosen and "load_cases" not in structure.extensions:
+        # the model's [loads] and gravity: the one implicit case, solved as always
+        return StaticResult(structure, solve_static(structure, bar_model=bar_model,
+                                                    subdivisions=subdivisions,
+                                                    backend=solver))
+    for option, value in (("--case", case), ("--combination", combination)):
+        if value is not None and not isinstance(value, str):
+            from ..errors import InputError
+            raise InputError(option, f"expected a name, got {value!r}")
+    solution = solve_load_cases(
+        structure, cases=None if case is None and combination is None else
+        ([case] if case is not None else []),
+        combinations=None if case is None and combination is None else
+        ([combination] if combination is not None else []),
+        bar_model=bar_model, subdivisions=subdivisions, backend=solver)
+    if case is not None:
+        return StaticResult(structure, solution.cases[case], selected=("case", case))
+    if combination is not None:
+        return StaticResult(structure, solution.combinations[combination],
+                            selected=("combination", combination),
+                            factors=solution.factors[combination])
+    return LoadCasesResult(structure, solution)
 
 
 def modes(model: ModelLike, *, count: int | None = None, mass: str = "consistent",
-          bar_model: str = "truss", subdivisions: int | None = None) -> ModesResult:
+          bar_model: str = "truss", subdivisions: int | None = None,
+          mass_from: str | None = None) -> ModesResult:
     """Natural frequencies and mass-normalised mode shapes (``trussfe modes``).
 
     Parameters
@@ -72,6 +111,9 @@ def modes(model: ModelLike, *, count: int | None = None, mass: str = "consistent
         Pinned beams add the members' own bending modes.
     subdivisions : int, optional
         Elements per frame member (default 4).
+    mass_from : str, optional
+        A load case whose nodal loads along gravity add their mass, F·ĝ/|g|, at their nodes
+        (:mod:`trussfe.mechanics.mass_source`): the payload of a case in the modes.
 
     Returns
     -------
@@ -79,16 +121,39 @@ def modes(model: ModelLike, *, count: int | None = None, mass: str = "consistent
         ``frequencies_hz`` (mode,), ``shapes`` (mode, node, dim), ``effective_mass``, …
     """
     structure = as_structure(model)
+    if mass_from is not None:
+        structure = _with_case_masses(structure, mass_from)
     from ..fem.modal import solve_modes         # imported on first use: start-up
 
     return ModesResult(structure, solve_modes(structure, count=count, mass=mass,
                                               bar_model=bar_model, subdivisions=subdivisions))
 
 
+def _with_case_masses(structure, name: str):
+    """The structure with the masses of load case ``name``'s loads along gravity added."""
+    from ..errors import InputError
+    from ..io.model_file import _suggest
+    from ..mechanics.mass_source import masses_from_loads
+    from ..model.load_cases import model_load_cases
+
+    cases = model_load_cases(structure)
+    try:
+        case = cases.case(name)
+    except KeyError:
+        raise InputError("--mass-from", f"no load case '{name}'"
+                         f"{_suggest(name, cases.case_names)}") from None
+    if len(case.member_loads):
+        raise InputError("--mass-from", f"load case '{name}' has member loads; only nodal "
+                                        "loads are turned into masses")
+    added = masses_from_loads(case.loads, structure.gravity, f"load case '{name}'")
+    return structure.with_masses(structure.masses + added)
+
+
 def buckling(model: ModelLike, *, count: int = 4, bar_model: str = "pinned-beam",
-             subdivisions: int | None = None) -> BucklingResult:
-    """Linear (eigen) buckling about the static state under the model's loads and gravity
-    (``trussfe buckling``).
+             subdivisions: int | None = None, case: str | None = None,
+             combination: str | None = None) -> BucklingResult:
+    """Linear (eigen) buckling about the static state under the model's loads and gravity,
+    or under one load case or combination (``trussfe buckling``).
 
     Parameters
     ----------
@@ -99,18 +164,40 @@ def buckling(model: ModelLike, *, count: int = 4, bar_model: str = "pinned-beam"
         Pinned beams buckle between joints; truss bars show joint instability only.
     subdivisions : int, optional
         Elements per frame member (default 4).
+    case, combination : str, optional
+        The state to buckle about: a load case or a combination (one of them is needed for
+        a model with ``[load_cases]``).  The load factor scales the whole state, imposed
+        strains and support settlements included.
 
     Returns
     -------
     BucklingResult
         ``load_factors`` (mode,), ``shapes`` (mode, node, dim), ``euler_load`` (member,), …
     """
+    from ..errors import InputError
     structure = as_structure(model)
     from ..fem.buckling import solve_buckling   # imported on first use: start-up
 
-    return BucklingResult(structure, solve_buckling(structure, count=count,
-                                                    bar_model=bar_model,
-                                                    subdivisions=subdivisions))
+    if case is not None and combination is not None:
+        raise InputError("--combination", "give one of --case and --combination, not both")
+    if case is None and combination is None:
+        if "load_cases" in structure.extensions:
+            raise InputError("--case", "the model has load cases: choose the state to buckle "
+                             "about with --case NAME or --combination NAME")
+        return BucklingResult(structure, solve_buckling(structure, count=count,
+                                                        bar_model=bar_model,
+                                                        subdivisions=subdivisions))
+    for option, value in (("--case", case), ("--combination", combination)):
+        if value is not None and not isinstance(value, str):
+            raise InputError(option, f"expected a name, got {value!r}")
+    solution = solve_load_cases(structure, cases=[case] if case is not None else [],
+                                combinations=[combination] if combination is not None else [],
+                                bar_model=bar_model, subdivisions=subdivisions)
+    state = (solution.cases[case] if case is not None
+             else solution.combinations[combination])
+    return BucklingResult(structure, solve_buckling(structure, count=count, static=state),
+                          selected=("case", case) if case is not None
+                          else ("combination", combination))
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -120,6 +207,10 @@ class StaticResult(Result):
     the applied loads and gravity."""
 
     command: ClassVar[str] = "static"
+    #: ``("case", NAME)`` or ``("combination", NAME)`` when one was chosen, else None.
+    selected: tuple[str, str] | None = None
+    #: The factors of a chosen combination, case → factor.
+    factors: dict[str, float] | None = None
 
     @property
     def displacement(self) -> np.ndarray:
@@ -185,7 +276,45 @@ class StaticResult(Result):
 
     def _document(self) -> dict:
         from ..fem.static import static_json
-        return static_json(self.solution)
+        doc = static_json(self.solution)
+        if self.selected is not None:
+            doc[self.selected[0]] = self.selected[1]
+            if self.factors is not None:
+                doc["factors"] = dict(self.factors)
+        return doc
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class LoadCasesResult(Result):
+    """Every load case and combination of a model with their envelope
+    (:func:`trussfe.static` with ``all_cases``, or a model with ``[load_cases]``);
+    ``solution`` is a :class:`trussfe.fem.load_cases.LoadCaseSolution`.  Each case and
+    combination is in global equilibrium."""
+
+    command: ClassVar[str] = "static"
+
+    @property
+    def cases(self) -> dict[str, StaticResult]:
+        """Case name → its :class:`StaticResult`, in the order of the model."""
+        return {n: StaticResult(self.structure, r, selected=("case", n))
+                for n, r in self.solution.cases.items()}
+
+    @property
+    def combinations(self) -> dict[str, StaticResult]:
+        """Combination name → its :class:`StaticResult` (the factored sum of its cases)."""
+        return {n: StaticResult(self.structure, r, selected=("combination", n),
+                                factors=self.solution.factors[n])
+                for n, r in self.solution.combinations.items()}
+
+    @property
+    def envelope(self) -> Any:
+        """Largest and smallest member forces, stresses and reactions over the combinations
+        (over the cases when there are none), with the governing one
+        (:class:`trussfe.fem.load_cases.Envelope`)."""
+        return self.solution.envelope
+
+    def _document(self) -> dict:
+        return load_cases_json(self.solution)
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -241,6 +370,8 @@ class BucklingResult(Result):
     :class:`trussfe.fem.buckling.BucklingResult`."""
 
     command: ClassVar[str] = "buckling"
+    #: ``("case", NAME)`` or ``("combination", NAME)``: the state buckled about, if chosen.
+    selected: tuple[str, str] | None = None
 
     @property
     def load_factors(self) -> np.ndarray:
@@ -274,4 +405,7 @@ class BucklingResult(Result):
 
     def _document(self) -> dict:
         from ..fem.buckling import buckling_json
-        return buckling_json(self.solution)
+        doc = buckling_json(self.solution)
+        if self.selected is not None:
+            doc[self.selected[0]] = self.selected[1]
+        return doc

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
 """``trussfe buckling MODEL [--count N] [--bar-model pinned-beam|truss] [--subdivisions K]
-[--json OUT] [--vtk DIR]``: linear buckling load factors about the static state
+[--case NAME | --combination NAME] [--json OUT] [--vtk DIR]``: linear buckling load factors about the static state
 (docs/cli.md, docs/json.md, docs/vtk.md)."""
 from __future__ import annotations
 
@@ -32,6 +32,11 @@ def register(subparsers) -> None:
                    "axial-only truss bars (joint instability only)")
     p.add_argument("--subdivisions", type=opt.positive_int, default=None, metavar="K",
                    help="elements per frame member (default 4)")
+    which = p.add_mutually_exclusive_group()
+    which.add_argument("--case", metavar="NAME", default=None,
+                       help="buckle about the state of one load case")
+    which.add_argument("--combination", metavar="NAME", default=None,
+                       help="buckle about the state of one combination of load cases")
     p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the results as JSON")
     p.add_argument("--vtk", metavar="DIR", type=opt.output_dir, help="write DIR/buckling.pvd, a step per mode")
     p.set_defaults(func=_main)
@@ -72,7 +77,8 @@ def _table(result: BucklingResult) -> str:
 
 def _main(args: argparse.Namespace) -> int:
     res = api.buckling(args.model, count=args.count, bar_model=args.bar_model,
-                       subdivisions=args.subdivisions)
+                       subdivisions=args.subdivisions, case=args.case,
+                       combination=args.combination)
     result = res.solution
     doc = res.to_dict() if args.json else None
     if args.vtk:

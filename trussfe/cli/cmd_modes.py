@@ -33,6 +33,8 @@ def register(subparsers) -> None:
                    "which adds the members' own bending modes")
     p.add_argument("--subdivisions", type=opt.positive_int, default=None, metavar="K",
                    help="elements per frame member (default 4)")
+    p.add_argument("--mass-from", metavar="CASE", default=None,
+                   help="add the mass of a load case's nodal loads along gravity (F/g)")
     p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the results as JSON")
     p.add_argument("--vtk", metavar="DIR", type=opt.output_dir, help="write DIR/modes.pvd, a step per mode")
     p.set_defaults(func=_main)
@@ -69,7 +71,7 @@ def _table(result: ModalResult) -> str:
 
 def _main(args: argparse.Namespace) -> int:
     res = api.modes(args.model, count=args.count, mass=args.mass, bar_model=args.bar_model,
-                    subdivisions=args.subdivisions)
+                    subdivisions=args.subdivisions, mass_from=args.mass_from)
     result = res.solution
     doc = res.to_dict() if args.json else None
     if args.vtk:

@@ -1,9 +1,11 @@
 # SPDX-License-Identifier: MIT
 """``trussfe static MODEL [--bar-model truss|pinned-beam] [--subdivisions K]
-[--solver auto|superlu|pardiso] [--json OUT] [--vtk OUT.vtu]``: linear static finite-element analysis (docs/cli.md)."""
+[--solver auto|superlu|pardiso] [--case NAME | --combination NAME | --all] [--json OUT]
+[--vtk OUT.vtu]``: linear static finite-element analysis (docs/cli.md)."""
 from __future__ import annotations
 
 import argparse
+import re
 import sys
 from pathlib import Path
 
@@ -29,8 +31,18 @@ def register(subparsers) -> None:
     p.add_argument("--solver", choices=("auto", "superlu", "pardiso"), default="auto",
                    help="sparse linear solver (default: PARDISO for large models when "
                    "installed, else SuperLU)")
+    which = p.add_mutually_exclusive_group()
+    which.add_argument("--case", metavar="NAME", default=None,
+                       help="analyse one load case ([load_cases.NAME])")
+    which.add_argument("--combination", metavar="NAME", default=None,
+                       help="analyse one combination ([combinations])")
+    which.add_argument("--all", dest="all_cases", action="store_true", default=False,
+                       help="every load case and combination with their envelope (the "
+                       "default for a model with [load_cases])")
     p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the results as JSON")
-    p.add_argument("--vtk", metavar="OUT.vtu", type=opt.output_file, help="write the deformed-shape fields as VTU")
+    p.add_argument("--vtk", metavar="OUT.vtu", type=opt.output_file,
+                   help="write the deformed-shape fields as VTU (several cases: OUT.pvd and "
+                   "one OUT_case_NAME.vtu / OUT_combination_NAME.vtu each)")
     p.set_defaults(func=_main)
 
 
@@ -46,6 +58,47 @@ def write_vtu(path: str | Path, result: StaticResult) -> None:
     cell_data = {"axial_force": result.axial_force, "axial_stress": result.axial_stress,
                  "strain": result.strain, "von_mises": result.max_von_mises}
     _write_vtu(path, s, point_data=point_data, cell_data=cell_data)
+
+
+def write_stations_vtu(path: str | Path, result: StaticResult) -> Path | None:
+    """``OUT_stations.vtu`` beside ``OUT.vtu``: the section forces along beams and loaded
+    members (None, nothing written, for a truss without member loads)."""
+    if not (np.any(result.fe.is_frame) or result.member_loads is not None):
+        return None
+    from ..io.vtk import write_stations       # meshio: only when a VTU is asked for
+    from ..io.vtk_results import static_station_fields
+    xi, fields = static_station_fields(result)
+    vtk = Path(path)
+    return write_stations(vtk.with_name(vtk.stem + "_stations.vtu"), result.structure, xi,
+                          point_data=fields)
+
+
+def write_collection(path: str | Path, solution) -> Path:
+    """``OUT.pvd`` listing one ``.vtu`` (as :func:`write_vtu`) per case and combination of a
+    :class:`~trussfe.fem.load_cases.LoadCaseSolution`: ``OUT_case_NAME.vtu``,
+    ``OUT_combination_NAME.vtu`` beside it (characters other than letters, digits, ``-``,
+    ``_`` and ``.`` of a name become ``_``)."""
+    from ..io.vtk import write_pvd
+    from ..errors import InputError
+
+    path = Path(path)
+    if path.suffix not in (".vtu", ".pvd"):
+        raise InputError(str(path), "VTK output of several load cases must end in .vtu or "
+                                    ".pvd (a .pvd collection is written)")
+    stem = path.with_suffix("")
+    entries, used = [], set()
+    results = [("case", n, r) for n, r in solution.cases.items()] + \
+        [("combination", n, r) for n, r in solution.combinations.items()]
+    for i, (kind, name, result) in enumerate(results):
+        safe = re.sub(r"[^A-Za-z0-9_.-]", "_", name)
+        file = Path(f"{stem}_{kind}_{safe}.vtu")
+        if file in used:                                 # two names alike once sanitised
+            file = Path(f"{stem}_{kind}_{safe}_{i}.vtu")
+        used.add(file)
+        write_vtu(file, result)
+        write_stations_vtu(file, result)
+        entries.append((i, file.name))
+    return write_pvd(stem.with_suffix(".pvd"), entries)
 
 
 #: Longest node or member list printed in full; larger models print a summary only.
@@ -93,23 +146,58 @@ def _table(result: StaticResult) -> str:
     return "\n".join(lines)
 
 
+def _collection_table(res) -> str:
+    """Summary of every case and combination, and the governing ones of the envelope."""
+    s = res.structure
+    sol = res.solution
+    lines = [f"trussfe static: {s.name} ({sol.fe.bar_model} model, {sol.fe.n_dof} DOFs, "
+             f"{len(sol.cases)} load case(s), {len(sol.combinations)} combination(s))", "",
+             f"{'':>12}  {'name':>16}  {'max |u| [m]':>12}  {'max |N| [N]':>12}  "
+             f"{'max vM [Pa]':>12}  {'residual':>9}"]
+    for kind, group in (("case", sol.cases), ("combination", sol.combinations)):
+        for name, r in group.items():
+            umax = float(np.linalg.norm(r.displacements[:, :s.dim], axis=1).max(initial=0.0))
+            nmax = float(np.abs(r.axial_force).max(initial=0.0))
+            vmax = float(np.fmax.reduce(r.max_von_mises)) if s.n_members else 0.0
+            lines.append(f"{kind:>12}  {name:>16}  {umax:12.4e}  {nmax:12.4f}  "
+                         f"{vmax:12.4e}  {r.residual:9.1e}")
+    env = sol.envelope
+    if s.n_members:
+        mx, imx, mn, imn = env.fields["axial_force"]
+        i, j = int(np.argmax(mx)), int(np.argmin(mn))
+        vm, ivm, _, _ = env.fields["max_von_mises"]
+        k = int(np.argmax(vm))
+        over = env.over[:-1]
+        lines += ["", f"envelope over the {env.over}",
+                  f"largest tension {mx[i]:.4f} N in member {s.member_ids[i]} ({over} "
+                  f"{env.names[imx[i]]})",
+                  f"largest compression {mn[j]:.4f} N in member {s.member_ids[j]} ({over} "
+                  f"{env.names[imn[j]]})",
+                  f"largest von Mises {vm[k]:.4e} Pa in member {s.member_ids[k]} ({over} "
+                  f"{env.names[ivm[k]]})"]
+    return "\n".join(lines)
+
+
 def _main(args: argparse.Namespace) -> int:
     res = api.static(args.model, bar_model=args.bar_model, subdivisions=args.subdivisions,
-                     solver=args.solver)
-    result = res.solution
+                     solver=args.solver, case=args.case, combination=args.combination,
+                     all_cases=args.all_cases)
     doc = res.to_dict() if args.json else None
     # all outputs are produced before any is renamed into place
-    if args.vtk:
-        write_vtu(args.vtk, result)
-        if np.any(result.fe.is_frame) or result.member_loads is not None:
-            # section forces along beams and loaded members: OUT_stations.vtu beside OUT.vtu
-            from ..io.vtk import write_stations       # meshio: only when a VTU is asked for
-            from ..io.vtk_results import static_station_fields
-            xi, fields = static_station_fields(result)
-            vtk = Path(args.vtk)
-            write_stations(vtk.with_name(vtk.stem + "_stations.vtu"), result.structure, xi,
-                           point_data=fields)
+    if isinstance(res, api.StaticResult):
+        result = res.solution
+        if args.vtk:
+            write_vtu(args.vtk, result)
+            write_stations_vtu(args.vtk, result)
+        text = _table(result)
+        if res.selected is not None:
+            kind, name = res.selected
+            text = text.replace("\n", f"\n{kind} {name}\n", 1)
+    else:
+        if args.vtk:
+            write_collection(args.vtk, res.solution)
+        text = _collection_table(res)
     if args.json:
         write_json(args.json, doc)
-    sys.stdout.write(_table(result) + "\n")
+    sys.stdout.write(text + "\n")
     return 0

@@ -152,13 +152,18 @@ def solve_buckling(structure: Structure, count: int = 4, bar_model: str = "pinne
         static = solve_static(structure, bar_model=bar_model, subdivisions=subdivisions,
                               self_weight=self_weight)
     fe = static.fe
-    # the static result's own element forces: the fixed-end forces of member loads are
-    # subtracted there (element_axial_force(fe, u) would leave them in)
+    # the element forces of the static state as recovered, with the forces the elements carry
+    # themselves subtracted (self-weight, the fixed-end forces of member loads and of imposed
+    # strains; element_axial_force(fe, u) would leave them in)
     N = static.element_axial_force
     fscale = np.abs(static.f).max() if static.f.size else 0.0
+    if fscale == 0.0 and static.reactions.size:
+        # a state of moved supports alone: its reactions give the scale of its forces
+        fscale = np.abs(static.reactions).max()
     if fscale == 0.0 or np.abs(N).max() <= UNLOADED_TOLERANCE * max(fscale, 1e-300):
         raise AnalysisError(item, "the structure is unloaded (no member carries an axial "
-                            "force): linear buckling needs [loads] or gravity to scale")
+                            "force): linear buckling needs [loads], gravity or a load case "
+                            "to scale")
     K = fe.stiffness()
     Kg = fe.geometric_stiffness(N)
     free = fe.free

@@ -401,6 +401,7 @@ class FEModel:
         fixed[gd[hit]] = True
         self.fixed = fixed
         self.free = np.flatnonzero(~fixed)
+        self.spring_stiffness = self._node_diagonal("springs", "stiffness", cols, "springs")
 
         # ---- element end points: joint node or interior point
         first = j == 0
@@ -423,6 +424,34 @@ class FEModel:
         self.n_elements = n_el
         log.info("discretised %d members into %d elements, %d DOFs (%s model)",
                  m, n_el, self.n_dof, self.bar_model)
+
+    def _node_diagonal(self, table: str, attr: str, cols: np.ndarray, item: str
+                       ) -> np.ndarray | None:
+        """A per-node, per-DOF table of the structure's extensions (springs, rotary inertia)
+        as a global diagonal, shape (n_dof,); None when the model has no such table.
+
+        Raises
+        ------
+        InputError
+            A value on a rotation the node does not have (a pin joint).
+        """
+        data = self.structure.extensions.get(table)
+        if data is None:
+            return None
+        values = getattr(data, attr)
+        gd = self.node_dofs[:, cols[-values.shape[1]:]]
+        lost = (values != 0.0) & (gd < 0)
+        if np.any(lost):
+            from ..model.structure import DOF_NAMES
+            i, c = np.argwhere(lost)[0]
+            names = DOF_NAMES[self.ndim][-values.shape[1]:]
+            raise InputError(f"{item}.{self.structure.node_ids[i]}",
+                             f"acts on rotation {names[c]}, which this node does not have (a "
+                             "pin joint: no beam is rigidly attached); remove it")
+        diag = np.zeros(self.n_dof)
+        ok = gd >= 0
+        np.add.at(diag, gd[ok], values[ok])
+        return diag
 
     @property
     def rotation(self) -> np.ndarray:
@@ -858,7 +887,12 @@ class FEModel:
                 mem, _, _, L = self._bar_geometry(g)
                 g._K_global = self._bar_matrix(g, "stiffness", (s.E * s.area)[mem] / L)
             return g._K_global.copy() if copy else g._K_global
-        return self._sum_groups(bar, self.local_stiffness)
+        K = self._sum_groups(bar, self.local_stiffness)
+        if self.spring_stiffness is not None:
+            # elastic supports (:class:`~trussfe.model.node_supports.Springs`): k on the
+            # diagonal of their DOFs
+            K = (K + sp.diags(self.spring_stiffness, format="csr")).tocsr()
+        return K
 
     def mass(self, kind: str = "consistent", include_nodal_masses: bool = True
              ) -> sp.csr_matrix:
@@ -906,6 +940,10 @@ class FEModel:
             d = np.zeros(self.n_dof)
             d[self.node_dofs[:, : self.ndim]] = s.masses[:, None]
             M = M + sp.diags(d)
+        if include_nodal_masses and "rotary_inertia" in s.extensions:
+            # rotary inertia of the nodal masses on the node rotations
+            cols = np.arange(self.ndim, self.ndim + self.nrot)
+            M = M + sp.diags(self._node_diagonal("rotary_inertia", "inertia", cols, "masses"))
         return M.tocsr()
 
     def geometric_stiffness(self, element_axial_force: np.ndarray) -> sp.csr_matrix:

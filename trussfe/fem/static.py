@@ -183,6 +183,12 @@ def solve_static(structure: Structure, bar_model: str = "truss",
         :data:`SOLVE_RESIDUAL_LIMIT`); the message gives the number of independent
         mechanisms and the moving nodes.
 
+    Notes
+    -----
+    The load cases of a model (prescribed displacements, imposed strains, several right-hand
+    sides on one factorisation) are solved by :func:`trussfe.fem.load_cases.solve_load_cases`
+    through the same steps (:class:`LinearSystem`).
+
     Examples
     --------
     A bar of EA = 2e7 N pulled by 1 kN stretches by PL/EA = 5e-5 m:
@@ -205,55 +211,184 @@ def solve_static(structure: Structure, bar_model: str = "truss",
     mlv = member_load_vector(fe, member_loads) if len(member_loads) else None
     if mlv is not None:
         f = f + mlv.global_vector
-    # a long truss of single bars: K_ff banded straight from the bars, K·u bar by bar
-    truss = factorise_truss(fe, backend)
-    if truss is not None:
-        fac, seconds = truss
-        K = None
-        t2 = time.perf_counter()
-        t1 = t2 - seconds["factorise"]       # band fill and factorisation after the blocks
-    else:
-        K = fe.stiffness(copy=False)         # read only here
-        t1 = time.perf_counter()
-        fac = factorise(K, fe.free, fe=fe, item=structure.source or structure.name,
-                        backend=backend)
-        t2 = time.perf_counter()
-    try:
-        u = solve_free(fac, fe.free, f)
-    except SingularMatrixError:
-        # a non-finite solution from a factor that passed its pivot test: a mechanism hidden
-        # by round-off — say which
-        raise_mechanism(fe.stiffness(copy=False) if K is None else K, fe,
-                        structure.source or structure.name)
-    r_all = (internal_forces(fe, u) if K is None else K @ u) - f
-    t3 = time.perf_counter()
-    nf = np.linalg.norm(f[fe.free])
-    residual = float(np.linalg.norm(r_all[fe.free]) / nf) if nf > 0 else \
-        float(np.linalg.norm(r_all[fe.free]))
-    reac = np.where(fe.fixed, r_all, 0.0)
-    if not (residual <= SOLVE_RESIDUAL_LIMIT):
-        # the factorisation passed its pivot test but does not solve the system: a mechanism
-        # hidden by round-off (or worse) — say which, never return such displacements
-        K = fe.stiffness(copy=False) if K is None else K
-        raise_mechanism(K, fe, structure.source or structure.name)
-    if not np.all(np.isfinite(u)):
-        raise AnalysisError(structure.source or structure.name,
-                            "the linear solve produced non-finite displacements; the "
-                            "stiffness is too ill-conditioned to trust")
+    system = LinearSystem(fe, backend, started=t0)
+    u, residual = system.solve(f)
     if mlv is None:
-        fel = fe.element_forces(u)
-    else:
-        base = (fe.element_self_weight_local() if self_weight
-                else [np.zeros(g.n_local) for g in fe.groups])
-        fel = fe.element_forces(u, [b + ml for b, ml in zip(base, mlv.local)])
-    x, F = section_forces(fe, u, fel)
-    s = structure
-    m = s.n_members
-    k = fe.member_subdivisions
-    # the two end sections (with one element per member, F holds exactly those)
-    ends = F if F.shape[1] == 2 else np.stack([F[:, 0], F[np.arange(m), k]], axis=1)
-    # midpoint axial force: N is linear along a member under uniform distributed load
-    N_mid = 0.5 * (ends[:, 0, 0] + ends[:, 1, 0])
+        return system.recover(u, f, residual)
+    base = (fe.element_self_weight_local() if self_weight
+            else [np.zeros(g.n_local) for g in fe.groups])
+    return system.recover(u, f, residual, [b + ml for b, ml in zip(base, mlv.local)],
+                          member_loads=mlv)
+
+
+class LinearSystem:
+    """The free-DOF stiffness of a discretisation, factorised once, and the recovery of
+    displacements, reactions and section forces from it: the steps of a linear static
+    analysis, shared by one load (:func:`solve_static`) and many load cases
+    (:func:`trussfe.fem.load_cases.solve_load_cases`).
+
+    Parameters
+    ----------
+    fe : FEModel
+    backend : str
+        Linear-solver backend (:mod:`trussfe.linalg.factor`).
+    started : float, optional
+        ``time.perf_counter()`` when the load vectors began to be assembled (the
+        ``assemble`` timing counts from there).
+
+    Raises
+    ------
+    MechanismError
+        K_ff is singular.
+    """
+
+    def __init__(self, fe: FEModel, backend: str = "auto", started: float | None = None):
+        self.fe = fe
+        t0 = time.perf_counter() if started is None else started
+        # a long truss of single bars: K_ff banded straight from the bars, K·u bar by bar
+        truss = factorise_truss(fe, backend)
+        if truss is not None:
+            fac, seconds = truss
+            self.K = None
+            t2 = time.perf_counter()
+            t1 = t2 - seconds["factorise"]   # band fill and factorisation after the blocks
+        else:
+            self.K = fe.stiffness(copy=False)    # read only here
+            t1 = time.perf_counter()
+            fac = factorise(self.K, fe.free, fe=fe, item=self.item, backend=backend)
+            t2 = time.perf_counter()
+        self.factor = fac
+        self.timings = {"assemble": t1 - t0, "factorise": t2 - t1}
+
+    @property
+    def item(self) -> str:
+        """What an error names: the model file or the model's name."""
+        s = self.fe.structure
+        return s.source or s.name
+
+    def stiffness(self):
+        """The global K (assembled on demand for a truss solved from its bars)."""
+        return self.fe.stiffness(copy=False) if self.K is None else self.K
+
+    def internal_forces(self, u: np.ndarray) -> np.ndarray:
+        """K u for one displacement vector or a (n_dof, r) block of them."""
+        return internal_forces(self.fe, u) if self.K is None else self.K @ u
+
+    def solve(self, f: np.ndarray, u_prescribed: np.ndarray | None = None
+              ) -> tuple[np.ndarray, np.ndarray | float]:
+        """Displacements under loads ``f`` and displacements ``u_prescribed`` of the fixed
+        DOFs: ``K_ff u_f = f_f − K_fp u_p``.
+
+        Parameters
+        ----------
+        f : ndarray, shape (n_dof,) or (n_dof, r)
+            Load vectors (``r`` right-hand sides solved together).
+        u_prescribed : ndarray, same shape as ``f``, optional
+            Prescribed displacements on the fixed DOFs (zero elsewhere); None: all zero.
+
+        Returns
+        -------
+        u : ndarray, same shape as ``f``
+        residual : float or ndarray of shape (r,)
+            ‖K u − f‖ / ‖f − K u_p‖ over the free DOFs, per right-hand side.
+
+        Raises
+        ------
+        MechanismError
+            A mechanism hidden by round-off (non-finite solution, or residual above
+            :data:`SOLVE_RESIDUAL_LIMIT`).
+        """
+        fe = self.fe
+        t2 = time.perf_counter()
+        rhs = f if u_prescribed is None else f - self.stiffness() @ u_prescribed
+        try:
+            u = solve_free(self.factor, fe.free, rhs)
+        except SingularMatrixError:
+            # a non-finite solution from a factor that passed its pivot test: a mechanism
+            # hidden by round-off — say which
+            raise_mechanism(self.stiffness(), fe, self.item)
+        if u_prescribed is not None:
+            u[fe.fixed] = u_prescribed[fe.fixed]
+        r_all = self.internal_forces(u) - f
+        if u.ndim == 1:
+            nf = np.linalg.norm(rhs[fe.free])
+            nr = np.linalg.norm(r_all[fe.free])
+            residual = float(nr / nf) if nf > 0 else float(nr)
+        else:
+            nf = np.linalg.norm(rhs[fe.free], axis=0)
+            nr = np.linalg.norm(r_all[fe.free], axis=0)
+            residual = np.where(nf > 0, nr / np.where(nf > 0, nf, 1.0), nr)
+        if not np.all(residual <= SOLVE_RESIDUAL_LIMIT):
+            # the factorisation passed its pivot test but does not solve the system: a
+            # mechanism hidden by round-off (or worse) — say which, never return such
+            # displacements
+            raise_mechanism(self.stiffness(), fe, self.item)
+        if not np.all(np.isfinite(u)):
+            raise AnalysisError(self.item, "the linear solve produced non-finite "
+                                "displacements; the stiffness is too ill-conditioned to trust")
+        self._reactions = np.where(fe.fixed[:, None] if r_all.ndim == 2 else fe.fixed,
+                                   r_all, 0.0)
+        self.timings["solve"] = time.perf_counter() - t2
+        return u, residual
+
+    def recover(self, u: np.ndarray, f: np.ndarray, residual: float,
+                f_local: list[np.ndarray] | None = None,
+                reactions: np.ndarray | None = None,
+                member_loads: MemberLoadVectors | None = None) -> StaticResult:
+        """Reactions, section forces and stresses of one displacement vector.
+
+        Parameters
+        ----------
+        u, f : ndarray, shape (n_dof,)
+            Displacements and the load vector they carry.
+        residual : float
+        f_local : list of ndarray, optional
+            Loads carried by the elements, per group (:meth:`FEModel.element_forces`;
+            default the frames' self-weight).
+        reactions : ndarray, shape (n_dof,), optional
+            Support reactions ``(K u − f)`` on the fixed DOFs; by default those of the last
+            :meth:`solve` of a single right-hand side.  Spring forces ``−k u`` are added.
+        member_loads : MemberLoadVectors, optional
+            The member loads in ``f`` and ``f_local`` (:mod:`trussfe.fem.member_loads`), for
+            the section forces along loaded members.
+        """
+        t3 = time.perf_counter()
+        fe = self.fe
+        s = fe.structure
+        reac = self._reactions if reactions is None else reactions
+        if fe.spring_stiffness is not None:
+            # the force of an elastic support on the structure is a reaction
+            reac = reac - fe.spring_stiffness * u
+        fel = fe.element_forces(u, f_local)
+        x, F = section_forces(fe, u, fel)
+        m = s.n_members
+        k = fe.member_subdivisions
+        # the two end sections (with one element per member, F holds exactly those)
+        ends = F if F.shape[1] == 2 else np.stack([F[:, 0], F[np.arange(m), k]], axis=1)
+        # midpoint axial force: N is linear along a member under uniform distributed load
+        N_mid = 0.5 * (ends[:, 0, 0] + ends[:, 1, 0])
+        s1, s2 = _stresses(fe, F)
+        # largest over the stations; fmax skips the NaN padding past a member's own stations
+        max_vm = np.fmax.reduce(np.fmax(s1, s2), axis=1)
+        result = StaticResult(
+            fe=fe, u=u, f=f, displacements=fe.node_values(u), reactions=fe.node_values(reac),
+            axial_force=N_mid, axial_stress=N_mid / s.area, strain=N_mid / (s.E * s.area),
+            end_forces=ends, station_x=x, section_forces=F, von_mises_s1=s1,
+            von_mises_s2=s2, max_von_mises=max_vm,
+            element_axial_force=0.5 * (fel[:, 1, 0] - fel[:, 0, 0]), residual=residual,
+            backend=self.factor.backend, member_loads=member_loads)
+        t4 = time.perf_counter()
+        # wall-clock seconds: load vector and stiffness (sparse K, or the bars' blocks for
+        # the band), factorisation (band fill included), solve with refinement and residual,
+        # recovery
+        result.timings = {**self.timings, "recover": t4 - t3}
+        log.info("static solve: %d DOFs, residual %.2e", fe.n_dof, residual)
+        return result
+
+
+def _stresses(fe: FEModel, F: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Von Mises stress at S1 and S2 of every station (Lacy eqs. 2.24, 2.25)."""
+    s = fe.structure
     if np.any(fe.is_frame):
         bad = fe.is_frame & ~(np.isfinite(s.c) & (s.c > 0))
         if np.any(bad):
@@ -265,28 +400,20 @@ def solve_static(structure: Structure, bar_model: str = "truss",
         vm = von_mises(F[..., 0], F[..., 1], F[..., 2], F[..., 4], F[..., 5], col(s.area),
                        col(s.Iy), col(s.Iz), col(s.c), col(s.c),
                        col(round_sections(s.sections)))
-        s1, s2 = vm.s1, vm.s2
-    else:
-        # truss bars only: section forces are axial, so von Mises is |N|/A at S1 and S2
-        # (von_mises with V = M = 0), taken directly for large pin-jointed models
-        s1 = np.abs(F[..., 0]) / s.area[:, None]
-        s2 = s1.copy()
-    # largest over the stations; fmax skips the NaN padding past a member's own stations
-    max_vm = np.fmax.reduce(np.fmax(s1, s2), axis=1)
-    result = StaticResult(
-        fe=fe, u=u, f=f, displacements=fe.node_values(u), reactions=fe.node_values(reac),
-        axial_force=N_mid, axial_stress=N_mid / s.area, strain=N_mid / (s.E * s.area),
-        end_forces=ends, station_x=x, section_forces=F, von_mises_s1=s1, von_mises_s2=s2,
-        max_von_mises=max_vm,
-        element_axial_force=0.5 * (fel[:, 1, 0] - fel[:, 0, 0]), residual=residual,
-        backend=fac.backend, member_loads=mlv)
-    t4 = time.perf_counter()
-    # wall-clock seconds: load vector and stiffness (sparse K, or the bars' blocks for the
-    # band), factorisation (band fill included), solve with refinement and residual, recovery
-    result.timings = {"assemble": t1 - t0, "factorise": t2 - t1, "solve": t3 - t2,
-                      "recover": t4 - t3}
-    log.info("static solve: %d DOFs, residual %.2e", fe.n_dof, residual)
-    return result
+        return vm.s1, vm.s2
+    # truss bars only: section forces are axial, so von Mises is |N|/A at S1 and S2
+    # (von_mises with V = M = 0), taken directly for large pin-jointed models
+    s1 = np.abs(F[..., 0]) / s.area[:, None]
+    return s1, s1.copy()
+
+
+def reacting_nodes(fe: FEModel) -> np.ndarray:
+    """(n, ndof_node) bool: the DOFs held by a support or a spring, where reactions arise."""
+    s = fe.structure
+    springs = s.extensions.get("springs")
+    if springs is None:
+        return s.supports
+    return s.supports | (springs.stiffness > 0)
 
 
 def static_json(result: StaticResult, command: str = "static") -> dict:
@@ -305,7 +432,7 @@ def static_json(result: StaticResult, command: str = "static") -> dict:
     dim = s.dim
     names = DOF_NAMES[dim]
     nodes = {}
-    sup = s.supports
+    sup = reacting_nodes(fe)
     for i, nid in enumerate(s.node_ids):
         d = {"displacement": result.displacements[i, :dim].tolist()}
         if fe.has_rotation[i]:

@@ -24,10 +24,12 @@ from .discretisation import FEModel, node_diagonal_blocks, reference_bar
 
 
 def is_plain_truss(fe: FEModel) -> bool:
-    """True when every member is one two-node bar (the ``truss`` model without beams)."""
+    """True when every member is one two-node bar (the ``truss`` model without beams) and
+    no spring adds to the bars' stiffness."""
     ref = reference_bar()["stiffness"]
     # K = Bᵀ diag(EA/L) B holds for the P1 bar's [[1, −1], [−1, 1]]
     return (len(fe.groups) == 1 and fe.groups[0].kind == "bar"
+            and fe.spring_stiffness is None
             and fe.n_elements == fe.structure.n_members
             and bool(np.allclose(ref, [[1.0, -1.0], [-1.0, 1.0]], rtol=1e-14, atol=0.0)))
 

@@ -22,6 +22,7 @@ from ..budget import check_input_file
 from ..errors import InputError, TrussfeError, one_line
 from . import toml_text
 from .extension_tables import TABLES as EXTENSION_TABLES
+from .load_case_tables import parse_load_cases, parse_mass_entry, parse_springs
 from ..model.geometry import member_lengths
 from ..model.ids import IdIndex, IdRange, id_index
 from ..model.sections import Material, Section
@@ -36,7 +37,7 @@ _source: contextvars.ContextVar[str] = contextvars.ContextVar("trussfe_model_sou
 
 #: Top-level tables of the core format.
 CORE_TABLES = ("model", "materials", "sections", "nodes", "members", "supports", "loads",
-               "masses", "groups")
+               "masses", "groups", "springs", "load_cases", "combinations")
 
 #: Most valid names a message lists; a larger set is summarised by its nearest few and a count.
 MAX_LISTED = 8
@@ -119,8 +120,9 @@ def parse_material(name: str, raw: Any) -> Material:
     """Read one ``[materials.NAME]`` table."""
     item = f"materials.{name}"
     if not isinstance(raw, dict):
-        raise InputError(item, "expected a table with E, density (and optional G, yield_strength)")
-    _check_keys(raw, ("E", "G", "density", "yield_strength"), item)
+        raise InputError(item, "expected a table with E, density (and optional G, "
+                               "yield_strength, thermal_expansion)")
+    _check_keys(raw, ("E", "G", "density", "yield_strength", "thermal_expansion"), item)
     if "E" not in raw:
         raise InputError(item, "missing E (Young's modulus, Pa)")
     E = _number(raw["E"], f"{item}.E", positive=True)
@@ -128,7 +130,10 @@ def parse_material(name: str, raw: Any) -> Material:
     rho = _number(raw.get("density", 0.0), f"{item}.density", nonneg=True)
     fy = (_number(raw["yield_strength"], f"{item}.yield_strength", positive=True)
           if "yield_strength" in raw else math.nan)
-    return Material(name=name, E=E, G=G, density=rho, yield_strength=fy)
+    alpha = (_number(raw["thermal_expansion"], f"{item}.thermal_expansion")
+             if "thermal_expansion" in raw else math.nan)
+    return Material(name=name, E=E, G=G, density=rho, yield_strength=fy,
+                    thermal_expansion=alpha)
 
 
 def parse_section(name: str, raw: Any) -> Section:
@@ -382,9 +387,14 @@ def _parse_model(data: dict, base_dir: Path, source: str) -> Structure:
             f = _vector(v, f"loads.{k}", (dim, ndof))
             loads[i, : f.size] += f
     masses = np.zeros(n)
+    rotary = None
     for k, v in _table(data, "masses").items():
         i = _node_ref(k, node_index, "masses")
-        masses[i] = _number(v, f"masses.{k}", nonneg=True)
+        masses[i], inertia = parse_mass_entry(v, f"masses.{k}", dim)
+        if inertia is not None:
+            if rotary is None:
+                rotary = np.zeros((n, inertia.size))
+            rotary[i] = inertia
 
     for a in (coords, conn, supports, loads, masses, beam, rel, orient, axis_rel):
         a.flags.writeable = False           # the reader's own arrays: the model need not copy
@@ -394,6 +404,19 @@ def _parse_model(data: dict, base_dir: Path, source: str) -> Structure:
                   bending_axis_releases=axis_rel,
                   supports=supports, loads=loads, masses=masses, gravity=gravity,
                   orientation=orient, source=source, member_groups=group_code)
+    # the node tables that refer to the supports, and the load cases (read against the model
+    # of the core tables: a settlement must sit on a support, a heated member needs α)
+    nodal = {}
+    if "springs" in data:
+        nodal["springs"] = parse_springs(data["springs"], s)
+    if rotary is not None and np.any(rotary):
+        from ..model.node_supports import RotaryInertia
+        nodal["rotary_inertia"] = RotaryInertia(rotary)
+    cases = parse_load_cases(data, s)
+    if cases is not None:
+        nodal["load_cases"] = cases
+    if nodal:
+        s = s.with_extensions(**nodal)
     # each table is read against the model holding the ones before it (actuators need the
     # active members)
     for key, reader in EXTENSION_TABLES.items():

@@ -113,6 +113,8 @@ def _material_table(mat: Material) -> dict:
     out = {"E": mat.E, "G": mat.G, "density": mat.density}
     if not math.isnan(mat.yield_strength):
         out["yield_strength"] = mat.yield_strength
+    if not math.isnan(mat.thermal_expansion):
+        out["thermal_expansion"] = mat.thermal_expansion
     return out
 
 
@@ -204,14 +206,96 @@ def model_toml(structure: Structure, *, mesh: str | None = None, header: str = "
             f = s.loads[i] if np.any(s.loads[i, s.dim:] != 0) else s.loads[i, : s.dim]
             lines.append(f"{toml_key(node_ids[i])} = {toml_value(list(f))}")
         lines.append("")
-    massive = np.flatnonzero(s.masses != 0)
+    rotary = s.extensions.get("rotary_inertia")
+    inertia = np.zeros((s.n_nodes, 0)) if rotary is None else rotary.inertia
+    massive = np.flatnonzero((s.masses != 0) | np.any(inertia != 0, axis=1))
     if massive.size:
         lines.append("[masses]")
-        lines += [f"{toml_key(node_ids[i])} = {toml_value(s.masses[i])}" for i in massive]
+        for i in massive:
+            value = (s.masses[i] if not np.any(inertia[i] != 0) else
+                     {"mass": s.masses[i], "inertia": list(inertia[i])})
+            lines.append(f"{toml_key(node_ids[i])} = {toml_value(value)}")
         lines.append("")
-    if s.extensions:
-        log.warning("extension tables %s are not written", ", ".join(s.extensions))
+    lines += _load_case_lines(s, node_ids)
+    written = {"load_cases", "springs", "rotary_inertia"}
+    others = [k for k in s.extensions if k not in written]
+    if others:
+        log.warning("extension tables %s are not written", ", ".join(others))
     return "\n".join(lines)
+
+
+def _dof_values(row: np.ndarray, dim: int) -> dict:
+    """``{DOF name: value}`` of the non-zero entries of a node's DOF row."""
+    names = DOF_NAMES[dim]
+    return {names[d]: row[d] for d in np.flatnonzero(row != 0)}
+
+
+def _member_entries(values: np.ndarray | None, member_ids, key: str) -> list[dict]:
+    if values is None:
+        return []
+    return [{"member": member_ids[i], key: values[i]} for i in np.flatnonzero(values != 0)]
+
+
+def _member_load_entry(ml, member_ids) -> dict:
+    """One member load (:class:`~trussfe.model.member_loads.MemberLoad`) as its model-file
+    table."""
+    d = {"member": member_ids[ml.member], "kind": ml.kind}
+    if ml.kind == "uniform":
+        d["q"] = list(ml.q_start)
+    elif ml.kind == "trapezoidal":
+        d["q_start"], d["q_end"] = list(ml.q_start), list(ml.q_end)
+    else:
+        d["at"], d["F"] = ml.at, list(ml.force)
+        if ml.moment:
+            d["M"] = list(ml.moment)
+    if ml.axes != "global":
+        d["axes"] = ml.axes
+    return d
+
+
+def _load_case_lines(s: Structure, node_ids) -> list[str]:
+    """``[springs]``, ``[load_cases.NAME]`` and ``[combinations]`` of a model."""
+    lines: list[str] = []
+    springs = s.extensions.get("springs")
+    if springs is not None and np.any(springs.stiffness):
+        lines.append("[springs]")
+        for i in np.flatnonzero(np.any(springs.stiffness != 0, axis=1)):
+            lines.append(f"{toml_key(node_ids[i])} = "
+                         f"{toml_value(_dof_values(springs.stiffness[i], s.dim))}")
+        lines.append("")
+    table = s.extensions.get("load_cases")
+    if table is None:
+        return lines
+    for case in table.cases:
+        lines.append(f"[load_cases.{toml_key(case.name)}]")
+        if case.gravity:
+            lines.append("gravity = true")
+        loaded = np.flatnonzero(np.any(case.loads != 0, axis=1))
+        if loaded.size:
+            loads = {node_ids[i]: list(case.loads[i] if np.any(case.loads[i, s.dim:] != 0)
+                                       else case.loads[i, :s.dim]) for i in loaded}
+            lines.append(f"loads = {toml_value(loads)}")
+        if case.prescribed is not None and np.any(case.prescribed):
+            moved = {node_ids[i]: _dof_values(case.prescribed[i], s.dim)
+                     for i in np.flatnonzero(np.any(case.prescribed != 0, axis=1))}
+            lines.append(f"prescribed = {toml_value(moved)}")
+        for key, values, value_key in (("temperature", case.delta_T, "delta_T"),
+                                       ("initial_strain", case.initial_strain, "strain"),
+                                       ("length_error", case.length_error, "delta")):
+            entries = _member_entries(values, s.member_ids, value_key)
+            if entries:
+                lines.append(f"{key} = {toml_value(entries)}")
+        if case.member_loads:
+            lines.append("member_loads = "
+                         + toml_value([_member_load_entry(ml, s.member_ids)
+                                       for ml in case.member_loads]))
+        lines.append("")
+    if table.combinations:
+        lines.append("[combinations]")
+        for combo in table.combinations:
+            lines.append(f"{toml_key(combo.name)} = {toml_value(dict(combo.factors))}")
+        lines.append("")
+    return lines
 
 
 def _mesh_groups(s: Structure) -> dict[str, np.ndarray]:

@@ -23,6 +23,14 @@ field                          physical (default)                  Lacy, Appendi
 
 The settling constant is the one thesis value kept as the physical default too: the actuator
 model is the thesis' own, and only the coded value matches its published response.
+:data:`THESIS` holds the choices the thesis' published tables need; its per-axis stress form
+is selected on its own (``Conventions(stress_form="lacy-per-axis")``, for the components of its
+Fig. 5.12), since the tables' von Mises stresses reproduce with the combined form.
+
+Which torque model describes an actuator (the signed, geared eqs. 2.36–2.44, or Appendix C's
+magnitudes without the gearhead ratio on the leadscrew torque) is not a run-wide choice but
+part of that actuator's data (``[actuators.ID] convention``, :mod:`trussfe.model.actuators`):
+one model may hold actuators documented either way.
 """
 from __future__ import annotations
 
@@ -45,6 +53,9 @@ class Conventions:
         Factor k of τ² in S1 = √(σ² + k τ²) (eq. 2.24: 3, von Mises).
     settling_constant : float
         c in the actuator model's natural frequency ωn = c / (ζ ts) (Appendix A: 6).
+    stress_form : {"combined", "lacy-per-axis"}
+        The von Mises form of the rigid-body model's section stresses
+        (:func:`trussfe.mechanics.stress.von_mises`'s ``convention``).
 
     Examples
     --------
@@ -58,6 +69,7 @@ class Conventions:
     full_length_inertia: bool = False
     shear_factor: float = 3.0
     settling_constant: float = 6.0
+    stress_form: str = "combined"
 
     @property
     def kinematics(self) -> str:

@@ -9,6 +9,9 @@ actuators          tuple of :class:`~.actuators.Actuator`          :mod:`trussfe
 failure            :class:`~.failure.FailureLaws`                  :mod:`trussfe.model.failure`
 member_loads       tuple of :class:`~.member_loads.MemberLoad`     :mod:`trussfe.model.member_loads`
 postcritical       :class:`~.postcritical.PostcriticalSettings`    :mod:`trussfe.model.postcritical`
+load_cases         :class:`~.load_cases.LoadCases`                 :mod:`trussfe.model.load_cases`
+springs            :class:`~.node_supports.Springs`                :mod:`trussfe.model.node_supports`
+rotary_inertia     :class:`~.node_supports.RotaryInertia`          :mod:`trussfe.model.node_supports`
 =================  ==============================================  ==========================
 
 Members are referred to by index, so a variant of a model with other members
@@ -26,12 +29,14 @@ import numpy as np
 from .active import ActiveMember
 from .actuators import Actuator
 from .failure import FailureLaws
+from .load_cases import LoadCases, check_load_cases
 from .member_loads import MemberLoad
+from .node_supports import RotaryInertia, Springs
 from .postcritical import PostcriticalSettings
 
 #: Extension tables, in the order a model file lists them.
 EXTENSION_TABLES = ("active_members", "actuators", "failure", "postcritical",
-                    "member_loads")
+                    "member_loads", "load_cases", "springs", "rotary_inertia")
 
 
 def _members(items, cls, table: str, m: int) -> tuple:
@@ -76,6 +81,12 @@ def freeze_extensions(tables: Mapping[str, Any], n_members: int) -> Mapping[str,
                 value = PostcriticalSettings(**value)
             if not isinstance(value, PostcriticalSettings):
                 raise TypeError("extensions['postcritical']: expected PostcriticalSettings")
+        elif key == "load_cases":
+            value = check_load_cases(value, n_members)
+        elif key in ("springs", "rotary_inertia"):
+            cls = Springs if key == "springs" else RotaryInertia
+            if not isinstance(value, cls):
+                raise TypeError(f"extensions[{key!r}]: expected {cls.__name__}")
         else:
             raise ValueError(f"unknown extension table {key!r}; valid: "
                              f"{', '.join(EXTENSION_TABLES)}")
@@ -95,6 +106,8 @@ def subset_extensions(tables: Mapping[str, Any], keep: np.ndarray) -> dict[str, 
             value = tuple(replace(a, member=new_index[a.member]) for a in value
                           if a.member in new_index)
         elif key == "failure":
+            value = value.subset(np.asarray(keep, dtype=np.int64))
+        elif key == "load_cases":
             value = value.subset(np.asarray(keep, dtype=np.int64))
         out[key] = value
     return out

@@ -17,7 +17,7 @@ from .sections import Material, Section
 
 #: Section attributes spread over the members, and the material ones.
 SECTION_PROPERTIES = ("area", "Iy", "Iz", "J", "c", "shear_area_y", "shear_area_z")
-MATERIAL_PROPERTIES = ("E", "G", "density", "yield_strength")
+MATERIAL_PROPERTIES = ("E", "G", "density", "yield_strength", "thermal_expansion")
 
 
 @dataclass(frozen=True, eq=False)
@@ -34,6 +34,8 @@ class MemberProperties:
         deformation).
     E, G, density, yield_strength : ndarray
         Young's and shear moduli (Pa), density (kg/m³), yield strength (Pa, ``nan`` if unknown).
+    thermal_expansion : ndarray
+        Coefficient of linear thermal expansion, 1/K (``nan`` if unknown).
     """
 
     area: np.ndarray
@@ -47,6 +49,7 @@ class MemberProperties:
     G: np.ndarray
     density: np.ndarray
     yield_strength: np.ndarray
+    thermal_expansion: np.ndarray
 
 
 def object_groups(objs: Sequence[object]) -> tuple[np.ndarray, np.ndarray]:

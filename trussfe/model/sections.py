@@ -100,6 +100,9 @@ class Material:
         Mass density, kg/m³.
     yield_strength : float
         Yield strength, Pa (``nan`` if not given).
+    thermal_expansion : float
+        Coefficient of linear thermal expansion α, 1/K (``nan`` if not given; a temperature
+        load needs it).
     """
 
     name: str
@@ -107,3 +110,4 @@ class Material:
     G: float
     density: float = 0.0
     yield_strength: float = math.nan
+    thermal_expansion: float = math.nan

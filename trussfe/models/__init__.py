@@ -16,14 +16,14 @@ all build their structures here, so a number in a thesis table and the structure
 reproduces it are tied to one definition.
 """
 from .octahedral import (DOUBLE_OCTAHEDRON_MEMBERS, EQUILIBRIUM_LENGTH, SLEW_LONG, SLEW_SHORT,
-                         SLEW_SHORT_PRINTED, STATED_LOAD, TABLE_LOAD, ACTIVE_MEMBERS, double_octahedral_chain,
+                         SLEW_SHORT_PRINTED, STATED_LOAD, STROKE, TABLE_LOAD, ACTIVE_MEMBERS, double_octahedral_chain,
                          double_octahedron, slew_lengths)
 from .simple import four_bar_linkage, three_bar, two_bar
 from .triangular import triangular_truss
 
 __all__ = [
     "ACTIVE_MEMBERS", "DOUBLE_OCTAHEDRON_MEMBERS", "EQUILIBRIUM_LENGTH", "SLEW_LONG",
-    "SLEW_SHORT", "SLEW_SHORT_PRINTED", "STATED_LOAD", "TABLE_LOAD", "double_octahedral_chain",
+    "SLEW_SHORT", "SLEW_SHORT_PRINTED", "STATED_LOAD", "STROKE", "TABLE_LOAD", "double_octahedral_chain",
     "double_octahedron", "four_bar_linkage", "slew_lengths", "three_bar", "triangular_truss",
     "two_bar",
 ]

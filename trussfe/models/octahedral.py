@@ -52,6 +52,11 @@ SLEW_LONG = 1.2289          # m, active member at its maximum (section 5.1)
 SLEW_SHORT_PRINTED = 1.1077  # m, minimum as printed in section 5.1
 #: Minimum that reproduces Tables 5.3/5.4 to ~1e-4 (1.1077 gives errors up to 1.1e-3).
 SLEW_SHORT = 1.1079
+#: Stroke of the prototype's active members: ±0.0606 m about the equilibrium length (Lacy
+#: section 5.5), 1.1078–1.2290 m; both slewed positions of section 5.1 lie inside it (the
+#: printed 1.1077 m lies 0.1 mm short of it).
+STROKE_HALF = 0.0606
+STROKE = (EQUILIBRIUM_LENGTH - STROKE_HALF, EQUILIBRIUM_LENGTH + STROKE_HALF)
 #: Load per top node that reproduces Tables 5.2–5.4 (their N1 reaction is −44.4980 N at the
 #: symmetric position, where each base node carries one node load; ≈ 4.536 kg × 9.81).
 #: The text and the Appendix D load file state 46.0 N, which gives every value 3.4 % high.

@@ -107,6 +107,53 @@ def check_motion(motion: Motion, item: str | None = None) -> None:
                          f"{motion.length[i, j]:g} m")
 
 
+def check_stroke(structure: Structure, motion: Motion) -> None:
+    """Raise :class:`InputError` when ``motion`` drives an active member outside its stroke.
+
+    The stroke limits are the ``min_length``/``max_length`` of ``[active_members]``
+    (:class:`~trussfe.model.active.ActiveMember`); a member without them is not checked.  A
+    length within 1e-9 (relative) of a limit counts as on it, so a motion generated to end
+    exactly at a limit is not refused for its last bit.
+
+    Examples
+    --------
+    >>> from trussfe.models import triangular_truss
+    >>> s = triangular_truss(active_members=True)          # stroke 2.5-4.1 m
+    >>> check_stroke(s, Motion([0.0, 1.0], [1], [[2.5], [4.2]], [[0.0], [0.0]], [[0.0], [0.0]]))
+    Traceback (most recent call last):
+    ...
+    trussfe.errors.InputError: motion: step 1 (t = 1 s): active member 'active' is 4.2 m long, \
+beyond its stroke 2.5-4.1 m ([active_members.active] min_length, max_length)
+    """
+    limits = {a.member: (a.min_length, a.max_length)
+              for a in structure.extensions.get("active_members", ())}
+    item = f"{motion.source}: motion" if motion.source else "motion"
+    first = None
+    for j, k in enumerate(np.asarray(motion.members).tolist()):
+        lo, hi = limits.get(k, (math.nan, math.nan))
+        L = motion.length[:, j]
+        out = np.zeros(L.shape, dtype=bool)
+        if np.isfinite(lo):
+            out |= L < lo * (1.0 - STROKE_TOLERANCE)
+        if np.isfinite(hi):
+            out |= L > hi * (1.0 + STROKE_TOLERANCE)
+        if out.any():
+            i = int(np.argmax(out))
+            if first is None or i < first[0]:
+                first = (i, j, k, lo, hi)
+    if first is not None:
+        i, j, k, lo, hi = first
+        name = structure.member_ids[k]
+        side = "short of" if motion.length[i, j] < lo * (1.0 - STROKE_TOLERANCE) else "beyond"
+        raise InputError(item, f"step {i} (t = {motion.time[i]:g} s): active member '{name}' "
+                         f"is {motion.length[i, j]:.6g} m long, {side} its stroke {lo:g}-{hi:g}"
+                         f" m ([active_members.{name}] min_length, max_length)")
+
+
+#: Relative slack of :func:`check_stroke` (round-off of lengths generated at a limit).
+STROKE_TOLERANCE = 1e-9
+
+
 def third_order_response(t: np.ndarray, duration: float, *, damping_ratio: float = 0.8,
                          settling_fraction: float = 0.9,
                          settling_constant: float = PHYSICAL.settling_constant,

@@ -27,7 +27,7 @@ from .forces import (MemberBodies, NodalForces, forces_from_tensions, member_bod
                      nodal_forces_with_static, pair_loads)
 from .kinematics import Kinematics, _Pattern, compute_kinematics, solve_motion_positions
 from .linalg import SingularStep, is_direct
-from .motion import Motion, rest_motion
+from .motion import Motion, check_stroke, rest_motion
 from .sections import SectionForces, SectionStresses, section_forces, section_stresses
 from ..threads import parallel_map, worker_count
 
@@ -193,9 +193,11 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
         bad = sorted(set(motion.members.tolist()) - set(act_idx.tolist()))[0]
         raise InputError("motion", f"member '{structure.member_ids[bad]}' is not an active "
                          "member of the model (add it to [active_members])")
+    # A motion beyond an actuator's stroke describes a truss that cannot be built.
+    check_stroke(structure, motion)
     bodies = member_bodies(structure)
     opts = dict(n_sections=n_sections, full_length_inertia=conventions.full_length_inertia,
-                shear_factor=conventions.shear_factor)
+                shear_factor=conventions.shear_factor, stress_form=conventions.stress_form)
     nt, m = motion.n_steps, structure.n_members
     require(along_motion_bytes(nt, structure.n_nodes, m), "motion",
             f"an analysis of {nt:,} time steps", "use fewer steps (--steps) or a longer "
@@ -274,7 +276,8 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
                            options={"scheme": scheme, "method": method,
                                     "n_sections": int(n_sections),
                                     "full_length_inertia": conventions.full_length_inertia,
-                                    "shear_factor": conventions.shear_factor})
+                                    "shear_factor": conventions.shear_factor,
+                                    "stress_form": conventions.stress_form})
     if actuators and "actuators" in structure.extensions and act_idx.size:
         res.actuators = _actuator_histories(structure, motion, res)
     return res
@@ -296,7 +299,7 @@ def _solve_tensions(kin: Kinematics, rhs: np.ndarray) -> np.ndarray:
 
 
 def _steps(structure, kin, bodies, act_idx, *, n_sections, full_length_inertia,
-           shear_factor, forces=None):
+           shear_factor, stress_form="combined", forces=None):
     """Forces, sections, stresses and actuator force for a block of steps of kinematics
     ``kin``; the static ones are those of the same positions at rest.  ``forces``: the
     (dynamic, static) nodal forces if already known."""
@@ -310,8 +313,8 @@ def _steps(structure, kin, bodies, act_idx, *, n_sections, full_length_inertia,
     else:
         mid = section_forces(structure, kin, f, bodies, 1,
                              full_length_inertia=full_length_inertia).tension[:, :, 0]
-    st = section_stresses(structure, sf, shear_factor=shear_factor)
-    sts = section_stresses(structure, ss, shear_factor=shear_factor)
+    st = section_stresses(structure, sf, shear_factor=shear_factor, convention=stress_form)
+    sts = section_stresses(structure, ss, shear_factor=shear_factor, convention=stress_form)
     # The cantilever connection: the cut at u = L_tube of an active member, where the
     # piece is the whole leadscrew tube; its axial force is the actuator force.
     act_force, act_static, cmoment = _cantilever(structure, kin, f, fs, bodies, act_idx)

@@ -6,13 +6,19 @@
   extension rate (1.2477 m/s) and a 400 rad/s motor, eq. 3.1 gives G_gh = 0.9618.  Appendix A's
   listing sets ``Ggh = 5.2``, ``Gls = 2.5266e-4`` instead (the prototype's values): with those
   the motor would have to turn at 25,700 rad/s, 64 times its maximum.
-* **Slewing Experiment 1** (section 5.5.1, figs. 5.13–5.16): the measured link histories are not
-  published, so a synthetic one is used (:func:`slew1_motion`): the three active members move
-  at constant velocity between smooth 0.25 s ramps, in 5.5 s, between the bay configurations
-  whose top plane is tilted −10° and +10° about n̂1 at the equilibrium height (the thesis: "the
-  members were each subjected to virtually a constant velocity profile", "approximately 5.5
-  seconds").  Hanging truss, 46.0 N on N7–N9, Appendix C's actuators (G_ls = 2.5266e-4 m/rad,
-  G_gh = 5.2, μ = 0.1, d_m = 0.0127 m, J_m = 6.76e-6 kg·m², R_a = 2 Ω, K_t = K_b = 0.0398).
+* **Slewing Experiment 1** (sections 5.1, 5.5.1, 5.6, figs. 5.13–5.16): the measured link
+  histories are not published, so the motion is rebuilt from the text
+  (:func:`slew1_motion`): from the first slewed position (M7/8 at its maximum 1.2289 m, M9/10
+  and M11/12 at their minimum) to the second (the reverse) — section 5.1: "corresponds to
+  the starting point" / "the ending point for the dynamic simulation", "the maximum slew that
+  the prototype truss can achieve" — every member at "virtually a constant velocity" between
+  smooth 0.25 s ramps (the "large acceleration spike at the beginning and the end"), in
+  "approximately 5.5 seconds", through the equilibrium position at 2.75 s (section 5.6:
+  "approximately 2.8 seconds").  The whole motion lies inside the prototype's stroke,
+  1.1684 ± 0.0606 m (section 5.5; :data:`trussfe.models.STROKE`).  The minimum is 1.1079 m,
+  which reproduces Tables 5.3/5.4 (printed 1.1077 m, 0.1 mm outside the stroke).  Hanging
+  truss, 46.0 N on N7–N9, Appendix C's actuators (G_ls = 2.5266e-4 m/rad, G_gh = 5.2,
+  μ = 0.1, d_m = 0.0127 m, J_m = 6.76e-6 kg·m², R_a = 2 Ω, K_t = K_b = 0.0398).
   Table 5.1 prints the leadscrew gain as 2.527e-6 m/rad; Appendix C's 2.5266e-4 m/rad (1/16 in
   per revolution) is the value its code uses.
 """
@@ -23,13 +29,14 @@ from dataclasses import replace
 
 import numpy as np
 
+from .. import models
 from ..mechanics.conventions import THESIS
 from ..model.structure import Structure
 from ..rigid.actuator import Actuator, max_leadscrew_gain, motor_histories, select_gearhead_gain
 from ..rigid.motion import Motion, third_order_response
 from .lacy_rigid import double_octahedron
 from ..rigid.simulate import simulate
-from ..rigid.slew import TopPlaneInverse, constant_velocity_profile
+from ..rigid.slew import constant_velocity_profile
 
 #: Appendix C / Table 5.1 actuator of the VPI&SU prototype.
 PROTOTYPE = dict(leadscrew_gain=2.5266e-4, mean_diameter=0.5 * 0.0254, thread="square",
@@ -57,33 +64,44 @@ def base_simulation_gains() -> dict:
             "appendix_a_motor_speed": vmax * 5.2 / 2.5266e-4}
 
 
-def slew1_structure(convention: str = "thesis") -> Structure:
-    """The hanging double-octahedral bay at equilibrium with 46.0 N on N7–N9 and actuators."""
+def slew1_structure(convention: str = "thesis", *, stroke: bool = True) -> Structure:
+    """The hanging double-octahedral bay at equilibrium with 46.0 N on N7–N9, actuators and
+    (``stroke``) the prototype's stroke (:data:`trussfe.models.STROKE`) on its active members,
+    which makes :func:`~trussfe.rigid.simulate.simulate` refuse a motion that leaves it."""
     s = double_octahedron(top_load=46.0, gravity=-9.81)
-    return s.with_extensions(actuators=[
-        Actuator(member=s.member_index(k), name=k, convention=convention,
-                 require_self_locking=True, **PROTOTYPE) for k in ACTIVE])
+    lo, hi = models.STROKE if stroke else (math.nan, math.nan)
+    return s.with_extensions(
+        active_members=[replace(a, min_length=lo, max_length=hi)
+                        for a in s.extensions["active_members"]],
+        actuators=[Actuator(member=s.member_index(k), name=k, convention=convention,
+                            require_self_locking=True, **PROTOTYPE) for k in ACTIVE])
 
 
 def slew1_motion(structure: Structure | None = None, *, duration: float = 5.5,
-                 ramp: float = 0.25, steps: int = 220, angle: float = 10.0) -> Motion:
-    """Synthetic Slewing Experiment 1: constant-velocity links between the ∓10° configurations.
-
-    The end configurations are those whose top plane is tilted ∓``angle`` about n̂1 with the
-    top centroid at its equilibrium height (:class:`~trussfe.rigid.slew.TopPlaneInverse`); in
-    between, every active member moves at constant velocity between smooth ramps
+                 ramp: float = 0.25, steps: int = 220) -> Motion:
+    """Slewing Experiment 1 rebuilt from the text (Lacy sections 5.1, 5.5.1; see the module
+    docstring): from the first slewed position (M7/8 1.2289 m, M9/10 and M11/12 1.1079 m) to
+    the second (the reverse), every active member at constant velocity between smooth ramps
     (:func:`~trussfe.rigid.slew.constant_velocity_profile`), samples ``t = i T/steps``,
-    i = 0…steps.
+    i = 0…steps.  The lengths are linear in one profile, so M9/10 and M11/12 stay equal and
+    the top plane turns about n̂1 only (section 5.5.1: "no rotation about the n̂2 axis").
+
+    Examples
+    --------
+    >>> m = slew1_motion(steps=4)
+    >>> m.length[[0, -1]].round(4).tolist()
+    [[1.2289, 1.1079, 1.1079], [1.1079, 1.2289, 1.2289]]
     """
     s = structure if structure is not None else double_octahedron()
-    inv = TopPlaneInverse(s, [6, 7, 8], np.array([1.0, 0.0, 0.0]))
-    q = inv.lengths_along(np.radians([-angle, angle]))
+    q0 = np.array(models.slew_lengths("slew1"))
+    q1 = np.array(models.slew_lengths("slew2"))
     t = np.arange(steps + 1) * (duration / steps)
     y, dy, ddy = constant_velocity_profile(t, duration, ramp)
-    d = q[1] - q[0]
-    return Motion(time=t, members=inv.active, length=q[0] + np.outer(y, d),
-                  velocity=np.outer(dy, d), acceleration=np.outer(ddy, d),
-                  source="synthetic Slewing Experiment 1")
+    d = q1 - q0
+    return Motion(time=t, members=np.array([s.member_index(k) for k in ACTIVE]),
+                  length=q0 + np.outer(y, d), velocity=np.outer(dy, d),
+                  acceleration=np.outer(ddy, d),
+                  source="Slewing Experiment 1 (rebuilt from Lacy sections 5.1, 5.5.1)")
 
 
 def slew1(convention: str = "thesis", steps: int = 220) -> dict:
@@ -137,13 +155,29 @@ def validation_actuator_gains() -> dict:
     return out
 
 
+def m8_force_at_tilt(angle: float = -10.0) -> dict:
+    """Actuator force on M8 at rest (N, compressing the tube) with the bay's top plane tilted
+    ``angle`` degrees about n̂1 at the equilibrium height (the start of the −10° → +10° slew
+    section 5.5.1 names), and the M7/8 length there, which lies beyond the prototype's stroke
+    for ±10°."""
+    from ..rigid.slew import TopPlaneInverse
+    s = slew1_structure(stroke=False)
+    q = TopPlaneInverse(s, [6, 7, 8], np.array([1.0, 0.0, 0.0])).lengths_along(
+        np.radians([angle]))[0]
+    r = simulate(double_octahedron(tuple(q), top_load=46.0, gravity=-9.81), actuators=False)
+    return {"M8_force": float(r.actuator_force[0, 0]), "M7_8_length": float(q[0])}
+
+
 def validation_slew1() -> dict:
-    """Quantities of :func:`slew1` in both conventions: ``thesis.M7_voltage_max`` …"""
+    """Quantities of :func:`slew1` in both conventions (``thesis.M7_voltage_max`` …) and of
+    :func:`m8_force_at_tilt` (``tilt_minus_10.M8_force``)."""
     out = {}
     for conv in ("thesis", "physical"):
         for k, v in slew1(conv).items():
             if isinstance(v, (int, float)):
                 out[f"{conv}.{k}"] = float(v)
+    for k, v in m8_force_at_tilt(-10.0).items():
+        out[f"tilt_minus_10.{k}"] = v
     return out
 
 
@@ -162,8 +196,9 @@ def holding_voltage(force: float, act: Actuator | None = None) -> float:
     return abs(force) * a.mean_diameter / 2 * ratio * a.resistance / a.torque_constant
 
 
-__all__ = ["actuator_force_variants", "base_simulation_gains", "base_simulation_motor", "slew1", "slew1_motion", "slew1_structure",
-           "holding_voltage", "validation_actuator_gains", "validation_slew1"]
+__all__ = ["actuator_force_variants", "base_simulation_gains", "base_simulation_motor",
+           "m8_force_at_tilt", "slew1", "slew1_motion", "slew1_structure", "holding_voltage",
+           "validation_actuator_gains", "validation_slew1"]
 
 
 #: Section 3.7's motor for the triangular truss: square thread, μ = 0.3, d_m = 0.02 m, the
