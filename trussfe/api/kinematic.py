@@ -3,9 +3,10 @@
 :func:`trace` (finite-mechanism motion, Hortobágyi's algorithm)."""
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import ClassVar
+from typing import Any, ClassVar
 
 import numpy as np
 
@@ -14,27 +15,44 @@ from .model import ModelLike, as_structure
 from .results import Result
 
 
-def mechanism(model: ModelLike, *, tolerance: float | None = None) -> MechanismResult:
+def mechanism(model: ModelLike, *, tolerance: float | None = None,
+              max_order: int = 64) -> MechanismResult:
     """Rank analysis of the bar assembly (``trussfe mechanism``): ρ(B), internal
     infinitesimal mechanisms, rigid-body motions the supports leave free, states of
-    self-stress, determinacy.
+    self-stress, determinacy, and the order of the infinitesimal mechanism (Hortobágyi 1999
+    §7: compatible to which order of the successive compatibility equations).
 
     Parameters
     ----------
     model : Structure, path or dict
     tolerance : float, optional
         Relative singular-value tolerance (default max(b, f)·1e3·eps).
+    max_order : int
+        Highest order of the compatibility equations examined for the order (2 … 4096).
 
     Returns
     -------
     MechanismResult
         ``rank``, ``mechanisms``, ``mechanism_shapes`` (mechanism, node, dim),
-        ``self_stress`` (state, member), …
+        ``self_stress`` (state, member), ``order``, …
     """
+    from ..kinematics.order import mechanism_order
     from ..kinematics.rank import structure_rank
 
+    if isinstance(max_order, bool) or not isinstance(max_order, (int, np.integer)) \
+            or not 2 <= max_order <= MAX_ORDER_LIMIT:
+        raise InputError("--max-order", f"must be an integer from 2 to {MAX_ORDER_LIMIT}, "
+                                        f"got {max_order!r}")
     structure = as_structure(model)
-    return MechanismResult(structure, structure_rank(structure, tolerance=tolerance))
+    rank = structure_rank(structure, tolerance=tolerance)
+    order = mechanism_order(structure.coords, structure.connectivity,
+                            ~structure.translation_supports, max_order=int(max_order),
+                            rank=rank)
+    return MechanismResult(structure, rank, order_analysis=order)
+
+
+#: Largest ``max_order`` accepted: the work grows with its square.
+MAX_ORDER_LIMIT = 4096
 
 
 def trace(model: ModelLike, *, drive: str | Sequence[str], step: float | Sequence[float],
@@ -133,6 +151,15 @@ class MechanismResult(Result):
     :class:`trussfe.kinematics.rank.RankResult`.  Beams are analysed as pin-jointed bars."""
 
     command: ClassVar[str] = "mechanism"
+    order_analysis: Any = None
+
+    @property
+    def order(self) -> int | float | None:
+        """Order of the infinitesimal mechanism (Hortobágyi 1999 §7): k when the successive
+        compatibility equations are solvable to order k and not k + 1, ``math.inf`` for a
+        finite mechanism, None when there is no mechanism or the order is undecided
+        (:class:`trussfe.kinematics.order.MechanismOrder` in ``order_analysis`` says why)."""
+        return None if self.order_analysis is None else self.order_analysis.order
 
     @property
     def rank(self) -> int:
@@ -198,6 +225,7 @@ class MechanismResult(Result):
             "mechanism_modes": shapes(self.mechanism_shapes),
             "rigid_body_modes": shapes(self.rigid_body_shapes),
         }
+        doc.update(_order_document(self.order_analysis))
         if r.self_stress_basis is not None:
             doc["self_stress_modes"] = [
                 {s.member_ids[i]: float(v) for i, v in enumerate(r.self_stress_basis[:, k])
@@ -205,6 +233,19 @@ class MechanismResult(Result):
         if any(s.is_beam):
             doc["note"] = "beams are analysed as pin-jointed bars"
         return doc
+
+
+def _order_document(o) -> dict:
+    """The ``order`` and ``order_analysis`` entries of the mechanism document (docs/json.md)."""
+    if o is None:
+        return {}
+    order = None if o.order is None else "infinite" if o.order == math.inf else int(o.order)
+    return {"order": order,
+            "order_analysis": {"status": o.status, "checked": o.checked,
+                               "max_order": o.max_order,
+                               "obstruction": o.obstruction,
+                               "obstruction_to_roundoff": o.above_roundoff,
+                               "margin": o.margin, "note": o.note}}
 
 
 @dataclass(frozen=True, eq=False, repr=False)

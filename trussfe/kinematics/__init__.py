@@ -21,3 +21,6 @@ __all__ += ["TraceResult", "compatibility_error", "hortobagyi_step", "pivoted_pa
             "graph_topology", "incidence_matrix", "reduced_incidence_matrix",
             "bar_angular_velocity", "mechanism_acceleration", "mechanism_velocity",
             "CycleRates", "complete_cycle_matrix", "cycle_rates"]
+from .order import MechanismOrder, mechanism_order
+
+__all__ += ["MechanismOrder", "mechanism_order"]

@@ -6,8 +6,8 @@ source named in the entry, or from the construction) and a drive for tracing its
 Tests parametrise over :data:`CATALOGUE`; the shipped models ``meshes/mech_*.toml`` are written
 from it by :func:`write_toml` (and a test checks they agree).
 
-Hortobágyi's figures are missing from the 1999 paper's text; the assemblies of sections 6, 8 and
-9 are constructions that satisfy every property the text states, documented in their builders.
+Hortobágyi's figures are missing from the 1999 paper's text; the assemblies of sections 6, 7, 8
+and 9 are constructions that satisfy every property the text states, documented in their builders.
 """
 from __future__ import annotations
 
@@ -310,6 +310,66 @@ def section9_space(seed: int = 3) -> MechanismEntry:
                   "Hortobágyi (1999) section 9: 3*17 - 50 = 1, full row rank", "1:y", -0.05)
 
 
+def section7_chain(n: int, remove: bool = False,
+                   lengths: list[tuple[float, float]] | None = None) -> MechanismEntry:
+    """Hortobágyi section 7 (Fig. 9, Tarnai 1989), a construction: n straight bar pairs in a
+    chain whose infinitesimal mechanism has order 2ⁿ − 1.
+
+    Pair j (j = 1 … n) is two collinear bars ``A_j–X_j–X_{j+1}`` of lengths a_j, b_j (default
+    1 m each; ``lengths`` gives the n pairs (a_j, b_j)) along the unit vector e_j, with A_j
+    fixed; the end X_{j+1} of pair j is the middle joint of pair j + 1, whose axis e_{j+1} is
+    perpendicular to e_j (e_j alternates between x and y: a staircase).  The last end X_{n+1} is fixed.  Joints X_1 … X_n are free: 2n coordinates,
+    2n bars.  Node ids: X_1 … X_{n+1} are "1" … "n+1", A_1 … A_n are "n+2" … "2n+1".
+
+    Why the order is 2ⁿ − 1.  To first order only X_1 moves, across its pair (ρ(B) = 2n − 1,
+    one mechanism, one state of self-stress: the last pair in tension).  A middle joint moved
+    across its pair by y pulls the pair's end along the axis by ``y²(a + b)/(2ab)`` (a, b the
+    two bar lengths; ``y²/l`` for equal bars), and that end is the middle joint of the next
+    pair, moved across it.  So if X_j first moves at order v_j with coefficient c_j,
+
+        v_{j+1} = 2 v_j,   c_{j+1} = −c_j² (a_j + b_j) / (2 a_j b_j),   v_1 = 1,
+
+    i.e. v_j = 2^(j−1).  The last pair has both ends fixed: its bars' lengths need
+    ``|X_n(t) − X_n|² = 0`` at every order, and the first non-zero term of that sum, c_n²,
+    appears at order 2 v_n = 2ⁿ — the compatibility equations are solvable up to order 2ⁿ − 1
+    and not beyond (:mod:`trussfe.kinematics.order`).  n = 1 is the straight two-bar chain
+    (order 1); n = 14 gives the paper's 2¹⁴ − 1 = 16383
+    (:func:`trussfe.studies.hortobagyi.section7_recursion` carries the recursion exactly).
+
+    ``remove=True`` removes the bar A_n–X_n: the last pair is no longer straight, B has full row
+    rank (2n − 1 bars, 2n coordinates) and the assembly is a one-degree-of-freedom finite
+    mechanism, X_n turning about X_{n+1} (the paper: "removing one bar we obtain a
+    one-degree-of-freedom finite mechanism").
+    """
+    ab = [(1.0, 1.0)] * n if lengths is None else [tuple(map(float, p)) for p in lengths]
+    if len(ab) != n:
+        raise ValueError(f"give {n} pairs of bar lengths, got {len(ab)}")
+    e = (np.array([1.0, 0.0]), np.array([0.0, 1.0]))
+    X = [np.array([ab[0][0], 0.0])]
+    A = []
+    for j in range(n):
+        A.append(X[j] - ab[j][0] * e[j % 2])
+        X.append(X[j] + ab[j][1] * e[j % 2])
+    coords = np.array(X + A)
+    bars = []
+    for j in range(n):
+        bars += [(n + 1 + j, j), (j, j + 1)]
+    supports = {i: "xy" for i in range(n, 2 * n + 1)}
+    name = f"mech_sec7_chain_{n}"
+    title = f"Hortobágyi section 7: {n} straight bar pair(s), order 2^{n} - 1 = {2 ** n - 1}"
+    exp = (2 * n - 1, 1, 0, 1)
+    source = (f"construction (Tarnai 1989): order 2^{n} - 1; rank 2n - 1, one mechanism, "
+              "one self-stress")
+    if remove:
+        del bars[2 * n - 2]
+        name += "_minus1"
+        title = (f"Hortobágyi section 7: {n} bar pairs with bar A{n}-X{n} removed, a "
+                 "one-degree-of-freedom finite mechanism")
+        exp = (2 * n - 1, 1, 0, 0)
+        source = "Hortobágyi (1999) section 7: removing one bar gives a 1-dof finite mechanism"
+    return _entry(name, title, coords, bars, supports, exp, source, "1:y", 0.05)
+
+
 def square_frame() -> MechanismEntry:
     """A pinned square of four bars on two supports: one mechanism (sway)."""
     return _entry("mech_square", "Square frame, no diagonal (sway mechanism)",
@@ -328,8 +388,9 @@ def triangle_free() -> MechanismEntry:
 def _build() -> dict[str, MechanismEntry]:
     entries = [hortobagyi_section4(), fourbar(), slider_crank(), bricard_octahedron(),
                generic_octahedron(), section6_foldable(), section6_foldable(0),
-               section6_foldable(2), section8_compound(), section9_space(), square_frame(),
-               triangle_free()]
+               section6_foldable(2), section7_chain(1), section7_chain(2), section7_chain(3),
+               section7_chain(4), section7_chain(14), section7_chain(14, remove=True),
+               section8_compound(), section9_space(), square_frame(), triangle_free()]
     return {e.name: e for e in entries}
 
 
