@@ -343,3 +343,13 @@ def test_report_labels_regression_values_and_explanations(tmp_path):
     assert text.count("explained: ") == n_dev and "× 46.0/44.498" in text
     assert text.count("differs as documented") == n_dev
     assert "regression values" in page.read_text(encoding="utf-8")
+
+
+def test_a_case_without_a_figure_shows_its_model():
+    """An analysis case with no figure of its own gets the picture of its model
+    (``trussfe show``) in the report; one with figures keeps only its own."""
+    cases = load_cases(default_cases_dir(), ["buckling_euler_column", "postcritical_von_mises"])
+    plain, own = run_cases(cases, progress=False)
+    assert list(plain.figures) == ["model"]
+    assert plain.figures["model"].startswith(b"\x89PNG")
+    assert own.figures and "model" not in own.figures

@@ -243,6 +243,9 @@ def _evaluate(case: Case) -> tuple[dict, dict[str, bytes]]:
             result = analyse(str(model), **case.options)
             if case.plot and isinstance(result, dict):
                 figures[case.plot] = _member_plot(model, result, case.plot)
+            elif isinstance(result, dict) and not result.get("figures"):
+                # a case without a figure of its own shows the model it analyses
+                figures["model"] = _model_picture(model, Path(tmp))
     if not isinstance(result, dict):
         raise InputError("case", f"the analysis returned {type(result).__name__}, not a dict")
     for name, path in (result.get("figures", {}) or {}).items():
@@ -251,6 +254,15 @@ def _evaluate(case: Case) -> tuple[dict, dict[str, bytes]]:
         except OSError as exc:
             raise InputError("case", f"figure '{name}' cannot be read: {exc}") from None
     return result, figures
+
+
+def _model_picture(model: Path, folder: Path) -> bytes:
+    """The model as ``trussfe show`` draws it (matplotlib: the same bytes on every run)."""
+    from ..api.picture import show
+
+    png = folder / "model.png"
+    show(model, png, backend="matplotlib", size=(800, 600))
+    return png.read_bytes()
 
 
 def _member_plot(model: Path, result: dict, field_name: str) -> bytes:
