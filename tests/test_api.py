@@ -300,7 +300,7 @@ OUTPUTS = {"help", "model", "json", "vtk", "npz", "plots", "plot", "vtk_every", 
            "no_progress"}
 #: API options without a command-line option (documented in docs/python.md).
 API_ONLY = {"simulate": {"progress"}, "trace": {"progress"}, "postcritical": {"max_step", "progress"},
-            "elastic": {"progress"}, "transient": {"progress"},
+            "elastic": {"progress"}, "transient": {"progress"}, "modes": {"progress"},
             "validate": {"progress"}}
 #: Command-line destinations spelt differently in the API.
 RENAMED = {"validate": {"cases_selected": "case"}}

@@ -20,6 +20,7 @@ RUNS = [
      {"motion": "triangular_truss_motion_3s.toml", "dt": 0.1}),
     ("trace", "mech_fourbar.toml", {"drive": "2:y", "step": 0.05, "steps": 5}),
     ("postcritical", "postcritical_von_mises.toml", {"steps": 20}),
+    ("modes", "triangular_truss_static.toml", {"bar_model": "pinned-beam"}),
 ]
 
 

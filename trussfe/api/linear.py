@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, ClassVar
+from typing import Callable, Any, ClassVar
 
 import numpy as np
 
@@ -96,7 +96,8 @@ def static(model: ModelLike, *, bar_model: str = "truss", subdivisions: int | No
 
 def modes(model: ModelLike, *, count: int | None = None, mass: str = "consistent",
           bar_model: str = "truss", subdivisions: int | None = None,
-          mass_from: str | None = None) -> ModesResult:
+          mass_from: str | None = None,
+          progress: Callable[[int, int], None] | None = None) -> ModesResult:
     """Natural frequencies and mass-normalised mode shapes (``trussfe modes``).
 
     Parameters
@@ -114,6 +115,9 @@ def modes(model: ModelLike, *, count: int | None = None, mass: str = "consistent
     mass_from : str, optional
         A load case whose nodal loads along gravity add their mass, F·ĝ/``|g|``, at their nodes
         (:mod:`trussfe.mechanics.mass_source`): the payload of a case in the modes.
+    progress : callable, optional
+        Called as ``progress(done, total)`` between the stages of the solution (a progress
+        bar; the command line draws one on a terminal).
 
     Returns
     -------
@@ -126,7 +130,8 @@ def modes(model: ModelLike, *, count: int | None = None, mass: str = "consistent
     from ..fem.modal import solve_modes         # imported on first use: start-up
 
     return ModesResult(structure, solve_modes(structure, count=count, mass=mass,
-                                              bar_model=bar_model, subdivisions=subdivisions))
+                                              bar_model=bar_model, subdivisions=subdivisions,
+                                              progress=progress))
 
 
 def _with_case_masses(structure, name: str):

@@ -14,6 +14,7 @@ from ..fem.modal import DEFAULT_MODE_COUNT, MASS_KINDS, ModalResult
 from ..io.output import write_json
 from ._modeshapes import write_modes_vtk
 from . import options as opt
+from .progress import progress_bar
 
 
 def register(subparsers) -> None:
@@ -70,8 +71,10 @@ def _table(result: ModalResult) -> str:
 
 
 def _main(args: argparse.Namespace) -> int:
-    res = api.modes(args.model, count=args.count, mass=args.mass, bar_model=args.bar_model,
-                    subdivisions=args.subdivisions, mass_from=args.mass_from)
+    with progress_bar("modes", unit="stage") as tick:
+        res = api.modes(args.model, count=args.count, mass=args.mass,
+                        bar_model=args.bar_model, subdivisions=args.subdivisions,
+                        mass_from=args.mass_from, progress=tick)
     result = res.solution
     doc = res.to_dict() if args.json else None
     if args.vtk:

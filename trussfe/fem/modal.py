@@ -44,6 +44,8 @@ import dataclasses
 import logging
 from dataclasses import dataclass
 
+from typing import Callable
+
 import numpy as np
 import scipy.linalg as sla
 import scipy.sparse as sp
@@ -313,10 +315,20 @@ def generalized_eigen(Kff: sp.spmatrix, Mff: sp.spmatrix, count: int, sigma: flo
     return lam, V
 
 
+#: Stages of :func:`solve_modes` reported to a progress callback.
+MODAL_STAGES = 5
+
+
+def _stage(progress, k: int) -> None:
+    if progress is not None:
+        progress(k, MODAL_STAGES)
+
+
 def solve_modes(structure: Structure, count: int | None = None, mass: str = "consistent",
                 bar_model: str = "truss", subdivisions: int | None = None,
                 fe: FEModel | None = None, include_nodal_masses: bool = True,
-                check_resolution: bool = True) -> ModalResult:
+                check_resolution: bool = True,
+                progress: Callable[[int, int], None] | None = None) -> ModalResult:
     """Natural frequencies and mass-normalised mode shapes of a structure.
 
     Parameters
@@ -338,6 +350,9 @@ def solve_modes(structure: Structure, count: int | None = None, mass: str = "con
     check_resolution : bool
         Refuse modes that double precision cannot resolve (default); with False they are
         returned with their residuals for inspection.
+    progress : callable, optional
+        Called as ``progress(done, total)`` between the stages (discretisation, matrices and
+        factorisation, zero-frequency modes, eigen-solution, residuals).
 
     Returns
     -------
@@ -392,12 +407,17 @@ def solve_modes(structure: Structure, count: int | None = None, mass: str = "con
     if n == 0:
         raise AnalysisError(item, "every DOF is supported: there is nothing to vibrate")
     dense = n <= DENSE_MODAL_LIMIT or count >= n - 1
+    _stage(progress, 1)
     Kff, fac, Mff = _free_matrices(fe, mass, include_nodal_masses, dense)
+    _stage(progress, 2)
     count = _check_mass(Mff, count, fe, mass, item, every)
     rigid, sigma, factor = _zero_frequency_modes(Kff, Mff, fac, item)
+    _stage(progress, 3)
     lam, V = generalized_eigen(Kff, Mff, count, sigma=sigma, factor=factor, item=item)
+    _stage(progress, 4)
     lam = _clean_eigenvalues(lam, min(rigid, count), Kff, Mff, item)
     residuals = eigen_residuals(Kff, Mff, lam, V, min(rigid, count))
+    _stage(progress, 5)
     if check_resolution:
         _check_resolution(residuals, lam, Kff, Mff, item)
     shapes = np.zeros((fe.n_dof, count))
