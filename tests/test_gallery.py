@@ -58,6 +58,15 @@ REFERENCES = {
         "midspan deflection, m": (-6.591796875e-4, 1e-10, "5qL⁴/(384EI)"),
         "midspan moment, N·m": (1125.0, 1e-10, "qL²/8"),
     },
+    "plot_08_load_cases": {
+        # Roark's Formulas for Stress and Strain, Table 8.1: fixed-fixed beam, L = 4 m,
+        # q = 2 kN/m, EI = 1.6e6 N·m², end settlement 5 mm
+        "dead: end moment at A, N·m": (2000.0 * 16 / 12, 1e-10, "qL²/12"),
+        "dead: end shear at A, N": (4000.0, 1e-10, "qL/2"),
+        "settlement: end moment at A, N·m": (6 * 1.6e6 * 0.005 / 16, 1e-10, "6EIδ/L²"),
+        "settlement: end shear at A, N": (12 * 1.6e6 * 0.005 / 64, 1e-10, "12EIδ/L³"),
+        "ULS: moment at A over 1.35 dead + settlement": (1.0, 1e-12, "factored sum"),
+    },
     "plot_06_mechanism_trace": {
         "mechanisms": (1, 0.0, "Grübler: 2·2 − 3 = 1"),
         "joint 3 position error, m": (0.0, 1e-8, "closed-form circle intersection"),
