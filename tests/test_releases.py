@@ -288,3 +288,19 @@ def test_postcritical_tangent_at_the_undeformed_state_is_the_core_k_plus_kg(name
     core = solve_buckling(s, count=2, subdivisions=4, bar_model="truss").load_factors[:2]
     corot = linear_buckling(NonlinearModel(s, subdivisions=4), count=2)[0][:2]
     assert_allclose(corot, core, rtol=1e-8)
+
+
+def test_reversing_a_member_moves_every_release_with_its_end():
+    """Renumbering a member's ends (studies.numbering.reverse_members) carries the bending,
+    per-axis and torsion releases of each end with it."""
+    import numpy as np
+    from trussfe.model.sections import Material, Section
+    from trussfe.model.structure import build_structure
+    from trussfe.studies.numbering import reverse_members
+    s = build_structure([[0, 0, 0], [1, 0, 0]], [(0, 1)], section=Section("s", 1e-4, 1e-8, 1e-8, 2e-8, 0.01),
+                        material=Material("m", E=2e11, G=8e10), supports={0: "xyz"})
+    s = s.variant(releases=np.array([[True, False]]), torsion_releases=np.array([[False, True]]))
+    r = reverse_members(s, [s.member_ids[0]])
+    assert r.connectivity.tolist() == [[1, 0]]
+    assert r.releases.tolist() == [[False, True]]
+    assert r.torsion_releases.tolist() == [[True, False]]

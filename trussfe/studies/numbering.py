@@ -61,5 +61,7 @@ def reverse_members(structure: Structure, member_ids: Sequence[str]) -> Structur
     releases[idx] = releases[idx, ::-1]
     axes = structure.bending_axis_releases.copy()
     axes[idx] = axes[idx, ::-1]
+    torsion = structure.torsion_releases.copy()
+    torsion[idx] = torsion[idx, ::-1]
     return structure.variant(connectivity=conn, releases=releases,
-                             bending_axis_releases=axes)
+                             bending_axis_releases=axes, torsion_releases=torsion)
