@@ -353,3 +353,19 @@ def test_a_case_without_a_figure_shows_its_model():
     assert list(plain.figures) == ["model"]
     assert plain.figures["model"].startswith(b"\x89PNG")
     assert own.figures and "model" not in own.figures
+
+
+def test_a_python_case_names_the_model_it_pictures(tmp_path):
+    """``picture = MODEL`` gives a study case that draws no figure the picture of its model;
+    on an analysis case (which shows its own model) it is refused in one line."""
+    from trussfe.errors import InputError
+    case, = load_cases(default_cases_dir(), ["fourbar-closed-form"])
+    assert case.picture is not None and case.picture.name == "mech_fourbar.toml"
+    result, = run_cases([case], progress=False)
+    assert list(result.figures) == ["model"]
+    bad = tmp_path / "bad.toml"
+    model = Path(__file__).resolve().parents[1] / "meshes" / "triangular_truss_static.toml"
+    bad.write_text(f'[case]\nid = "x"\ntitle = "x"\nanalysis = "static"\n'
+                   f'model = "{model}"\npicture = "{model}"\n')
+    with pytest.raises(InputError, match="case.picture"):
+        load_cases(tmp_path)

@@ -12,7 +12,7 @@ from ..errors import InputError
 from ..io.model_file import _suggest
 
 CASE_KEYS = ("id", "title", "model", "catalogue", "parameters", "analysis", "python",
-             "options", "notes", "tags", "plot")
+             "options", "notes", "tags", "plot", "picture")
 EXPLAINED_KEYS = ("explained", "explained_source", "explained_rtol", "explained_atol",
                   "explained_kind")
 QUANTITY_KEYS = ("name", "path", "reference", "source", "kind", "thesis_matlab", "thesis_mscpal",
@@ -94,6 +94,8 @@ class Case:
     notes: str = ""
     tags: list[str] = field(default_factory=list)
     plot: str | None = None
+    #: A python case's model file drawn in the report when the case draws no figure.
+    picture: Path | None = None
 
 
 def _num(value: Any, item: str, *, nonneg: bool = False) -> float:
@@ -259,6 +261,12 @@ def _parse(data: dict, path: Path) -> Case:
         raise InputError("case.parameters", "parameters apply to a 'catalogue' model only")
     if "plot" in raw:
         case.plot = _str(raw["plot"], "case.plot")
+    if "picture" in raw:
+        if case.python is None:
+            raise InputError("case.picture", "an analysis case shows its own model")
+        case.picture = resolve_model_path(_str(raw["picture"], "case.picture"), path)
+        if not Path(case.picture).is_file():
+            raise InputError("case.picture", f"model file '{raw['picture']}' not found")
     tags = raw.get("tags", [])
     if not isinstance(tags, list) or not all(isinstance(t, str) for t in tags):
         raise InputError("case.tags", "expected a list of strings")

@@ -234,6 +234,9 @@ def _evaluate(case: Case) -> tuple[dict, dict[str, bytes]]:
     figures: dict[str, bytes] = {}
     if case.python:
         result = _call_python(case.python, case.options)
+        if case.picture is not None and isinstance(result, dict) and not result.get("figures"):
+            with tempfile.TemporaryDirectory(prefix="trussfe-case-") as tmp:
+                figures["model"] = _model_picture(case.picture, Path(tmp))
     else:
         analyse = _analyse(case.analysis)
         with tempfile.TemporaryDirectory(prefix="trussfe-case-") as tmp:
