@@ -170,7 +170,38 @@ def _perfect_column(out: dict, perfect, pres, d: np.ndarray, ratio_ref: float,
         out["branch_max_deflection"] = float(d.max())
 
 
-def euler_column(subdivisions: int = 16) -> dict:
+def _column_figure(name: str, title: str, imperfect: tuple[np.ndarray, np.ndarray],
+                   branch: tuple[np.ndarray, np.ndarray], upper: float) -> dict:
+    """P/P_E against the mid-span deflection δ/L of the imperfect path and of the perfect
+    column's secondary branch, with the elastica (Timoshenko & Gere §2.7), as a PNG in a
+    temporary folder."""
+    import tempfile
+    from pathlib import Path
+
+    from ..io.figures import subplots
+    from ..io.output import atomic_path
+
+    fig, ax = subplots(figsize=(6.4, 4.6))
+    x = np.linspace(1e-3, upper, 80)
+    ax.plot(x, [elastica_load_ratio(v) for v in x], color="0.6", lw=3,
+            label="elastica (Timoshenko & Gere)")
+    ax.plot(*imperfect, ".-", ms=3, lw=1, label="imperfect column (L/1000)")
+    ax.plot(*branch, "s", ms=3, mfc="none", label="perfect column, secondary branch")
+    ax.set_xlim(0.0, upper * 1.05)
+    ax.set_ylim(0.0, 1.6)
+    ax.set_xlabel("mid-span deflection δ/L")
+    ax.set_ylabel("load P/P_E")
+    ax.set_title(title)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    path = Path(tempfile.mkdtemp(prefix="trussfe_postcritical_")) / f"{name}.png"
+    with atomic_path(path) as tmp:
+        fig.savefig(tmp, dpi=120, format="png")
+    return {name: str(path)}
+
+
+def euler_column(subdivisions: int = 16, figures: bool = True) -> dict:
     """Pin-ended column (``meshes/postcritical_euler_column.toml``) against the elastica.
 
     * imperfect column (L/1000 in the first mode): load ratio ``P/P_E`` at the points where the
@@ -196,12 +227,15 @@ def euler_column(subdivisions: int = 16) -> dict:
     EA = float(s.E[0] * s.area[0])
     pres = follow_path(perfect, "arc-length", steps=60, max_load_factor=1.6, branch=True,
                        monitor=perfect.dof(1, 1))
-    _perfect_column(out, perfect, pres, np.abs(pres.displacement(mid)) / L, ratio_ref,
-                    1.0 + Pe / EA, upper=0.4)
+    db = np.abs(pres.displacement(mid)) / L
+    _perfect_column(out, perfect, pres, db, ratio_ref, 1.0 + Pe / EA, upper=0.4)
+    if figures:
+        out["figures"] = _column_figure("euler_column_paths", "pin-ended column (2-D)",
+                                        (d, lam), (db, pres.load_factors * ratio_ref), 0.4)
     return out
 
 
-def euler_column_3d(subdivisions: int = 16) -> dict:
+def euler_column_3d(subdivisions: int = 16, figures: bool = True) -> dict:
     """The Euler column in 3-D (``meshes/postcritical_euler_column_3d.toml``): the 2-D study of
     :func:`euler_column` with 3-D co-rotational beams, the column's axis ``a = (1, 2, 2)/3``
     oblique to every global axis and its top guided along the axis by two long links.
@@ -233,8 +267,12 @@ def euler_column_3d(subdivisions: int = 16) -> dict:
     pres = follow_path(perfect, "arc-length", steps=80, max_load_factor=1.6, branch=True,
                        monitor=perfect.dof(1, 2))
     # up to δ = 0.35 L: δ/L(p) peaks at 0.4025, near which P(δ) is ill-conditioned
-    _perfect_column(out, perfect, pres, lateral(pres, perfect), ratio_ref, 1.0 + Pe / EA,
-                    upper=0.35)
+    db = lateral(pres, perfect)
+    _perfect_column(out, perfect, pres, db, ratio_ref, 1.0 + Pe / EA, upper=0.35)
+    if figures:
+        out["figures"] = _column_figure("euler_column_3d_paths",
+                                        "pin-ended column on an oblique axis (3-D)",
+                                        (d, lam), (db, pres.load_factors * ratio_ref), 0.35)
     return out
 
 
