@@ -73,7 +73,35 @@ def lacy_buckling_allowables(subdivisions: int = 8) -> dict:
     return out
 
 
-def modal_closed_form() -> dict:
+def _axial_modes_figure(x: np.ndarray, shapes: np.ndarray, L: float) -> dict:
+    """The fixed–free bar's first axial modes against sin((2n − 1)πx/2L), as a PNG in a
+    temporary folder."""
+    import tempfile
+    from pathlib import Path
+
+    from ..io.figures import subplots
+    from ..io.output import atomic_path
+
+    fig, ax = subplots(figsize=(6.4, 4.2))
+    xx = np.linspace(0.0, L, 200)
+    for i in range(shapes.shape[0]):
+        u = shapes[i] / shapes[i][-1] * (-1) ** i       # free end: sin((2n − 1)π/2)
+        ax.plot(xx, np.sin((2 * i + 1) * np.pi * xx / (2 * L)), color="0.6", lw=3,
+                label="closed form sin((2n−1)πx/2L)" if i == 0 else None)
+        ax.plot(x[::8], u[::8], "o", ms=3, label=f"trussfe mode {i + 1}")
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("axial displacement (scaled)")
+    ax.set_title("fixed–free bar, axial modes")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    path = Path(tempfile.mkdtemp(prefix="trussfe_modal_")) / "axial_bar_modes.png"
+    with atomic_path(path) as tmp:
+        fig.savefig(tmp, dpi=120, format="png")
+    return {"axial_bar_modes": str(path)}
+
+
+def modal_closed_form(figures: bool = True) -> dict:
     """Frequencies of an axial bar and a simply supported beam against closed form.
 
     Returns
@@ -92,9 +120,12 @@ def modal_closed_form() -> dict:
     bar = build_structure(x, np.c_[np.arange(n), np.arange(1, n + 1)], section=TRIANGLE_TUBE,
                           material=ALUMINIUM, supports=sup)
     c = np.sqrt(ALUMINIUM.E / ALUMINIUM.density)
-    fb = solve_modes(bar, count=2).frequencies_hz
+    bar_modes = solve_modes(bar, count=2)
+    fb = bar_modes.frequencies_hz
     out = {f"axial_bar_f{i + 1}_ratio": float(fb[i] / ((2 * i + 1) * c / (4 * L)))
            for i in range(2)}
+    if figures:
+        out["figures"] = _axial_modes_figure(x[:, 0], bar_modes.node_shapes()[:, :, 0], L)
     beam = build_structure([[0, 0], [L, 0]], [(0, 1)], section=TRIANGLE_TUBE,
                            material=ALUMINIUM, supports={0: "xy", 1: "y"})
     base = np.pi / (2 * L**2) * np.sqrt(ALUMINIUM.E * TRIANGLE_TUBE.Iz
