@@ -79,7 +79,7 @@ def check_options(analysis: str, options) -> None:
     """Raise :class:`~trussfe.errors.InputError` (item ``case.options``) for an option that
     ``analysis`` does not take, suggesting the closest one."""
     from ..errors import InputError
-    from ..io.model_file import _suggest
+    from ..io.suggest import suggest as _suggest
 
     known = option_names(analysis)
     for key in options:

@@ -137,7 +137,7 @@ def modes(model: ModelLike, *, count: int | None = None, mass: str = "consistent
 def _with_case_masses(structure, name: str):
     """The structure with the masses of load case ``name``'s loads along gravity added."""
     from ..errors import InputError
-    from ..io.model_file import _suggest
+    from ..io.suggest import suggest as _suggest
     from ..mechanics.mass_source import masses_from_loads
     from ..model.load_cases import model_load_cases
 

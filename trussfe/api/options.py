@@ -12,7 +12,7 @@ from ..errors import InputError
 def choice(option: str, value: Any, choices) -> str:
     """``value`` if it is one of ``choices``, else an :class:`InputError`."""
     if value not in choices:
-        from ..io.model_file import _suggest
+        from ..io.suggest import suggest as _suggest
         raise InputError(option, f"invalid choice {value!r}{_suggest(value, list(choices))}")
     return value
 

@@ -46,7 +46,7 @@ def _fmt(x) -> str:
 def _main(args: argparse.Namespace) -> int:
     from ..errors import InputError
     from ..parametric.engine import require_dask, run_study, write_results
-    from ..parametric.spec import read_study
+    from ..parametric import read_study
 
     if args.scheduler is not None and args.workers is not None:
         raise InputError("--workers", "sets the local cluster's size; a scheduler given by "

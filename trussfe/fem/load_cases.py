@@ -332,7 +332,7 @@ def solve_load_cases(structure: Structure, cases: Sequence[str] | None = None,
 
 
 def _unknown(what: str, name, valid: Sequence[str]) -> str:
-    from ..io.model_file import _suggest
+    from ..io.suggest import suggest as _suggest
     if not valid:
         return f"the model has no {what}s"
     return f"the model has no {what} '{name}'{_suggest(str(name), list(valid))}"

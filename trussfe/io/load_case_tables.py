@@ -19,15 +19,12 @@ from ..errors import InputError
 from ..model.load_cases import Combination, LoadCase, LoadCases
 from ..model.node_supports import Springs
 from ..model.structure import DOF_NAMES, Structure
+from .extension_tables import parse_member_loads as _parse_model_member_loads
+from .suggest import suggest as _suggest
 
 #: Keys of a ``[load_cases.NAME]`` table.
 CASE_KEYS = ("loads", "gravity", "prescribed", "temperature", "initial_strain",
              "length_error", "member_loads")
-
-
-def _suggest(word: str, choices) -> str:
-    from .model_file import _suggest as suggest
-    return suggest(word, choices)
 
 
 def _number(value: Any, item: str, *, nonneg: bool = False) -> float:
@@ -133,8 +130,7 @@ def parse_mass_entry(value: Any, item: str, dim: int) -> tuple[float, np.ndarray
 def parse_member_loads(raw: Any, structure: Structure, item: str) -> tuple:
     """The ``member_loads`` of one case: loads along members, read as the model's
     ``member_loads`` array is (:func:`trussfe.io.extension_tables.parse_member_loads`)."""
-    from .extension_tables import parse_member_loads as parse
-    return parse(raw, structure, None, item)
+    return _parse_model_member_loads(raw, structure, None, item)
 
 
 def _member_values(raw: Any, structure: Structure, item: str, value_key: str

@@ -9,7 +9,6 @@ file and the item.  Reading a model imports the model layer only, none of the an
 from __future__ import annotations
 
 import contextvars
-import difflib
 import logging
 import math
 from dataclasses import replace
@@ -24,7 +23,8 @@ from . import toml_text
 from .extension_tables import TABLES as EXTENSION_TABLES
 from .load_case_tables import parse_load_cases, parse_mass_entry, parse_springs
 from ..model.geometry import member_lengths
-from ..model.ids import IdIndex, IdRange, id_index
+from ..model.ids import IdRange, id_index
+from .suggest import suggest as _suggest
 from ..model.sections import Material, Section
 from ..mechanics.releases import parse_end_release
 from ..model.structure import DOF_NAMES, Structure
@@ -38,41 +38,6 @@ _source: contextvars.ContextVar[str] = contextvars.ContextVar("trussfe_model_sou
 #: Top-level tables of the core format.
 CORE_TABLES = ("model", "materials", "sections", "nodes", "members", "supports", "loads",
                "masses", "groups", "springs", "load_cases", "combinations")
-
-#: Most valid names a message lists; a larger set is summarised by its nearest few and a count.
-MAX_LISTED = 8
-#: Above this many names the nearest are found by sorted order, not by string similarity
-#: (difflib on 300,000 ids takes seconds).
-MAX_DIFFLIB = 2000
-
-
-def _suggest(word: str, choices) -> str:
-    """The suggestion that ends a "not defined" message: the close match, all valid names
-    of a short list, or the nearest few of a long one and how many there are."""
-    if isinstance(choices, IdIndex):            # a mesh model: nodes are the point indices
-        return f"; the mesh's nodes are 0 … {len(choices) - 1}"
-    names = [str(c) for c in choices]
-    word = str(word)
-    pool = names if len(names) <= MAX_DIFFLIB else _neighbours(word, names, 50)
-    close = difflib.get_close_matches(word, pool, n=1, cutoff=0.5)
-    if close:
-        return f"; did you mean '{close[0]}'?"
-    if len(names) <= MAX_LISTED:
-        return f"; valid: {', '.join(names)}"
-    near = (difflib.get_close_matches(word, pool, n=5, cutoff=0.0) if len(names) <= MAX_DIFFLIB
-            else _neighbours(word, names, 5))
-    return f"; nearest: {', '.join(near)} (of {len(names):,} defined)"
-
-
-def _neighbours(word: str, names: list[str], k: int) -> list[str]:
-    """The ``k`` names nearest to ``word`` in sorted order (cheap for any number of names)."""
-    import bisect
-
-    ordered = sorted(names)
-    i = bisect.bisect_left(ordered, word)
-    lo = max(0, min(i - k // 2, len(ordered) - k))
-    return ordered[lo:lo + k]
-
 
 def _check_keys(table: dict, allowed, item: str) -> None:
     for key in table:

@@ -15,7 +15,8 @@ import os
 import tempfile
 from pathlib import Path
 
-from .spec import Study, read_study
+from .runner import read_study
+from .spec import Study
 
 
 def study(study_file: str | os.PathLike, *, out: str | os.PathLike | None = None,

@@ -108,7 +108,7 @@ def set_value(data: dict, path: str, value: Any, *, new_tables: Iterable[str] = 
                     obj[key] = {}
                     found = (key, i + 1)
                 else:
-                    from ..io.model_file import _suggest
+                    from ..io.suggest import suggest as _suggest
                     raise PathError(f"'{done or 'the file'}' has no '{key}'"
                                     f"{_suggest(key, list(obj))}")
             key, j = found
@@ -157,7 +157,7 @@ def _walk(obj: Any, toks: list, i: int, done: str) -> list:
         if isinstance(obj, dict):
             found = _key_run(obj, toks, i)
             if found is None:
-                from ..io.model_file import _suggest
+                from ..io.suggest import suggest as _suggest
                 raise PathError(f"'{done or 'the result'}' has no '{tok}'"
                                 f"{_suggest(tok, list(obj))}")
             key, i = found

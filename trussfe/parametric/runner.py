@@ -21,7 +21,7 @@ import numpy as np
 
 from ..errors import InputError, TrussfeError, one_line
 from .paths import PathError, get_values, numbers, reduce, set_value
-from .spec import Study
+from .spec import TEMPLATE, Study, _catalogue_function, parse_study
 
 #: Error message of a run whose numbers overflowed (as the command line words it).
 _NUMERICS = ("numerical failure ({}): a value is out of the range of floating-point numbers; "
@@ -66,7 +66,6 @@ def build_inputs(study: Study, values: dict) -> tuple[Any, dict]:
 
     targets = {t for p in study.parameters for t, _ in p.paths}
     if study.catalogue is not None:
-        from .spec import _catalogue_function
         args = dict(study.catalogue_args)
         for p in study.parameters:
             for k, (t, path) in enumerate(p.paths):
@@ -101,7 +100,6 @@ def build_inputs(study: Study, values: dict) -> tuple[Any, dict]:
 
 
 def _output_value(doc: dict, out, item: str, values: dict) -> float:
-    from .spec import TEMPLATE
 
     path = TEMPLATE.sub(lambda m: str(values[m.group(1)]), out.path)
     try:
@@ -203,3 +201,33 @@ def run_one(study: Study, run_id: int, grid_point: int, sample: int, values: dic
     if status == "error":
         outs = {o.name: math.nan for o in study.outputs}
     return {**row, **outs, "status": status, "error": error}
+
+
+def read_study(path) -> Study:
+    """Read and check a study file: its own tables (:func:`trussfe.parametric.spec.parse_study`),
+    then the model (and motion) built with every parameter at a representative value.
+
+    Raises
+    ------
+    InputError
+        Naming the study file and the item at fault: an unknown key or table, a path that is
+        not in the model, motion file or catalogue arguments, a bad distribution, an option the
+        analysis does not have, an output without a path, a model that the parameters make
+        invalid.
+    """
+    study = parse_study(path)
+    _check_inputs(study)
+    return study
+
+
+def _check_inputs(study: Study) -> None:
+    """Build the model (and motion) with every parameter at a representative value, so that
+    a path the files do not have, or a value their reader refuses, is found now."""
+    names = [p.name for p in study.parameters]
+    clash = {p.name for p in study.parameters} & {o.name for o in study.outputs}
+    if clash:
+        raise InputError(f"parameters.{sorted(clash)[0]}", "is also the name of an output")
+    if len(set(names)) != len(names):
+        raise InputError("[parameters]", "a parameter is named twice")
+    values = {p.name: p.representative() for p in study.parameters}
+    build_inputs(study, values)

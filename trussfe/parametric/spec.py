@@ -100,7 +100,7 @@ class Output:
 
 @dataclass(frozen=True)
 class Study:
-    """A checked study file (:func:`read_study`)."""
+    """A checked study file (:func:`trussfe.parametric.runner.read_study`)."""
 
     file: Path
     source: str                        # the study file as named (for error lines)
@@ -160,8 +160,9 @@ def _load_toml(path: Path, what: str) -> dict:
         raise _err(str(path), f"malformed TOML: {exc}") from None
 
 
-def read_study(path: str | Path) -> Study:
-    """Read and check a study file.
+def parse_study(path: str | Path) -> Study:
+    """Read a study file and check it against itself and the catalogue (the model and motion
+    files are built with the parameters by :func:`trussfe.parametric.runner.read_study`).
 
     Raises
     ------
@@ -182,7 +183,7 @@ def read_study(path: str | Path) -> Study:
 
 
 def _parse(data: dict, path: Path) -> Study:
-    from ..io.model_file import _suggest
+    from ..io.suggest import suggest as _suggest
 
     for key in data:
         if key not in ("study", "catalogue", "parameters", "outputs"):
@@ -237,7 +238,6 @@ def _parse(data: dict, path: Path) -> Study:
                   samples=samples, seed=seed)
     if study.n_runs > MAX_RUNS:
         raise _err("study", f"{study.n_runs} runs is more than {MAX_RUNS}")
-    _check_inputs(study)
     return study
 
 
@@ -250,7 +250,7 @@ def _count(head: dict, key: str, default: int, low: int) -> int:
 
 def _analyses(value) -> tuple[str, ...]:
     from ..api import ANALYSES
-    from ..io.model_file import _suggest
+    from ..io.suggest import suggest as _suggest
 
     if value is None:
         raise _err("study.analysis", f"is required: one of {', '.join(ANALYSES)}")
@@ -311,7 +311,7 @@ def _motion(options: dict) -> tuple[Path | None, dict | None]:
 
 def _catalogue_function(name):
     import trussfe.models as catalogue
-    from ..io.model_file import _suggest
+    from ..io.suggest import suggest as _suggest
 
     names = [n for n in catalogue.__all__ if n[0].islower()]
     if not isinstance(name, str) or name not in names:
@@ -324,7 +324,7 @@ def _catalogue_args(name, raw) -> dict:
     if not isinstance(raw, dict):
         raise _err("[catalogue]", "expected a table of arguments")
     known = [p.name for p in inspect.signature(fn).parameters.values()]
-    from ..io.model_file import _suggest
+    from ..io.suggest import suggest as _suggest
     for key in raw:
         if key not in known:
             raise _err(f"catalogue.{key}", f"'{name}' has no argument '{key}'"
@@ -350,7 +350,7 @@ def _parameters(raw, model_data, motion_data, catalogue, catalogue_args, motion_
                              "distribution)")
         for key in spec:
             if key not in _PARAM_KEYS:
-                from ..io.model_file import _suggest
+                from ..io.suggest import suggest as _suggest
                 raise _err(f"{item}.{key}", f"unknown key{_suggest(key, _PARAM_KEYS)}")
         paths = _param_paths(name, spec, item)
         targets = []
@@ -427,7 +427,7 @@ def _values(spec: dict, item: str) -> tuple[tuple | None, str | None, dict]:
         return _range(spec, item), None, {}
     dist = spec["distribution"]
     if dist not in DISTRIBUTIONS:
-        from ..io.model_file import _suggest
+        from ..io.suggest import suggest as _suggest
         raise _err(f"{item}.distribution", f"unknown distribution {dist!r}"
                                            f"{_suggest(str(dist), list(DISTRIBUTIONS))}")
     needs = DISTRIBUTIONS[dist]
@@ -526,7 +526,7 @@ def _outputs(raw, analyses: tuple[str, ...], params: list[str]) -> tuple[Output,
             raise _err(item, "expected a dotted path or a table {path, reduce}")
         for key in spec:
             if key not in _OUTPUT_KEYS:
-                from ..io.model_file import _suggest
+                from ..io.suggest import suggest as _suggest
                 raise _err(f"{item}.{key}", f"unknown key{_suggest(key, _OUTPUT_KEYS)}")
         path = spec.get("path")
         if not isinstance(path, str):
@@ -561,19 +561,3 @@ def _outputs(raw, analyses: tuple[str, ...], params: list[str]) -> tuple[Output,
             raise _err(item, f"'{name}' is a column of every study; choose another name")
         out.append(Output(name=name, analysis=analysis, path=path, reduce=how, where=where))
     return tuple(out)
-
-
-def _check_inputs(study: Study) -> None:
-    """Build the model (and motion) with every parameter at a representative value, so that
-    a path the files do not have, or a value their reader refuses, is found now."""
-    from .runner import build_inputs
-
-    names = [p.name for p in study.parameters]
-    clash = {p.name for p in study.parameters} & {o.name for o in study.outputs}
-    if clash:
-        raise _err(f"parameters.{sorted(clash)[0]}", "is also the name of an output")
-    if len(set(names)) != len(names):
-        raise _err("[parameters]", "a parameter is named twice")
-    values = {p.name: p.representative() for p in study.parameters}
-    build_inputs(study, values)
-

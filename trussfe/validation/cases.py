@@ -9,7 +9,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import InputError
-from ..io.model_file import _suggest
+from ..io.suggest import suggest as _suggest
 
 CASE_KEYS = ("id", "title", "model", "catalogue", "parameters", "analysis", "python",
              "options", "notes", "tags", "plot", "picture")

@@ -194,7 +194,7 @@ def _analyse(name: str):
 
     func = api.ANALYSES.get(name)
     if func is None:
-        from ..io.model_file import _suggest
+        from ..io.suggest import suggest as _suggest
         raise InputError("case.analysis", f"unknown analysis '{name}'"
                                           f"{_suggest(name, sorted(api.ANALYSES))}") from None
 
@@ -211,7 +211,7 @@ def _catalogue_model(case: Case, folder: Path) -> Path:
 
     func = getattr(models, case.catalogue, None)
     if not callable(func):
-        from ..io.model_file import _suggest
+        from ..io.suggest import suggest as _suggest
         raise InputError("case.catalogue", f"unknown catalogue model '{case.catalogue}'"
                                            f"{_suggest(case.catalogue, models.__all__)}")
     try:
