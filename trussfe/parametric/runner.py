@@ -20,7 +20,7 @@ from typing import Any, Iterator
 import numpy as np
 
 from ..errors import InputError, TrussfeError, one_line
-from .paths import PathError, get_values, numbers, reduce, set_value
+from ..api.result_paths import PathError, get_values, numbers, reduce, set_value
 from .spec import TEMPLATE, Study, _catalogue_function, parse_study
 
 #: Error message of a run whose numbers overflowed (as the command line words it).

@@ -21,7 +21,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import InputError
-from .paths import REDUCTIONS, PathError, tokens
+from ..api.result_paths import REDUCTIONS, PathError, tokens
 
 #: Distributions of a Monte Carlo parameter and the numbers each needs.
 DISTRIBUTIONS = {"uniform": ("low", "high"), "normal": ("mean", "std"),
@@ -491,7 +491,7 @@ def _range(spec: dict, item: str) -> tuple:
 
 
 def _base_value(target, path, model_data, motion_data, catalogue, catalogue_args, item):
-    from .paths import get_value
+    from ..api.result_paths import get_value
     if target == "catalogue":
         arg = tokens(path)[1]
         if arg in catalogue_args:

@@ -5,7 +5,6 @@ from __future__ import annotations
 import importlib
 import logging
 import math
-import re
 import tempfile
 import time
 from dataclasses import dataclass, field
@@ -13,38 +12,18 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import InputError, TrussfeError
+from ..api.result_paths import get_value
 from ..io.output import scratch_files
 from .cases import Case, Quantity
 
 log = logging.getLogger(__name__)
 
-_TOKEN = re.compile(r'\s*(?:"([^"]*)"|([^.\[\]"]+)|\[\s*(-?\d+)\s*\])\s*(\.)?')
-
-
-def _tokens(path: str) -> list:
-    """Split a path into keys (str) and list indices (int)."""
-    out: list = []
-    pos = 0
-    text = path.strip()
-    if not text:
-        raise KeyError("empty path")
-    while pos < len(text):
-        m = _TOKEN.match(text, pos)
-        if not m or m.end() == pos:
-            raise KeyError(f"cannot parse path at '{text[pos:]}'")
-        quoted, key, index, _dot = m.groups()
-        if index is not None:
-            out.append(int(index))
-        else:
-            out.append(quoted if quoted is not None else key.strip())
-        pos = m.end()
-    return out
-
 
 def lookup(result: Any, path: str) -> Any:
     """The value at ``path`` in a nested dict/list result.
 
-    Path syntax: dot-separated keys, ``[i]`` list indices (``.i`` works too), keys with dots
+    Path syntax (:mod:`trussfe.api.result_paths`, shared with parameter studies):
+    dot-separated keys, ``[i]`` list indices (``.i`` works too), keys with dots
     in double quotes.  A dict key that itself contains dots (a flat result such as
     ``{"table_5_2.M6_axial": ...}``) is matched without quotes: the longest run of path
     segments that is a key wins.
@@ -58,36 +37,7 @@ def lookup(result: Any, path: str) -> Any:
     >>> lookup({"t.O2.0": 17.18}, "t.O2.0"), lookup({"r": [5, 6]}, "r.1")
     (17.18, 6)
     """
-    tokens = _tokens(path)
-    obj = result
-    i = 0
-    while i < len(tokens):
-        tok = tokens[i]
-        if isinstance(obj, dict):
-            # longest run of string segments that is a key
-            for j in range(len(tokens), i, -1):
-                run = tokens[i:j]
-                if all(isinstance(t, str) for t in run) and ".".join(run) in obj:
-                    obj = obj[".".join(run)]
-                    i = j
-                    break
-            else:
-                name = tok if isinstance(tok, str) else f"[{tok}]"
-                raise KeyError(f"no key '{name}' (have: {', '.join(list(map(str, obj))[:8])}"
-                               f"{', ...' if len(obj) > 8 else ''})")
-            continue
-        if isinstance(obj, (list, tuple)):
-            if isinstance(tok, str) and re.fullmatch(r"-?\d+", tok):
-                tok = int(tok)
-            if not isinstance(tok, int):
-                raise KeyError(f"key '{tok}' applied to a list")
-            if not -len(obj) <= tok < len(obj):
-                raise KeyError(f"index {tok} out of range (length {len(obj)})")
-            obj = obj[tok]
-            i += 1
-            continue
-        raise KeyError(f"'{tok}' applied to a {type(obj).__name__}")
-    return obj
+    return get_value(result, path)
 
 
 @dataclass

@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: MIT
-"""Dotted paths into nested data: a study's parameters (into a model or motion file's tables)
-and outputs (into an analysis' JSON document, docs/json.md).
+"""Dotted paths into nested data: the quantities of validation cases and the outputs of
+parameter studies (into an analysis' JSON document, docs/json.md), and a study's parameters
+(into a model or motion file's tables).
 
 Syntax: keys separated by dots, list indices as ``.i`` or ``[i]`` (negative from the end), a
 key with dots in double quotes (``nodes."b1.N7".displacement.2``).  A key that contains dots
