@@ -181,8 +181,8 @@ def test_backend_rule():
 
 @needs_pardiso
 def test_symmetric_pardiso_solves_chain():
-    """PARDISO's symmetric LDLᵀ (mtype −2): node k of a grounded chain of unit springs moves
-    k under a unit tip load (analytic), with inertia 0."""
+    """PARDISO on a positive definite matrix (its Cholesky, mtype 2): node k of a grounded
+    chain of unit springs moves k under a unit tip load (analytic), with inertia 0."""
     n = 40
     f = np.zeros(n)
     f[-1] = 1.0

@@ -7,7 +7,8 @@ Kinds
     Symmetric, expected positive definite (a supported stiffness, ``K − σM`` below the
     spectrum).  Long, narrow systems go to a banded Cholesky factorisation
     (:mod:`trussfe.linalg.banded`; banded LU when round-off made the stored matrix indefinite
-    in its softest direction); otherwise PARDISO's ``LDLᵀ`` or SuperLU's LU.
+    in its softest direction); otherwise PARDISO's Cholesky ``LLᵀ`` (its ``LDLᵀ`` when a
+    pivot is not positive) or SuperLU's LU.
 ``"symmetric"``
     Symmetric, possibly indefinite (a tangent stiffness, a shifted Gram matrix): a
     factorisation that reveals the inertia — SuperLU in symmetric mode with diagonal pivots
@@ -20,7 +21,15 @@ Backend selection (the one rule)
 ``backend="auto"``: for ``kind="spd"`` with at least :data:`BANDED_MIN_DOF` unknowns, the
 banded factorisation when the reordered half-bandwidth is at most
 :data:`BANDED_MAX_BANDWIDTH`; otherwise PARDISO when it is installed and the system has at
-least :data:`PARDISO_MIN_DOF` unknowns; SuperLU otherwise.  ``"banded"`` tries the band
+least :data:`PARDISO_MIN_DOF` unknowns; SuperLU otherwise.  Whether a band is narrow
+enough is first bounded from one breadth-first search
+(:func:`~trussfe.linalg.banded.bandwidth_lower_bound`): a wide lattice (a square space grid)
+goes to the general backend without a reordering.  Only direct factorisations are chosen:
+the long chains are so badly conditioned (first frequency ~1e-6 Hz at 10,000 bays; a 410 ×
+410 space grid supported at its corners leaves a relative residual of ~1e-6 after a
+backward-stable solve) that an iterative solver would need thousands of iterations, and
+smoothed-aggregation multigrid with the rigid-body modes as near-null space did not reach
+1e-8 in 1,000 conjugate-gradient iterations on a 60 × 60 grid.  ``"banded"`` tries the band
 whatever the size and bandwidth (then ``auto``'s general backend); ``"superlu"`` and
 ``"pardiso"`` are taken as asked.
 
@@ -35,7 +44,7 @@ Inertia
 ``Factor.inertia`` is the number of negative pivots, which by Sylvester's law of inertia is
 the number of negative eigenvalues, when the factorisation reveals it: banded Cholesky (0),
 SuperLU in symmetric mode (when it kept diagonal pivots), PARDISO ``LDLᵀ`` (no perturbed
-pivot).  Otherwise it is ``None``: unknown, never a number standing for "unknown".
+pivot), PARDISO's Cholesky (0).  Otherwise it is ``None``: unknown, never a number standing for "unknown".
 
 Refinement
 ----------
@@ -253,7 +262,7 @@ def factor(A, kind: str = "general", backend: str = "auto", *,
     if limit is not None:
         if layout is None:
             if isinstance(A, FreeBlock) and A.K is not None:
-                layout = band_layout_free(A.K, A.free, limit)
+                layout = band_layout_free(A.K, A.free, limit, submatrix=A.tocsr)
             else:
                 layout = band_layout(_csr(A), limit, anchored)
         elif layout.bandwidth > limit:
@@ -388,6 +397,10 @@ def _superlu_symmetric(M: sp.csr_matrix) -> Factor:
 def _pardiso(M: sp.csr_matrix, kind: str) -> Factor:
     if not pardiso.available():
         raise ValueError("the PARDISO backend is not available (pypardiso with MKL)")
+    if kind == "spd":
+        chol = _pardiso_cholesky(M)
+        if chol is not None:
+            return chol
     try:
         solve, negative, perturbed = pardiso.factorise(M, symmetric=kind != "general")
     except ValueError as exc:  # pypardiso refuses empty rows/columns as singular
@@ -397,3 +410,27 @@ def _pardiso(M: sp.csr_matrix, kind: str) -> Factor:
     return Factor(matrix=M, backend="pardiso", kind=kind, n=M.shape[0], inertia=negative,
                   pivot_ratio=float("nan"), is_singular=False, _solve=solve,
                   determinant_sign=None if negative is None else (-1) ** negative)
+
+
+def _pardiso_cholesky(M: sp.csr_matrix) -> Factor | None:
+    """PARDISO's Cholesky factorisation (:func:`trussfe.linalg.pardiso.cholesky`), its
+    pivots under the one singularity policy; None when a pivot is not positive (the caller
+    then takes the ``LDLᵀ``, which reports the inertia or the perturbed pivots)."""
+    try:
+        solve, pivots = pardiso.cholesky(M)
+    except pardiso.NotPositiveDefinite:
+        return None
+    except ValueError as exc:           # an empty row or column
+        return _singular(M, "pardiso", "spd", str(exc))
+    ratio, pivot = float("nan"), {}
+    if pivots is not None and pivots.size:
+        ratio = _ratio(pivots)
+        j = int(np.argmin(np.abs(pivots)))
+        pivot = {"smallest_pivot": float(abs(pivots[j]))}
+        if ratio <= SINGULAR_PIVOT:
+            a = np.abs(pivots)
+            return _singular(M, "pardiso", "spd", f"pivot {a.min():.3g} against {a.max():.3g}",
+                             ratio, **pivot)
+    return Factor(matrix=M, backend="pardiso", kind="spd", n=M.shape[0], inertia=0,
+                  pivot_ratio=ratio, is_singular=False, _solve=solve, determinant_sign=1,
+                  **pivot)

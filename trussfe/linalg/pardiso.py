@@ -11,6 +11,23 @@ had to perturb say the matrix is numerically singular.
 on this kind of machine when it walks the Python prefix).  Here the library is located once,
 in the prefix's ``lib`` directory first, and new solvers share the loaded library: nothing is
 written to the process environment.
+
+Two factorisations:
+
+* :func:`cholesky` — ``LLᵀ`` of a matrix expected positive definite (matrix type 2), with
+  the settings given explicitly (``iparm(1) = 1``: without it PARDISO ignores every other
+  setting and uses its defaults): MKL's parallel nested-dissection ordering (``iparm(2) =
+  3``, both cores for METIS), no PARDISO refinement (:class:`~trussfe.linalg.factor.Factor`
+  refines and records the residual), and the pivots returned (``iparm(56) = 1``,
+  ``pardiso_getdiag``) so that the one singularity policy of
+  :mod:`trussfe.linalg.tolerance` applies.  About twice as fast as the ``LDLᵀ`` below on a
+  195k-DOF space grid (no pivoting, no matching, a faster ordering), with a solve 5x faster.
+  A pivot that is not positive stops it: the caller then takes :func:`factorise`.
+* :func:`factorise` — Bunch–Kaufman ``LDLᵀ`` (matrix type −2) or LU (type 11) with
+  PARDISO's default settings, which reports the inertia and the pivots it had to perturb.
+
+The memory PARDISO holds for a factorisation is released when its solve function is
+garbage-collected (the factor of a 10^6-DOF grid is ~1.5 GB).
 """
 from __future__ import annotations
 
@@ -20,6 +37,7 @@ import glob
 import importlib.util
 import os
 import sys
+import weakref
 from functools import lru_cache
 
 import numpy as np
@@ -130,11 +148,12 @@ def factorise(A: sp.csr_matrix, symmetric: bool):
         M = sp.triu(A, format="csr")
         M.sort_indices()
         solver = new_solver(-2)                 # real symmetric indefinite, LDLᵀ
-        solver.set_iparm(13, 1)                 # weighted matching: fewer perturbed pivots
     else:
         M = A
         solver = new_solver(11)
-    solver.set_iparm(8, 2)                      # two steps of PARDISO's own refinement
+    # iparm(1) = 0: PARDISO's default settings (METIS ordering, Bunch–Kaufman pivoting with
+    # perturbation of pivots below 1e-8 for −2, 1e-13 for 11), which the inertia counts of
+    # trussfe.linalg.rank rely on
     solver.factorize(M)
     perturbed = int(solver.get_iparm(14))       # iparm(14), 1-based: perturbed pivots
     negative = None
@@ -143,8 +162,93 @@ def factorise(A: sp.csr_matrix, symmetric: bool):
         negative = neg if pos + neg == A.shape[0] else None
     if perturbed:
         solver.free_memory(everything=True)
+        return None, negative, perturbed
+    handle = _Handle(solver)
 
     def solve(b):
-        return solver.solve(M, b)
+        return handle.solver.solve(M, b)
 
     return solve, negative, perturbed
+
+
+class _Handle:
+    """A PARDISO solver whose internal memory is released with the handle."""
+
+    def __init__(self, solver):
+        self.solver = solver
+        weakref.finalize(self, _release, solver)
+
+
+def _release(solver) -> None:
+    try:
+        solver.free_memory(everything=True)
+    except Exception:          # interpreter shutting down, MKL already unloaded
+        pass
+
+
+def _getdiag(solver, n: int) -> np.ndarray | None:
+    """The pivots of the factorisation (``pardiso_getdiag``; needs ``iparm(56) = 1``), or
+    None when this MKL does not provide them."""
+    fn = getattr(solver.libmkl, "pardiso_getdiag", None)
+    if fn is None:
+        return None
+    df = np.zeros(n)
+    da = np.zeros(n)
+    err = ctypes.c_int32(0)
+    fn(solver.pt.ctypes.data_as(ctypes.c_void_p), df.ctypes.data_as(ctypes.c_void_p),
+       da.ctypes.data_as(ctypes.c_void_p), ctypes.byref(ctypes.c_int32(1)), ctypes.byref(err))
+    return df if err.value == 0 else None
+
+
+class NotPositiveDefinite(ValueError):
+    """PARDISO's Cholesky factorisation met a pivot that is not positive."""
+
+
+def cholesky(A: sp.csr_matrix):
+    """PARDISO ``LLᵀ`` (matrix type 2) of a symmetric matrix expected positive definite.
+
+    Returns
+    -------
+    solve : callable
+        ``solve(b)`` for ``b`` of shape (n,) or (n, k).
+    pivots : ndarray or None
+        The ``LDLᵀ`` pivots (squares of the Cholesky factor's diagonal), None when MKL does
+        not return them.
+
+    Raises
+    ------
+    NotPositiveDefinite
+        A pivot is zero or negative (PARDISO error −4): singular or indefinite.
+    ValueError
+        An empty row or column.
+    """
+    A = A.sorted_indices() if not A.has_sorted_indices else A
+    n = A.shape[0]
+    if not np.diff(A.indptr).all():
+        raise ValueError("Matrix A is singular, because it contains empty row(s)")
+    M = sp.triu(A, format="csr")
+    M.sort_indices()
+    solver = new_solver(2)
+    solver.set_iparm(1, 1)          # the settings below are used (else all defaults)
+    solver.set_iparm(2, 3)          # MKL's parallel nested dissection (METIS)
+    solver.set_iparm(8, 0)          # no PARDISO refinement: Factor.solve refines
+    solver.set_iparm(56, 1)         # keep the pivots for pardiso_getdiag
+    handle = _Handle(solver)
+    solver.set_phase(12)            # analysis and factorisation
+    try:
+        solver._call_pardiso(M, np.zeros((n, 1)))
+    except Exception as exc:        # PyPardisoError: -4 zero or negative pivot
+        code = getattr(exc, "value", None)
+        if code == -4:
+            raise NotPositiveDefinite("a pivot that is not positive") from None
+        raise
+    pivots = _getdiag(solver, n)
+
+    def solve(b):
+        b = np.asarray(b, dtype=float)
+        rhs = np.asfortranarray(b.reshape(n, -1))
+        handle.solver.set_phase(33)
+        x = handle.solver._call_pardiso(M, rhs)
+        return x.reshape(b.shape)
+
+    return solve, pivots
