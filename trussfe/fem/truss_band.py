@@ -86,6 +86,20 @@ class TrussStiffness(FreeBlock):
         return (B.multiply(B).T @ k)[self.free]
 
 
+def _width_lower_bound(ndof: np.ndarray, ends: np.ndarray, coords: np.ndarray) -> int:
+    """A lower bound on the half-bandwidth of K_ff in the free-DOF numbering ``ndof`` (node,
+    component; −1 = fixed) from one entry per bar: the (c, c) entry of the bar's block, with c
+    its largest direction component, is ``EA/L · e_c² ≠ 0``, so it is stored whenever both
+    of its DOFs are free."""
+    if ends.shape[0] == 0:
+        return 0
+    d = np.abs(coords[ends[:, 1]] - coords[ends[:, 0]])
+    c = np.argmax(d, axis=1)
+    a, b = ndof[ends[:, 0], c], ndof[ends[:, 1], c]
+    both = (a >= 0) & (b >= 0)
+    return int(np.abs(a[both] - b[both]).max()) if np.any(both) else 0
+
+
 def truss_band_layout(fe: FEModel, max_bandwidth: int) -> SummedBandLayout | None:
     """The band layout of K_ff of a plain truss from its bars, or None when the DOF order is
     not narrow (half-bandwidth above :data:`~trussfe.linalg.banded.NATURAL_BANDWIDTH_OK` or
@@ -106,6 +120,9 @@ def truss_band_layout(fe: FEModel, max_bandwidth: int) -> SummedBandLayout | Non
     new[free] = np.arange(nfree, dtype=it)
     ndof = new[fe.node_dofs[:, :dim]]                          # (node, dim), −1 = fixed
     ends = s.connectivity
+    if _width_lower_bound(ndof, ends, s.coords[:, :dim]) > min(NATURAL_BANDWIDTH_OK,
+                                                               max_bandwidth):
+        return None                 # not narrow: skip gathering the bars' blocks
     ref = reference_bar()["stiffness"]
     iu, ju = np.triu_indices(dim)
     nd = n_nodes * iu.size
