@@ -12,10 +12,11 @@ K, beside every time.  When OpenSeesPy is installed the same model is built and 
 difference is printed: member forces, not displacements, are compared, because the long chain
 is so badly conditioned that two correct solvers disagree on displacements beyond ~300 bays.
 ``speed-up`` is OpenSeesPy's total time over trussfe's, both measured in the same run;
-``peak MiB`` is the process's resident-memory high-water mark after the row
-(``resource.getrusage(RUSAGE_SELF).ru_maxrss``: it counts the memory MKL allocates for
-PARDISO, which ``tracemalloc`` does not see, and never decreases, so a row shows the largest
-model so far).
+``peak MiB`` is the process's resident-memory high-water mark during trussfe's runs of the
+model (Linux: ``VmHWM`` of ``/proc/self/status``, reset before the model by writing 5 to
+``/proc/self/clear_refs``; elsewhere ``resource.getrusage(RUSAGE_SELF).ru_maxrss``, which
+never decreases).  Resident memory counts what MKL allocates for PARDISO, which
+``tracemalloc`` does not see; it includes the Python process and the model itself.
 
 Usage::
 
@@ -30,6 +31,7 @@ Targets (2-core machine): 10,000 bays read + assemble + solve ≤ 0.5 s and ≥ 
 from __future__ import annotations
 
 import argparse
+import ctypes
 import os
 import resource
 import sys
@@ -100,6 +102,38 @@ def time_trussfe(structure, folder: Path) -> dict:
             "forces": res.axial_force, "dof": int(free.size)}
 
 
+def reset_peak_memory() -> bool:
+    """Reset the resident-memory high-water mark (Linux ``clear_refs``); False elsewhere.
+
+    The heap the earlier models left (the allocator tuning keeps freed memory) is first
+    given back to the system (glibc ``malloc_trim``), so that it does not count for the
+    next model."""
+    try:
+        ctypes.CDLL("libc.so.6").malloc_trim(0)
+    except (OSError, AttributeError):
+        pass
+    try:
+        with open("/proc/self/clear_refs", "w") as fh:
+            fh.write("5")
+        return True
+    except OSError:
+        return False
+
+
+def peak_memory_mib(reset: bool) -> float:
+    """Resident-memory high-water mark in MiB: ``VmHWM`` since :func:`reset_peak_memory`
+    when it worked, else ``ru_maxrss`` of the whole process."""
+    if reset:
+        try:
+            with open("/proc/self/status") as fh:
+                for line in fh:
+                    if line.startswith("VmHWM:"):
+                        return int(line.split()[1]) / 1024          # kB
+        except OSError:
+            pass
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024  # KiB on Linux
+
+
 def time_opensees(structure) -> dict | None:
     try:
         import openseespy.opensees as ops
@@ -155,12 +189,14 @@ def main() -> None:
     for name, build in cases:
         s = build()
         runs = []
+        reset = reset_peak_memory()
         for _ in range(repeat):
             # thread counts and TOML parser as the trussfe command sets them
             with tempfile.TemporaryDirectory() as tmp, compiled_parser(), \
                     compute_threads(workers=environment_workers(), blas=1):
                 runs.append(time_trussfe(s, Path(tmp)))
         r = min(runs, key=lambda x: x["total"])
+        peak = peak_memory_mib(reset)
         o = None
         if not (args.no_opensees or r["dof"] > 400_000):
             peers = [time_opensees(s) for _ in range(repeat)]
@@ -170,13 +206,13 @@ def main() -> None:
         dn = (f"{np.max(np.abs(o['forces'] - r['forces'])):12.2e}" if o and o["ok"]
               else f"{'–':>12}")
         ratio = (f"{o['total'] / r['total']:8.1f}×" if o and o["ok"] else f"{'–':>9}")
-        peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024   # KiB on Linux
         print(f"{name:<20}{r['dof']:>9}{r['read']:9.3f}{r['assemble']:11.3f}{r['solve']:9.3f}"
               f"{r['total']:9.3f}{r['cpu']:8.2f}{r['residual']:10.1e}{r['backend']:>10}{ops_t}"
               f"{ratio}{dn}{peak:10.0f}", flush=True)
     print(f"\nmachine: {os.cpu_count()} cores; OpenSeesPy timed as model build + analyze(1); "
           "cpu = process time of read + assemble + solve; backend = the solver 'auto' picks; "
-          "speed-up = OpenSees s / total s; peak MiB = ru_maxrss of this process so far; "
+          "speed-up = OpenSees s / total s; peak MiB = resident high-water mark of trussfe's "
+          f"runs of the model ({'VmHWM' if reset_peak_memory() else 'ru_maxrss'}); "
           f"fastest of {repeat} run(s) of each program.")
 
 
