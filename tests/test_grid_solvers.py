@@ -1,9 +1,9 @@
-"""Direct solvers of indeterminate space grids: PARDISO's Cholesky against SuperLU and
-OpenSeesPy, its singularity policy, and the automatic choice between the banded and the
-general sparse factorisation (trussfe.linalg.factor).
+"""Direct solvers of indeterminate space grids: PARDISO's Cholesky against SuperLU, its
+singularity policy, and the automatic choice between the banded and the general sparse
+factorisation (trussfe.linalg.factor).
 
-References: SuperLU's LU (an independent factorisation) and OpenSeesPy (an independent FE
-program, ``Truss`` elements) for the grid; closed forms for the small matrices (a diagonal
+References: SuperLU's LU (an independent factorisation) for the grid (the member forces of
+the large grids against OpenSeesPy are in ``benchmarks/bench_static.py``); closed forms for the small matrices (a diagonal
 matrix, a matrix of rank one); the bandwidth bound is checked against reverse Cuthill–McKee,
 which any bound must not exceed.  Every ``solve_static`` here is checked for global
 equilibrium by ``tests/conftest.py``.
@@ -77,37 +77,6 @@ def test_pardiso_cholesky_grid_equals_superlu():
     assert_allclose(chol.u, lu.u, rtol=0, atol=1e-9 * np.abs(lu.u).max())
     N = np.abs(lu.axial_force).max()
     assert_allclose(chol.axial_force, lu.axial_force, rtol=0, atol=1e-9 * N)
-
-
-@needs_pardiso
-def test_pardiso_cholesky_grid_member_forces_match_opensees():
-    """Member forces of the 8 × 8 grid from PARDISO's Cholesky equal OpenSeesPy's (Truss
-    elements, UmfPack) to 1e-8 of the largest force."""
-    ops = pytest.importorskip("openseespy.opensees")
-    s = space_grid(8)
-    res = solve_static(s, "truss", backend="pardiso", self_weight=False)
-    ops.wipe()
-    ops.model("basic", "-ndm", 3, "-ndf", 3)
-    for i, x in enumerate(s.coords):
-        ops.node(i + 1, *map(float, x))
-    for i in np.flatnonzero(s.supports[:, :3].any(axis=1)):
-        ops.fix(int(i) + 1, 1, 1, 1)
-    ops.uniaxialMaterial("Elastic", 1, ALUMINIUM.E)
-    for e, (a, b) in enumerate(s.connectivity):
-        ops.element("Truss", e + 1, int(a) + 1, int(b) + 1, TUBE.area, 1)
-    ops.timeSeries("Linear", 1)
-    ops.pattern("Plain", 1, 1)
-    for i in np.flatnonzero(np.any(s.loads[:, :3] != 0, axis=1)):
-        ops.load(int(i) + 1, *map(float, s.loads[i, :3]))
-    for cmd, arg in (("system", "UmfPack"), ("numberer", "RCM"), ("constraints", "Plain"),
-                     ("algorithm", "Linear")):
-        getattr(ops, cmd)(arg)
-    ops.integrator("LoadControl", 1.0)
-    ops.analysis("Static")
-    assert ops.analyze(1) == 0
-    ref = np.array([ops.basicForce(e + 1)[0] for e in range(s.n_members)])
-    ops.wipe()
-    assert_allclose(res.axial_force, ref, rtol=0, atol=1e-8 * np.abs(ref).max())
 
 
 @needs_pardiso

@@ -20,9 +20,11 @@ Two factorisations:
   3``, both cores for METIS), no PARDISO refinement (:class:`~trussfe.linalg.factor.Factor`
   refines and records the residual), and the pivots returned (``iparm(56) = 1``,
   ``pardiso_getdiag``) so that the one singularity policy of
-  :mod:`trussfe.linalg.tolerance` applies.  About twice as fast as the ``LDLᵀ`` below on a
-  195k-DOF space grid (no pivoting, no matching, a faster ordering), with a solve 5x faster.
-  A pivot that is not positive stops it: the caller then takes :func:`factorise`.
+  :mod:`trussfe.linalg.tolerance` applies.  On a 195k-DOF space grid it factorises in
+  about the time of the ``LDLᵀ`` below (0.9 s in a quiet minute: ordering 0.57 s, numerical
+  factorisation 0.35 s; 22.6 million entries in L, 8 GFlop), and its solves take 0.025 s
+  against 0.13 s.  A pivot that is not positive stops it: the caller then takes
+  :func:`factorise`.
 * :func:`factorise` — Bunch–Kaufman ``LDLᵀ`` (matrix type −2) or LU (type 11) with
   PARDISO's default settings, which reports the inertia and the pivots it had to perturb.
 

@@ -5,9 +5,10 @@ One rule for all backends: a factorisation is singular when a pivot is zero or n
 or when the smallest pivot in magnitude is at most :data:`SINGULAR_PIVOT` times the largest.
 "Pivot" means the diagonal of ``D`` in ``P A Pᵀ = L D Lᵀ``, the diagonal of ``U`` in
 ``P A Q = L U``, and the *square* of the diagonal of a Cholesky factor (the Cholesky factor
-holds square roots of the ``LDLᵀ`` pivots).  PARDISO does not return its pivots; it replaces
-a pivot below its own threshold by a perturbed one and reports how many it replaced, and a
-perturbed pivot counts as singular.
+holds square roots of the ``LDLᵀ`` pivots; PARDISO's Cholesky returns the ``LDLᵀ`` pivots
+themselves).  PARDISO's ``LDLᵀ`` does not return its pivots; it replaces a pivot below its own
+threshold by a perturbed one and reports how many it replaced, and a perturbed pivot counts
+as singular.
 """
 from __future__ import annotations
 
