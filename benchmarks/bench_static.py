@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import argparse
 import ctypes
+import gc
 import os
 import resource
 import sys
@@ -187,6 +188,8 @@ def main() -> None:
     print(head)
     print("-" * len(head))
     for name, build in cases:
+        s = runs = r = o = None          # the previous model's memory goes before the next
+        gc.collect()
         s = build()
         runs = []
         reset = reset_peak_memory()
