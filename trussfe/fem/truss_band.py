@@ -86,13 +86,21 @@ class TrussStiffness(FreeBlock):
         return (B.multiply(B).T @ k)[self.free]
 
 
+#: Bars looked at by :func:`_width_lower_bound` (evenly spread): enough to meet the wide
+#: bars of a lattice, few enough to cost nothing on a chain that passes (0.1 ms instead of
+#: 6 ms for all 180,000 bars of 10,000 bays).
+WIDTH_SAMPLE = 4096
+
+
 def _width_lower_bound(ndof: np.ndarray, ends: np.ndarray, coords: np.ndarray) -> int:
     """A lower bound on the half-bandwidth of K_ff in the free-DOF numbering ``ndof`` (node,
-    component; −1 = fixed) from one entry per bar: the (c, c) entry of the bar's block, with c
-    its largest direction component, is ``EA/L · e_c² ≠ 0``, so it is stored whenever both
-    of its DOFs are free."""
+    component; −1 = fixed) from one entry of each of :data:`WIDTH_SAMPLE` bars spread over
+    the model: the (c, c) entry of a bar's block, with c its largest direction component, is
+    ``EA/L · e_c² ≠ 0``, so it is stored whenever both of its DOFs are free (any subset of
+    the entries bounds the largest from below)."""
     if ends.shape[0] == 0:
         return 0
+    ends = ends[:: max(1, ends.shape[0] // WIDTH_SAMPLE)]
     d = np.abs(coords[ends[:, 1]] - coords[ends[:, 0]])
     c = np.argmax(d, axis=1)
     a, b = ndof[ends[:, 0], c], ndof[ends[:, 1], c]
