@@ -140,3 +140,23 @@ def test_auto_rule_bands_a_long_chain_and_not_a_grid():
     assert fac.backend == ("pardiso" if pardiso_available() else "superlu")
     if fac.backend == "pardiso":
         assert fac.inertia == 0 and np.isfinite(fac.pivot_ratio)
+
+
+def test_truss_width_bound_below_the_band_and_above_it_for_a_grid():
+    """The truss band path's bound from sampled bars (trussfe.fem.truss_band) never exceeds
+    the half-bandwidth of the layout it then builds for a 300-bay chain, and exceeds the
+    32 of a kept DOF order for a 20 × 20 grid, whose band path gives up (None)."""
+    from trussfe.fem.truss_band import _width_lower_bound, truss_band_layout
+
+    def bound(structure):
+        fe = discretise(structure, "truss")
+        new = np.full(fe.n_dof, -1)
+        new[fe.free] = np.arange(fe.free.size)
+        ndof = new[fe.node_dofs[:, :3]]
+        return _width_lower_bound(ndof, structure.connectivity, structure.coords[:, :3]), fe
+
+    b, fe = bound(double_octahedral_chain(300))
+    layout = truss_band_layout(fe, BANDED_MAX_BANDWIDTH)
+    assert layout is not None and 0 < b <= layout.bandwidth
+    b, fe = bound(space_grid(20))
+    assert b > 32 and truss_band_layout(fe, BANDED_MAX_BANDWIDTH) is None
