@@ -130,15 +130,18 @@ def bandwidth_lower_bound(A: sp.spmatrix) -> int:
 
 
 def _finish(n: int, row: np.ndarray, col: np.ndarray, data: np.ndarray, max_bandwidth: int,
-            anchored: np.ndarray | None, matrix=None) -> BandLayout | None:
+            anchored: np.ndarray | None, matrix=None, bounded: bool = False
+            ) -> BandLayout | None:
     """Choose the ordering for entries given in the original numbering (see
     :func:`band_layout`); ``matrix`` (a callable returning the CSR matrix) is needed only when
-    reverse Cuthill–McKee is tried."""
+    reverse Cuthill–McKee is tried; ``bounded``: :func:`bandwidth_lower_bound` already
+    allowed ``max_bandwidth``."""
     bw = int(np.max(row - col)) if row.size else 0        # symmetric: max(i − j) = max|i − j|
     perm = None
     if bw > NATURAL_BANDWIDTH_OK:
         A = matrix()
-        if max_bandwidth is not None and bandwidth_lower_bound(A) > max_bandwidth:
+        if (max_bandwidth is not None and not bounded
+                and bandwidth_lower_bound(A) > max_bandwidth):
             return None                 # no ordering is narrow enough: skip the reordering
         rcm = reverse_cuthill_mckee(A, symmetric_mode=True).astype(np.int64)
         inv = np.empty(n, dtype=row.dtype)
@@ -217,6 +220,14 @@ def band_layout_free(K: sp.csr_matrix, free: np.ndarray,
     it = K.indices.dtype
     new = np.full(N, -1, dtype=it)
     new[free] = np.arange(n, dtype=it)
+    matrix = (lambda: free_submatrix(K, free)) if submatrix is None else submatrix
+    bounded = False
+    if max_bandwidth is not None and _sampled_width(K, free, new) > NATURAL_BANDWIDTH_OK:
+        # the given order is not kept (a few rows are already wider), so only a reordering
+        # could give a band: ask the bound first, before laying out every entry
+        if bandwidth_lower_bound(matrix()) > max_bandwidth:
+            return None
+        bounded = True
     row = np.repeat(new, np.diff(K.indptr))
     col = new[K.indices]
     free_row = row >= 0
@@ -224,12 +235,30 @@ def band_layout_free(K: sp.csr_matrix, free: np.ndarray,
     anchored = np.zeros(n, dtype=bool)
     anchored[row[free_row & ~keep]] = True
     row, col, data = row[keep], col[keep], K.data[keep]
+    return _finish(n, row, col, data, max_bandwidth, anchored, matrix=matrix,
+                   bounded=bounded)
 
-    def matrix():
-        return free_submatrix(K, free)
 
-    return _finish(n, row, col, data, max_bandwidth, anchored,
-                   matrix=matrix if submatrix is None else submatrix)
+#: Rows looked at by :func:`_sampled_width` (evenly spread over the free rows).
+WIDTH_SAMPLE_ROWS = 4096
+
+
+def _sampled_width(K: sp.csr_matrix, free: np.ndarray, new: np.ndarray) -> int:
+    """The largest ``|new[i] − new[j]|`` over the stored entries between free DOFs of
+    :data:`WIDTH_SAMPLE_ROWS` rows spread over ``free``: a lower bound on the half-bandwidth
+    of ``K[free][:, free]`` in its given order (any subset of the entries bounds the
+    largest from below), for the cost of those rows."""
+    rows = free[:: max(1, free.size // WIDTH_SAMPLE_ROWS)]
+    if rows.size == 0:
+        return 0
+    start, stop = K.indptr[rows], K.indptr[rows + 1]
+    counts = stop - start
+    # positions of the sampled rows' entries in K.indices, row by row
+    pos = np.repeat(start - np.cumsum(counts) + counts, counts) + np.arange(counts.sum())
+    j = new[K.indices[pos]]
+    i = np.repeat(new[rows], counts)
+    ok = j >= 0
+    return int(np.abs(i[ok] - j[ok]).max()) if np.any(ok) else 0
 
 
 class SummedBandLayout(BandLayout):
