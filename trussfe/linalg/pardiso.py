@@ -209,7 +209,8 @@ class NotPositiveDefinite(ValueError):
 def _upper(A: sp.csr_matrix):
     """The upper triangle of a CSR matrix with sorted indices as zero-based int32 CSR arrays
     (``indptr``, ``indices``, ``data``), in one vectorised pass (scipy's ``triu`` goes through
-    COO and back: 0.3 s against 0.06 s for the 14 million entries of a 10^6-DOF grid)."""
+    COO and back: with pypardiso's one-based copies 0.13 s against 0.09 s for the 14 million
+    entries of a 10^6-DOF grid, and pypardiso copies the indices again at every solve)."""
     n = A.shape[0]
     counts = np.diff(A.indptr)
     row = np.repeat(np.arange(n, dtype=A.indices.dtype), counts)
