@@ -21,7 +21,7 @@ from ..errors import AnalysisError, InputError
 from ..mechanics.conventions import PHYSICAL, Conventions
 from ..model.structure import Structure
 from .active import active_members
-from .bays import METHODS, bay_by_bay_forces, bay_by_bay_kinematics, chain_layout
+from .bays import METHODS, bay_by_bay_positions, chain_layout, is_chain
 from .buckling import BucklingCheck, buckling_check
 from .forces import (MemberBodies, NodalForces, forces_from_tensions, member_bodies,
                      nodal_forces_with_static, pair_loads)
@@ -136,7 +136,7 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
              conventions: Conventions = PHYSICAL, n_sections: int = 7,
              effective_length_factor: np.ndarray | float = 1.0, actuators: bool = True,
              progress: Callable[[int, int], None] | None = None,
-             method: str = "direct") -> SimulationResult:
+             method: str = "auto") -> SimulationResult:
     """Rigid-body dynamic force analysis of a truss along a motion (Lacy chapters 2–4).
 
     Parameters
@@ -160,11 +160,18 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
         Called as ``progress(done, total)``: over the steps while the positions are solved
         one after the other, then over the blocks of steps whose forces are computed (from
         worker threads, one call at a time).
-    method : {"direct", "bay-by-bay"}
-        ``"direct"``: the whole truss at once.  ``"bay-by-bay"``: a chain of identical bays
-        analysed as Lacy's chapter 6 describes (:mod:`trussfe.rigid.bays`): kinematics of
-        each bay in its base frame carried up the chain (eqs. 6.1–6.13), forces from the top
-        bay down with the reactions passed on (§6.2); exact kinematics only.
+    method : {"auto", "direct", "bay-by-bay"}
+        How the positions are found.  ``"direct"``: Newton's method on the whole truss.
+        ``"bay-by-bay"``: a chain of identical bays as Lacy's chapter 6 describes
+        (:mod:`trussfe.rigid.bays`): each bay alone in the frame of its base plane, carried
+        up the chain (eqs. 6.1–6.3); exact kinematics only.  ``"auto"`` (default):
+        ``"bay-by-bay"`` for a chain of two or more identical bays with the exact scheme
+        (:func:`~trussfe.rigid.bays.is_chain`), else ``"direct"``; ``options["method"]``
+        of the result says which one ran.  Velocities, accelerations and forces are the
+        same block substitutions for both: the compatibility matrix of a chain is block
+        triangular with one 9 × 9 block per plane, so ``B v = L̇`` runs up the chain and
+        ``Bᵀ t = f`` down it, each bay's base reactions passed to the bay below (§6.2), in
+        O(n) per step, batched over the steps.
 
     Returns
     -------
@@ -182,6 +189,8 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
     scheme = conventions.kinematics
     if method not in METHODS:
         raise InputError("--method", f"unknown method {method!r}; valid: {', '.join(METHODS)}")
+    if method == "auto":
+        method = "bay-by-bay" if scheme == "exact" and is_chain(structure) else "direct"
     if method == "bay-by-bay" and scheme != "exact":
         raise InputError("--method", "bay-by-bay uses the exact kinematics of every bay; it "
                          "cannot be combined with --scheme thesis")
@@ -204,12 +213,12 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
             "time step")
     step = max(1, CHUNK_ENTRIES // max(m, 1))
     if method == "bay-by-bay":
-        layout = chain_layout(structure)
-        kin = bay_by_bay_kinematics(structure, motion, layout)
-        (kin, f, fs, sf, ss, st, sts, mid, act_force, act_static, cmoment) = _steps(
-            structure, kin, bodies, act_idx,
-            forces=bay_by_bay_forces(structure, kin, bodies, layout), **opts)
-    elif scheme == "exact" and nt > step:
+        X = bay_by_bay_positions(structure, motion, chain_layout(structure))
+    elif nt > 1:
+        X = solve_motion_positions(structure, motion, progress=progress)
+    else:
+        X = None
+    if scheme == "exact" and nt > step:
         # Positions for the whole motion (warm starts link the steps), then the forces one
         # block of steps at a time: the exact kinematics are independent per step, and blocks
         # that fit in the processor cache are several times faster than whole-motion arrays
@@ -217,7 +226,6 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
         # kinematics are solved for the whole motion at once — a solve costs a Python loop
         # over the diagonal blocks, which is paid once instead of once per block of steps —
         # and the blocks use slices of it.
-        X = solve_motion_positions(structure, motion, progress=progress)
         starts = range(0, nt, step)
         bar = _Counter(progress, len(starts)) if progress is not None else None
         pattern = _Pattern(structure)
@@ -261,7 +269,6 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
             kin, f, fs, sf, ss, st, sts, mid, act_force, act_static, cmoment = (
                 _concat([p[i] for p in parts]) for i in range(len(parts[0])))
     else:
-        X = solve_motion_positions(structure, motion, progress=progress) if nt > 1 else None
         (kin, f, fs, sf, ss, st, sts, mid, act_force, act_static,
          cmoment) = _steps(structure, compute_kinematics(structure, motion, scheme=scheme,
                                                          coords=X),
