@@ -244,17 +244,18 @@ def bay_by_bay_positions(structure: Structure, motion: Motion, layout: ChainLayo
     """Node positions of the chain found bay by bay (Lacy eqs. 6.1–6.3): each bay alone in
     the frame of its base plane, all bays and steps at once, carried up the chain; in the
     model's node numbering, (nt, n, 3)."""
-    L, _, _ = bay_lengths(structure, layout, motion)
-    Xc = chain_positions(layout.template, L, next_base=layout.next_base)
+    L, Ld, _ = bay_lengths(structure, layout, motion)
+    Xc = chain_positions(layout.template, L, next_base=layout.next_base, rates=Ld,
+                         time=motion.time)
     X = np.zeros((motion.n_steps, structure.n_nodes, 3))
     X[:, layout.stacked_nodes()] = Xc
     return X
 
 
-def is_chain(structure: Structure, min_bays: int = 2) -> bool:
-    """Whether the model is a chain of at least ``min_bays`` identical bays
-    (:func:`chain_layout`), the rule of ``simulate``'s automatic method."""
+def chain_layout_or_none(structure: Structure) -> ChainLayout | None:
+    """:func:`chain_layout`, or ``None`` when the model is not a chain of identical bays
+    (``simulate``'s automatic method runs bay by bay when it finds two or more)."""
     try:
-        return chain_layout(structure).n_bays >= min_bays
+        return chain_layout(structure)
     except InputError:
-        return False
+        return None

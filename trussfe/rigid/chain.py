@@ -247,17 +247,25 @@ def _batched_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, *,
 #: Chord iterations between refactorisations of the bay positions' Newton solve.
 REFACTOR_EVERY = 4
 
-#: Steps of the coarse continuation that gives every bay-local Newton solve its guess.
+#: Steps of the coarse continuation that gives every bay-local Newton solve its guess: at
+#: most COARSE_STEPS, about one per COARSE_SPACING steps of the motion.
 COARSE_STEPS = 20
+COARSE_SPACING = 50
 
 
-def bay_positions(bay: Structure, L: np.ndarray, item: str = "bay") -> np.ndarray:
+def bay_positions(bay: Structure, L: np.ndarray, item: str = "bay",
+                  rates: np.ndarray | None = None, time: np.ndarray | None = None
+                  ) -> np.ndarray:
     """Node positions of the bay alone (base fixed) for member lengths ``L`` (nb, nt, m):
     ``nb`` independent histories of one bay, every bay and step solved together.
 
     The positions follow each history by continuation: Newton's method on a coarse subset
-    of :data:`COARSE_STEPS` steps, each from the previous one (all histories at once), then
-    on every step from the positions interpolated between those (:func:`_batched_positions`).
+    of steps (:data:`COARSE_STEPS`, :data:`COARSE_SPACING`), each from the previous one (all
+    histories at once), then
+    on every step from the positions interpolated between those (:func:`_batched_positions`):
+    cubic Hermite interpolation with the node velocities ``B ṗ = L̇`` at the coarse steps when
+    the length ``rates`` (nb, nt, m) and the ``time`` (nt,) are given (a guess closer by
+    orders of magnitude, so fewer Newton sweeps over all steps), else linear in the step.
     A history whose steps do not all converge near their guess is solved again one step after
     the other, warm-started (the robust fallback).
 
@@ -268,19 +276,44 @@ def bay_positions(bay: Structure, L: np.ndarray, item: str = "bay") -> np.ndarra
     nb, nt, m = L.shape
     n = bay.n_nodes
     x0 = np.asarray(bay.coords, dtype=float)
-    idx = np.unique(np.linspace(0, nt - 1, min(COARSE_STEPS, nt)).round().astype(np.int64))
+    # about one coarse step per COARSE_SPACING steps, at most COARSE_STEPS of them
+    n_coarse = min(COARSE_STEPS, nt, max(2, 1 + nt // COARSE_SPACING))
+    idx = np.unique(np.linspace(0, nt - 1, n_coarse).round().astype(np.int64))
     coarse = np.empty((nb, idx.size, n, 3))
     ok = np.ones(nb, dtype=bool)
     x = x0
+    hermite = rates is not None and time is not None and idx.size > 1
+    if hermite:
+        from .kinematics import _Pattern
+        from .linalg import CompatSolver, SingularStep
+        pattern = _Pattern(bay)
+        vel = np.zeros((nb, idx.size, n * 3))
     for j, k in enumerate(idx):
         x, good = _batched_positions(bay, L[:, k], x)
         ok &= good
         coarse[:, j] = x
+        if hermite:
+            e, _ = unit_vectors(member_vectors(x, bay.connectivity))
+            try:
+                solver = CompatSolver(pattern.rows, pattern.cols, pattern.values(e),
+                                      pattern.m)
+                vel[:, j, pattern.free_flat] = solver.solve(rates[:, k, pattern.loaded_idx])
+            except SingularStep:
+                hermite = False
     if idx.size > 1:
-        # linear interpolation in the step index between the coarse steps
+        # interpolation between the coarse steps
         seg = np.clip(np.searchsorted(idx, np.arange(nt), side="right") - 1, 0, idx.size - 2)
-        w = ((np.arange(nt) - idx[seg]) / (idx[seg + 1] - idx[seg]))[None, :, None, None]
-        guess = coarse[:, seg] * (1.0 - w) + coarse[:, seg + 1] * w
+        if hermite:
+            t0, t1 = time[idx[seg]], time[idx[seg + 1]]
+            h = (t1 - t0)[None, :, None, None]
+            s = ((time - t0) / (t1 - t0))[None, :, None, None]
+            v = vel.reshape(nb, idx.size, n, 3)
+            guess = ((2 * s - 3) * s * s + 1) * coarse[:, seg] \
+                + ((s - 2) * s + 1) * s * h * v[:, seg] \
+                + (3 - 2 * s) * s * s * coarse[:, seg + 1] + (s - 1) * s * s * h * v[:, seg + 1]
+        else:
+            w = ((np.arange(nt) - idx[seg]) / (idx[seg + 1] - idx[seg]))[None, :, None, None]
+            guess = coarse[:, seg] * (1.0 - w) + coarse[:, seg + 1] * w
     else:
         guess = coarse
     X, good = _batched_positions(bay, L.reshape(nb * nt, m), guess.reshape(nb * nt, n, 3))
@@ -292,7 +325,9 @@ def bay_positions(bay: Structure, L: np.ndarray, item: str = "bay") -> np.ndarra
 
 
 def chain_positions(bay: Structure, lengths: np.ndarray,
-                    next_base: tuple[int, int, int] = TOP_AS_NEXT_BASE) -> np.ndarray:
+                    next_base: tuple[int, int, int] = TOP_AS_NEXT_BASE,
+                    rates: np.ndarray | None = None, time: np.ndarray | None = None
+                    ) -> np.ndarray:
     """Node positions of a stacked chain, bay by bay in bay-fixed frames (Lacy eqs. 6.1–6.3).
 
     Every bay's positions in the frame of its base plane (:func:`bay_positions`, all bays
@@ -307,6 +342,11 @@ def chain_positions(bay: Structure, lengths: np.ndarray,
         Active lengths of every bay (the bay's active-member order).
     next_base : tuple of int
         Template nodes that are the next bay's base nodes 0, 1, 2.
+    rates : ndarray, shape (nt, n_bays, n_active), optional
+        The active lengths' rates, and
+    time : ndarray, shape (nt,), optional
+        the sample times: with both, the guesses of the position solve are cubic Hermite
+        interpolants (:func:`bay_positions`).
 
     Returns
     -------
@@ -315,7 +355,13 @@ def chain_positions(bay: Structure, lengths: np.ndarray,
     """
     nt, nb, _ = lengths.shape
     Lall = _all_lengths(bay, lengths.reshape(nt * nb, -1)).reshape(nt, nb, -1)
-    P = bay_positions(bay, Lall.transpose(1, 0, 2), item="bay")       # (nb, nt, 9, 3)
+    Ldall = None
+    if rates is not None:
+        acts = np.array([a.member for a in active_members(bay)], dtype=np.int64)
+        Ldall = np.zeros((nb, nt, bay.n_members))
+        Ldall[:, :, acts] = rates.transpose(1, 0, 2)
+    P = bay_positions(bay, Lall.transpose(1, 0, 2), item="bay", rates=Ldall,
+                      time=time)                                       # (nb, nt, 9, 3)
     o_b, R_b = triangle_frame(bay.coords[:3])
     P = (P[:, :, 3:] - o_b) @ R_b                       # own nodes in the template's frame
     X = np.empty((nt, 3 + 6 * nb, 3))
