@@ -194,7 +194,8 @@ def _sequential_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, item: s
 
 
 def _batched_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, *,
-                       tolerance: float = 1e-12, iterations: int = 30
+                       tolerance: float = 1e-12, iterations: int = 30,
+                       anchors: np.ndarray | None = None, owner: np.ndarray | None = None
                        ) -> tuple[np.ndarray, np.ndarray]:
     """Newton's method on the bar-length equations of every step at once, from ``x0``
     (one guess (n, 3) for all steps, or one per step (N, n, 3)).
@@ -202,8 +203,11 @@ def _batched_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, *,
     The compatibility matrix of every step is factorised (stacked inverses of its diagonal
     blocks, :class:`~trussfe.rigid.linalg.CompatSolver`) at the guess and every
     :data:`REFACTOR_EVERY` iterations, and ``B Δx = L − |d|`` is solved for all steps
-    together (a chord iteration).  Returns the positions and a per-step flag:
-    converged, and within a tenth of the bay's size of ``x0``.
+    together (a chord iteration).  With ``anchors`` (step indices) and ``owner`` (the
+    anchor of every step, indices into ``anchors``), only the anchors' matrices are
+    factorised and every step uses its anchor's (close guesses of a smooth motion: the
+    chord still contracts fast, for a fraction of the factorisations).  Returns the
+    positions and a per-step flag: converged, and within a tenth of the bay's size of ``x0``.
     """
     from .kinematics import _Pattern
     from .linalg import CompatSolver, SingularStep
@@ -229,12 +233,17 @@ def _batched_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, *,
         # REFACTOR_EVERY iterations; from a close guess the chord contracts to round-off in
         # a few cheap sweeps, where full Newton would factorise every step every time.
         if it % REFACTOR_EVERY == 0:
+            e = d / dn[..., None]
             try:
-                solver = CompatSolver(pattern.rows, pattern.cols,
-                                      pattern.values(d / dn[..., None]), pattern.m)
+                solver = CompatSolver(pattern.rows, pattern.cols, pattern.values(
+                    e if anchors is None else e[anchors]), pattern.m)
             except SingularStep:
                 return X, bad
-        dx = solver.solve(-r)
+            if anchors is not None and not solver.direct:
+                anchors = owner = None              # anchored only with stacked inverses
+                solver = CompatSolver(pattern.rows, pattern.cols, pattern.values(e),
+                                      pattern.m)
+        dx = solver.solve(-r, steps=owner)
         if not np.all(np.isfinite(dx)):
             return X, bad
         flat[:, pattern.free_flat] += dx
@@ -246,6 +255,8 @@ def _batched_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, *,
 
 #: Chord iterations between refactorisations of the bay positions' Newton solve.
 REFACTOR_EVERY = 4
+#: Steps per chord Jacobian of the bay positions' Newton solve over all steps.
+ANCHOR_SPACING = 8
 
 #: Steps of the coarse continuation that gives every bay-local Newton solve its guess: at
 #: most COARSE_STEPS, about one per COARSE_SPACING steps of the motion.
@@ -316,7 +327,13 @@ def bay_positions(bay: Structure, L: np.ndarray, item: str = "bay",
             guess = coarse[:, seg] * (1.0 - w) + coarse[:, seg + 1] * w
     else:
         guess = coarse
-    X, good = _batched_positions(bay, L.reshape(nb * nt, m), guess.reshape(nb * nt, n, 3))
+    # the chord Jacobians: every ANCHOR_SPACING-th step of each history, the nearest for all
+    at = np.unique(np.r_[np.arange(0, nt, ANCHOR_SPACING), nt - 1])
+    near = np.searchsorted((at[1:] + at[:-1]) / 2.0, np.arange(nt))
+    X, good = _batched_positions(
+        bay, L.reshape(nb * nt, m), guess.reshape(nb * nt, n, 3),
+        anchors=(np.arange(nb)[:, None] * nt + at).ravel(),
+        owner=(np.arange(nb)[:, None] * at.size + near).ravel())
     X = X.reshape(nb, nt, n, 3)
     ok &= good.reshape(nb, nt).all(axis=1)
     for k in np.flatnonzero(~ok):
