@@ -1,12 +1,26 @@
 # SPDX-License-Identifier: MIT
 """Lacy's chapter 6 applied to a model file: a chain of identical bays analysed bay by bay.
 
-``trussfe simulate --method bay-by-bay`` analyses a chain the way Lacy (1991) §6.1–6.2
-describes it: the kinematics of each bay alone in a frame attached to its base plane, carried
-up the chain (:func:`trussfe.rigid.chain.chain_kinematics`, eqs. 6.1–6.13), then the forces
-bay by bay from the top down, each bay's base reactions applied, reversed, to the top-plane
-nodes of the bay below (§6.2).  The direct analysis (``--method direct``) solves the whole
-chain as one truss; both give the same results to round-off, which the validation case
+``trussfe simulate --method bay-by-bay`` (and the default ``--method auto`` on a chain of two
+or more bays) analyses a chain the way Lacy (1991) §6.1–6.2 describes it, in O(n) per time
+step and batched over the steps:
+
+* **positions** of each bay alone in a frame attached to its base plane — every bay and step
+  in one batched Newton iteration from guesses interpolated along the motion
+  (:func:`trussfe.rigid.chain.bay_positions`) — carried up the chain, ``x = o_n + R_n p``
+  (:func:`trussfe.rigid.chain.chain_positions`, eqs. 6.1–6.3);
+* **velocities and accelerations** up the chain and **forces** down it.  The compatibility
+  matrix B of a chain is block lower triangular with one 9 × 9 block per plane (a bay's
+  midplane, then its top plane: the nodes each bay's own members fix once the plane below
+  is known), so ``B v = L̇`` is a forward block substitution from the ground up, and
+  ``Bᵀ t = f`` a backward one from the top bay down, in which each bay's member forces at
+  its base nodes — its base reactions, reversed — enter the equations of the bay below
+  (§6.2).  Both are the stacked 9 × 9 inverses of :class:`~trussfe.rigid.linalg.CompatSolver`
+  applied to all steps at once; the loop runs over the bays, never over the steps.
+
+The direct analysis (``--method direct``) differs only in the positions: Newton's method on
+the whole truss to a tolerance on the whole chain (on a 1,000-bay chain it stops at a misfit
+of 1e-8 m, measured); both give the same results to round-off, which the validation case
 ``rigid-chain-bay-by-bay`` checks on chains of 1 to 50 bays.
 
 **Which models are chains** (:func:`chain_layout`).  The supported nodes are the ground

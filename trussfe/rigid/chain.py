@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: MIT
-"""Multi-bay chains analysed bay by bay (Lacy chapter 6), as a cross-check of the direct analysis.
+"""Multi-bay chains analysed bay by bay (Lacy chapter 6): the positions of ``simulate``'s
+bay-by-bay method (:func:`chain_positions`) and the chapter's frames, rates and forces.
 
 Lacy describes, but never implemented, the kinematics of a chain of double-octahedral bays in
 bay-fixed frames: bay n's base plane is bay n−1's top plane, so each bay is solved alone in a
@@ -27,7 +28,9 @@ difference can be shown.
 
 Bay-local kinematics (:func:`bay_kinematics`) use the forward-position solver and the
 compatibility matrix of the bay: ``B ṗ = L̇``, ``B p̈ = L̈ − (|ṗ_b − ṗ_a|² − L̇²)/L``
-(the bar-length condition differentiated twice), exact, batched over time steps.
+(the bar-length condition differentiated twice), exact, batched over time steps.  The
+positions of all bays and steps are found together (:func:`bay_positions`: continuation on
+coarse steps, cubic Hermite guesses, chord Newton iterations).
 """
 from __future__ import annotations
 

@@ -217,6 +217,14 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
             f"an analysis of {nt:,} time steps", "use fewer steps (--steps) or a longer "
             "time step")
     step = max(1, CHUNK_ENTRIES // max(m, 1))
+    workers = worker_count()
+    if workers > 1 and nt > step:
+        # as many blocks as a multiple of the worker threads, of equal size, so that no
+        # thread is left with the long tail (the slew's 10,000 steps: 2 × 5,000, not
+        # 7,281 + 2,719); every step is computed the same in any block
+        blocks = -(-nt // step)
+        blocks = -(-blocks // workers) * workers
+        step = -(-nt // blocks)
     if method == "bay-by-bay":
         X = bay_by_bay_positions(structure, motion, layout or chain_layout(structure))
     elif nt > 1:
@@ -234,12 +242,14 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
         starts = range(0, nt, step)
         bar = _Counter(progress, len(starts)) if progress is not None else None
         pattern = _Pattern(structure)
-        # With one thread, a direct (stacked-inverse) pattern is cheapest with the kinematics
-        # of the whole motion at once (below); with worker threads, independent blocks of
-        # steps, kinematics included, run in parallel (measured on a 100-bay chain over
-        # 1,000 steps, 2 cores: 11.5 s whole-motion, 12.9 s blocks serially, 7.5 s blocks on
-        # two threads).
-        if worker_count() < 2 and is_direct(pattern.rows, pattern.cols, pattern.m):
+        # A direct (stacked-inverse) pattern is cheapest with the kinematics of the whole
+        # motion at once (its stacked inverses and block substitutions are split over the
+        # steps between the worker threads inside), the rest in blocks of steps in the
+        # threads; an anchored sparse pattern runs whole blocks of steps, kinematics included,
+        # in the threads (measured on a shared 2-core machine with two threads: the slew
+        # 0.32 s whole-motion against 0.34–0.43 s in blocks, the 100-bay chain 2.9–3.4 s
+        # against 3.1–3.3 s).
+        if is_direct(pattern.rows, pattern.cols, pattern.m):
             kin_all = compute_kinematics(structure, motion, scheme=scheme, coords=X)
             # Member loads block by block, the member tensions of all steps in one solve (a
             # loop over the diagonal blocks, paid once), then the rest block by block.
@@ -357,24 +367,26 @@ def _assemble(fn: Callable[[int], tuple], starts: list, nt: int, kin: Kinematics
     """Results of every block of steps ``fn(j)`` (a tuple of arrays and dataclasses of
     arrays, item ``first`` onwards of :func:`_steps`' tuple) written into whole-motion
     arrays as each block finishes, while its arrays are still in the processor cache (a
-    block at a time in worker threads; the first one alone, to learn the shapes).
+    block at a time in worker threads; the first block to finish allocates them).
 
     Two results are not copied but shared: the section forces' unit vectors are the
     kinematics' (``kin``, or the assembled one), and with an odd number of sections the
     midpoint axial force is the middle section's tension (a view)."""
     mid_is_view = n_sections == 1 or n_sections % 2
     skip = {7 - first} if mid_is_view else set()
+    outs: list = []
+    lock = threading.Lock()
 
-    head = fn(0)
-    outs = [None if i in skip else _allocate(p, nt) for i, p in enumerate(head)]
-
-    def store(part, k0):
+    def one(j):
+        part = fn(j)
+        with lock:                    # the first block to finish allocates the whole arrays
+            if not outs:
+                outs.extend(None if i in skip else _allocate(p, nt)
+                            for i, p in enumerate(part))
         for i, (o, p) in enumerate(zip(outs, part)):
             if i not in skip:
-                _store(o, p, k0)
-    store(head, starts[0])
-    del head
-    parallel_map(lambda j: store(fn(j), starts[j]), range(1, len(starts)))
+                _store(o, p, starts[j])
+    parallel_map(one, range(len(starts)))
     unit = (kin if kin is not None else outs[0]).unit
     for o in outs:
         if isinstance(o, SectionForces):
