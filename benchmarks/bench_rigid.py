@@ -75,6 +75,24 @@ def dense_117_per_step(structure, result, nt_total: int) -> float:
     return best * nt_total / k
 
 
+def result_bytes(res) -> int:
+    """Bytes of the arrays a simulation result holds (views counted once, by their base)."""
+    import dataclasses
+    seen: dict[int, int] = {}
+
+    def walk(obj):
+        if isinstance(obj, np.ndarray):
+            base = obj if obj.base is None else obj.base
+            if isinstance(base, np.ndarray):
+                seen[id(base)] = base.nbytes
+        elif dataclasses.is_dataclass(obj) and not isinstance(obj, type):
+            for f in dataclasses.fields(obj):
+                if f.name not in ("structure", "motion"):
+                    walk(getattr(obj, f.name))
+    walk(res)
+    return sum(seen.values())
+
+
 def chain_motion(chain, bays: int, duration: float, steps: int, k0: int = 0,
                  k1: int | None = None) -> Motion:
     """Steps ``k0:k1`` of a third-order motion of ``steps`` steps in which every bay slews by
@@ -108,7 +126,7 @@ def main() -> None:
     ref = dense_117_per_step(s, res, nt)
     # (the reference loop is timed on the wall clock, like the first time column)
     rows.append(("double octahedron slew", res.options["method"], s.n_members, 1, nt, *t,
-                 ref / 6.0, ref))
+                 ref / 6.0, ref, result_bytes(res)))
     del res
 
     nt2 = 200 if args.quick else 1000
@@ -134,13 +152,13 @@ def main() -> None:
         name = f"{bays}-bay chain" + (f" ({pieces} x {nt2 // pieces} steps)" if pieces > 1
                                       else "")
         rows.append((name, rc.options["method"], c.n_members, bays, nt2, *tc, refc / 12.0,
-                     refc))
+                     refc, result_bytes(rc) * pieces))
         if bays == (10 if args.quick else 100) and pieces == 1:
             tension = rc.forces.tension_end
             del rc
             td, rd = _best(lambda: run("direct"), rep)
             rows.append((name, rd.options["method"], c.n_members, bays, nt2, *td,
-                         refc / 12.0, refc))
+                         refc / 12.0, refc, result_bytes(rd)))
             agreement = (bays, float(np.abs(rd.forces.tension_end - tension).max()
                                      / np.abs(tension).max()))
             del rd, tension
@@ -149,14 +167,15 @@ def main() -> None:
 
     print(f"{'case':30s} {'method':>10s} {'members':>8s} {'steps':>7s} {'wall s':>8s} "
           f"{'cpu s':>8s} {'target s':>9s} {'us/(step*member)':>17s} {'us/(bay*step)':>14s} "
-          f"{'dense-117 loop s':>17s} {'speed-up':>9s}")
-    for name, meth, mm, nb, n, tt, cpu, target, r in rows:
+          f"{'dense-117 loop s':>17s} {'speed-up':>9s} {'result GB':>10s}")
+    for name, meth, mm, nb, n, tt, cpu, target, r, size in rows:
         print(f"{name:30s} {meth:>10s} {mm:8d} {n:7d} {tt:8.3f} {cpu:8.3f} {target:9.3f} "
               f"{1e6 * tt / (n * mm):17.3f} {1e6 * tt / (n * nb):14.2f} {r:17.3f} "
-              f"{r / tt:9.1f}")
+              f"{r / tt:9.1f} {size / 1e9:10.2f}")
     print(f"worker threads: {worker_count()} (TRUSSFE_THREADS); wall and cpu: best of "
           f"{max(3, rep)} runs (slew), {rep} (chains up to 100 bays), 1 (1,000 bays); "
           "a chain in pieces: the pieces' times added")
+    print("result GB: the arrays the analysis returns (a chain in pieces: all pieces)")
     print("dense-117 loop: one np.linalg.solve of Lacy's 117 x 117 system (eq. 4.20) per step, "
           "assembly excluded; for a chain, one per bay and step.  Targets: slew 6x, chains 12x "
           "the dense loop.")
