@@ -209,6 +209,47 @@ def test_the_table_does_not_depend_on_the_number_of_workers(tmp_path, cluster):
     assert dict(os.environ) == env
 
 
+def test_batch_size_rule():
+    """The batch rule of trussfe.parametric.engine.BatchSize: one run per task until a run
+    has been timed, then about TASK_SECONDS of runs, at most an even share of the runs left
+    between two tasks per worker, never less than one."""
+    from trussfe.parametric.engine import TASK_SECONDS, BatchSize
+
+    size = BatchSize(workers=2)
+    assert size.next(1000) == 1 and size.next(0) == 0
+    size.record(4, 4 * 0.01)                       # 10 ms per run
+    assert size.next(1000) == int(TASK_SECONDS / 0.01)
+    assert size.next(40) == 10                     # ceil(40 / (2 x 2))
+    assert size.next(3) == 1
+    size.record(1, 100.0)                          # slow runs: one per task
+    assert size.next(1000) == 1
+
+
+def test_the_table_does_not_depend_on_the_batches(tmp_path, cluster, monkeypatch):
+    """The same study with one run per task and with every run batched: the same table
+    (each row is its run's, whatever batch it travelled in), and fewer tasks."""
+    from dask.distributed import Client
+
+    from trussfe.parametric import engine
+
+    f = _write(tmp_path, TRIANGLE)
+    tasks = {}
+    real_submit = Client.submit
+
+    def counting(self, fn, *a, **k):
+        tasks[engine.TASK_SECONDS] = tasks.get(engine.TASK_SECONDS, 0) + 1
+        return real_submit(self, fn, *a, **k)
+
+    monkeypatch.setattr(Client, "submit", counting)
+    monkeypatch.setattr(engine, "TASK_SECONDS", 1e-12)        # one run per task
+    single = trussfe.study(f, scheduler=cluster)
+    monkeypatch.setattr(engine, "TASK_SECONDS", 1e12)         # as large as the rule allows
+    batched = trussfe.study(f, scheduler=cluster)
+    _assert_same(single, batched)
+    assert tasks[1e-12] == 11                # 12 runs, the first in this process
+    assert tasks[1e12] < tasks[1e-12]
+
+
 def test_a_failed_run_is_a_row_not_a_failed_study(tmp_path, cluster):
     """A diameter smaller than the bore makes an invalid tube: that run fails, with the
     reader's one-line reason, the others are computed."""

@@ -228,4 +228,22 @@ def run() -> None:
     except KeyboardInterrupt:       # Ctrl-C between two of main's own handlers
         _error("", "interrupted; no output written")
         status = 130
+    if status == 130:
+        _exit_interrupted()
     sys.exit(status)
+
+
+def _exit_interrupted() -> None:
+    """End an interrupted command with exit status 130, now.
+
+    CPython remembers a Ctrl-C that arrived while it ran code compiled from a string (the
+    methods dataclasses and named tuples write for themselves, as a module that is imported
+    on first use defines them) even when the interrupt was handled, and then ends the
+    process by SIGINT at exit instead of with the status given to ``sys.exit``.  The output
+    transaction has already removed this run's files, so the buffered streams are flushed and
+    the process ends without the interpreter's shutdown.
+    """
+    for stream in (sys.stdout, sys.stderr):
+        with contextlib.suppress(Exception):
+            stream.flush()
+    os._exit(130)

@@ -88,17 +88,6 @@ class BucklingResult:
                          for i in range(self.shapes.shape[1])])
 
 
-def element_axial_force(fe: FEModel, u: np.ndarray) -> np.ndarray:
-    """Mean axial force of every element (tension positive), shape (n_elements,).
-
-    The force on an element's start is ``−N`` and on its end ``+N`` (member axes); the mean
-    of the two is exact for a constant N and second order for N varying along the member
-    (self-weight).
-    """
-    fel = fe.element_forces(u)
-    return 0.5 * (fel[:, 1, 0] - fel[:, 0, 0])
-
-
 def solve_buckling(structure: Structure, count: int = 4, bar_model: str = "pinned-beam",
                    subdivisions: int | None = None, self_weight: bool = True,
                    static: StaticResult | None = None) -> BucklingResult:
@@ -154,7 +143,7 @@ def solve_buckling(structure: Structure, count: int = 4, bar_model: str = "pinne
     fe = static.fe
     # the element forces of the static state as recovered, with the forces the elements carry
     # themselves subtracted (self-weight, the fixed-end forces of member loads and of imposed
-    # strains; element_axial_force(fe, u) would leave them in)
+    # strains)
     N = static.element_axial_force
     fscale = np.abs(static.f).max() if static.f.size else 0.0
     if fscale == 0.0 and static.reactions.size:

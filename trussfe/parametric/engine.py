@@ -3,9 +3,11 @@
 
 The runs go to a Dask cluster: a local one (``LocalCluster``, one single-threaded worker
 process per core by default) or a running scheduler given by its address, so the same study
-goes from a laptop to a cluster unchanged.  Dask retries the runs of a worker that dies on
-another worker; a run whose workers died three times (Dask's ``allowed-failures``) is a failed
-row.
+goes from a laptop to a cluster unchanged.  The runs travel in batches (:class:`BatchSize`:
+one run per task at first, then as many as take about :data:`TASK_SECONDS`), a few tasks per
+worker queued at a time; a row does not depend on the batch it ran in.  Dask retries the tasks
+of a worker that dies on another worker; the runs of a task whose workers died three times
+(Dask's ``allowed-failures``) are failed rows.
 
 Nothing is lost: rows are appended to ``DIR/parts/`` as runs finish (Parquet files, each
 written under a temporary name and renamed), and ``resume`` runs only the ids that no part
@@ -29,7 +31,7 @@ from typing import Any, Iterator
 
 from ..errors import InputError
 from .design import design
-from .runner import run_one
+from .runner import run_batch, run_one
 from .spec import Study
 
 #: Rows are written to a new part at least this often (seconds) while runs finish.
@@ -38,6 +40,13 @@ FLUSH_SECONDS = 1.0
 FLUSH_ROWS = 256
 #: Seconds to wait for a scheduler given by address.
 CONNECT_TIMEOUT = "10s"
+#: A task (a batch of runs) is sized to take about this long on a worker, once the first
+#: tasks have measured how long a run takes: long enough that the scheduler's and the
+#: client's cost per task is a small share of it, short enough for a live progress bar.
+TASK_SECONDS = 0.5
+#: Tasks queued per worker: the scheduler always has the next task at hand for a worker
+#: that finishes, and the runs not yet submitted can still be batched by the measured time.
+TASKS_PER_WORKER = 3
 
 
 def require_dask() -> None:
@@ -378,29 +387,93 @@ class _Progress:
             self.bar.close()
 
 
+class BatchSize:
+    """How many runs the next task gets.
+
+    The first tasks take one run each; after that a batch is sized from the mean worker
+    time per run measured so far to take about :data:`TASK_SECONDS`, and never more than an
+    even share of the runs left between ``2 × workers`` tasks, so that the last tasks end
+    together instead of one worker finishing a long batch alone.
+    """
+
+    def __init__(self, workers: int):
+        self.workers = max(1, workers)
+        self.runs = 0
+        self.seconds = 0.0
+
+    def record(self, runs: int, seconds: float) -> None:
+        """A task of ``runs`` runs took ``seconds`` on its worker."""
+        self.runs += runs
+        self.seconds += max(seconds, 0.0)
+
+    def next(self, remaining: int) -> int:
+        """The size of the next batch when ``remaining`` runs are still to be submitted."""
+        if remaining <= 0:
+            return 0
+        if self.runs == 0:
+            return 1
+        per_run = self.seconds / self.runs
+        by_time = int(TASK_SECONDS / per_run) if per_run > 0 else remaining
+        share = math.ceil(remaining / (2 * self.workers))
+        return max(1, min(by_time, share, remaining))
+
+
+def _workers(client) -> int:
+    """Workers connected to the client's scheduler (at least 1: workers of a scheduler given
+    by address may still be connecting)."""
+    try:
+        return max(1, len(client.scheduler_info().get("workers", {})))
+    except Exception:       # an old scheduler without the call: size as for one worker
+        return 1
+
+
+def _lost_row(study: Study, run: tuple, exc: Exception) -> dict:
+    """The row of a run whose worker processes died (Dask's ``KilledWorker``)."""
+    return {"run_id": run[0], "grid_point": run[1], "sample": run[2], **run[3],
+            **{o.name: math.nan for o in study.outputs}, "status": "error",
+            "error": f"the worker processes running it died ({exc})"[:500]}
+
+
 def _dispatch(study, runs, store, client, bar: _Progress) -> None:
+    """Send ``runs`` to the cluster in batches (:class:`BatchSize`), a few tasks per worker
+    queued at a time, and append the rows to ``store`` as tasks finish."""
+    from collections import deque
+
     from dask.distributed import as_completed
     from distributed.scheduler import KilledWorker
 
     pending: list[dict] = []
     last = time.monotonic()
-    by_key = {}
+    queue = deque(runs)
+    workers = _workers(client)
+    size = BatchSize(workers)
+    batches: dict[str, list] = {}
     try:
         [payload] = client.scatter([study], broadcast=True)
-        futures = client.map(run_one, [payload] * len(runs), *zip(*runs), pure=False)
-        for fut, run in zip(futures, runs):
-            by_key[fut.key] = run
-        for fut in as_completed(futures):
-            run = by_key.pop(fut.key)
+        finished = as_completed()
+
+        def submit() -> None:
+            batch = [queue.popleft() for _ in range(size.next(len(queue)))]
+            fut = client.submit(run_batch, payload, batch, pure=False)
+            batches[fut.key] = batch
+            finished.add(fut)
+
+        for _ in range(TASKS_PER_WORKER * workers):
+            if queue:
+                submit()
+        for fut in finished:
+            batch = batches.pop(fut.key)
             try:
-                row = fut.result()
+                rows, seconds = fut.result()
+                size.record(len(batch), seconds)
             except KilledWorker as exc:
-                row = {"run_id": run[0], "grid_point": run[1], "sample": run[2], **run[3],
-                       **{o.name: math.nan for o in study.outputs}, "status": "error",
-                       "error": f"the worker processes running it died ({exc})"[:500]}
+                rows = [_lost_row(study, run, exc) for run in batch]
             fut.release()
-            pending.append(row)
-            bar.update(row["status"] != "ok")
+            if queue:
+                submit()
+            for row in rows:
+                pending.append(row)
+                bar.update(row["status"] != "ok")
             if len(pending) >= FLUSH_ROWS or time.monotonic() - last >= FLUSH_SECONDS:
                 store.append(pending)
                 pending, last = [], time.monotonic()
