@@ -1,13 +1,25 @@
 # SPDX-License-Identifier: MIT
 """Speed of the rigid-body dynamic force model (targets in docs/performance.md); prints a table.
 
-Targets: the double-octahedral slew with 10,000 time steps (kinematics, nodal forces,
-section forces, stresses, buckling, actuator force and, when available, motor histories)
-in < 1 s; a 100-bay chain (1,800 members) over 1,000 steps in < 10 s.  For comparison, the
-time of a plain per-step dense solve of a 117 × 117 system (the size of Lacy's double-
-octahedron system, eq. 4.20 / Table 4.1), in a Python loop over the steps.
+Cases (each a whole ``simulate``: kinematics, nodal forces, section forces, stresses, buckling,
+actuator force):
 
-Run from the source tree: ``PYTHONPATH=$PWD python benchmarks/bench_rigid.py [--quick]``.
+- the double-octahedral slew with 10,000 time steps; target ≥ 6× the dense-117 loop;
+- chains of 10, 100 and 1,000 double-octahedral bays over 1,000 steps (the automatic method:
+  bay by bay): target ≥ 12× the dense-117 loop for the 100-bay chain (the whole motion at
+  once), and a time per bay and step that stays flat from 10 to 1,000 bays (O(n) per step),
+  shown on the motion run as ten consecutive pieces of 100 steps (the whole result of the
+  1,000-bay chain, about 10 GB, would not fit beside the other runs; the bays' positions of
+  a step do not depend on the other steps, so the pieces give the same numbers); the 100-bay
+  chain also with ``method="direct"``, and the largest difference of its member forces from
+  the bay-by-bay ones.
+
+The reference is a plain per-step dense solve of a 117 × 117 system (the size of Lacy's
+double-octahedron system, eq. 4.20 / Table 4.1) in a Python loop over the steps, timed in
+the same run; for a chain, one such solve per bay and step (extrapolated).
+
+Run from the source tree: ``PYTHONPATH=$PWD python benchmarks/bench_rigid.py [--quick]
+[--repeat N]``.
 """
 from __future__ import annotations
 
@@ -23,14 +35,13 @@ for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
 
 import numpy as np  # noqa: E402
 
-from trussfe.rigid.motion import third_order_motion  # noqa: E402
+from trussfe.rigid.motion import Motion, third_order_motion, third_order_response  # noqa: E402
 from trussfe.studies.lacy_rigid import double_octahedral_chain, double_octahedron  # noqa: E402
 from trussfe.rigid.simulate import simulate  # noqa: E402
 from trussfe.threads import worker_count  # noqa: E402
 from trussfe.allocator import tune_allocator  # noqa: E402
 
 tune_allocator()   # numpy temporaries reuse heap pages, as in the trussfe command
-
 
 
 def _best(fn, repeat):
@@ -40,6 +51,7 @@ def _best(fn, repeat):
     best, cpu = np.inf, np.inf
     out = None
     for _ in range(repeat):
+        out = None                       # the previous result's memory is reused
         t0, c0 = time.perf_counter(), time.process_time()
         out = fn()
         best = min(best, time.perf_counter() - t0)
@@ -54,52 +66,129 @@ def dense_117_per_step(structure, result, nt_total: int) -> float:
     from trussfe.studies.lacy_newton_euler import newton_euler_system
     A, b, _ = newton_euler_system(structure, result.kinematics)
     k = min(A.shape[0], 2000)
-    t0 = time.perf_counter()
-    for i in range(k):
-        np.linalg.solve(A[i], b[i])
-    return (time.perf_counter() - t0) * nt_total / k
+    best = np.inf
+    for _ in range(2):
+        t0 = time.perf_counter()
+        for i in range(k):
+            np.linalg.solve(A[i], b[i])
+        best = min(best, time.perf_counter() - t0)
+    return best * nt_total / k
+
+
+def result_bytes(res) -> int:
+    """Bytes of the arrays a simulation result holds (views counted once, by their base)."""
+    import dataclasses
+    seen: dict[int, int] = {}
+
+    def walk(obj):
+        if isinstance(obj, np.ndarray):
+            base = obj if obj.base is None else obj.base
+            if isinstance(base, np.ndarray):
+                seen[id(base)] = base.nbytes
+        elif dataclasses.is_dataclass(obj) and not isinstance(obj, type):
+            for f in dataclasses.fields(obj):
+                if f.name not in ("structure", "motion"):
+                    walk(getattr(obj, f.name))
+    walk(res)
+    return sum(seen.values())
+
+
+def chain_motion(chain, bays: int, duration: float, steps: int, k0: int = 0,
+                 k1: int | None = None) -> Motion:
+    """Steps ``k0:k1`` of a third-order motion of ``steps`` steps in which every bay slews by
+    ±0.02 m on M7/8 in alternate directions, so that the chain stays roughly straight (one
+    direction for all bays would curl 100 bays into a spiral)."""
+    acts = np.array([a.member for a in chain.extensions["active_members"]])
+    L0 = chain.lengths()[acts]
+    d = np.zeros_like(L0)
+    d[0::3] = 0.02 * (-1.0) ** np.arange(bays)
+    if k0 == 0 and k1 is None:
+        return third_order_motion(chain, L0, L0 + d, duration, steps)
+    t = np.arange(k0, k1) * (duration / steps)
+    y, dy, ddy = third_order_response(t, duration)
+    return Motion(time=t, members=acts, length=L0 + np.outer(y, d), velocity=np.outer(dy, d),
+                  acceleration=np.outer(ddy, d), source="benchmark", first_step=k0)
 
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="smaller runs (smoke test)")
-    ap.add_argument("--repeat", type=int, default=1,
-                    help="runs of the chain case; the best is shown (default 1)")
+    ap.add_argument("--repeat", type=int, default=2,
+                    help="runs of each case; the best is shown (default 2; slew 3)")
     args = ap.parse_args()
+    rep = max(1, args.repeat)
     rows = []
 
     nt = 1000 if args.quick else 10000
     s = double_octahedron((1.2289, 1.1079, 1.1079), gravity=-9.81, top_load=46.0)
     m = third_order_motion(s, [1.2289, 1.1079, 1.1079], [1.1079, 1.2289, 1.2289], 2.0, nt)
-    t, res = _best(lambda: simulate(s, m, n_sections=1), 3)
+    t, res = _best(lambda: simulate(s, m, n_sections=1), max(3, rep))
     ref = dense_117_per_step(s, res, nt)
     # (the reference loop is timed on the wall clock, like the first time column)
-    rows.append(("double octahedron slew", s.n_members, nt, *t, 1.0, ref))
+    rows.append(("double octahedron slew", res.options["method"], s.n_members, 1, nt, *t,
+                 ref / 6.0, ref, result_bytes(res)))
+    del res
 
-    bays, nt2 = (10, 200) if args.quick else (100, 1000)
-    c = double_octahedral_chain(bays, gravity=9.81, top_load=46.0)
-    acts = [a.member for a in c.extensions["active_members"]]
-    L0 = c.lengths()[acts]
-    # Every bay slews by ±0.02 m on M7/8 in alternate directions, so that the chain stays
-    # roughly straight (one direction for all bays would curl 100 bays into a spiral).
-    L1 = L0.copy()
-    L1[0::3] += 0.02 * (-1.0) ** np.arange(bays)
-    mc = third_order_motion(c, L0, L1, 2.0, nt2)
-    tc, _ = _best(lambda: simulate(c, mc, n_sections=1), max(1, args.repeat))
-    # One 117 × 117 solve per bay and step (the bay-by-bay cost of Lacy's formulation).
-    refc = ref / nt * nt2 * bays
-    rows.append((f"{bays}-bay chain", c.n_members, nt2, *tc, 10.0, refc))
+    nt2 = 200 if args.quick else 1000
+    agreement = None
+    # (bays, pieces): the 12x target on the whole motion; the growth with the number of bays
+    # on equal pieces of the motion (the 1,000-bay chain cannot hold all 1,000 steps at once)
+    runs = ([(3, 1), (10, 1), (3, 2), (10, 2)] if args.quick else
+            [(10, 1), (100, 1), (10, 10), (100, 10), (1000, 10)])
+    for bays, pieces in runs:
+        c = double_octahedral_chain(bays, gravity=9.81, top_load=46.0)
+        refc = ref / nt * nt2 * bays              # one 117 × 117 solve per bay and step
+        cuts = np.linspace(0, nt2, pieces + 1).astype(int)
+        motions = [chain_motion(c, bays, 2.0, nt2, a, b if pieces > 1 else None)
+                   for a, b in zip(cuts[:-1], cuts[1:])]
 
-    print(f"{'case':26s} {'members':>8s} {'steps':>7s} {'wall s':>8s} {'cpu s':>8s} "
-          f"{'target s':>9s} {'us/(step*member)':>17s} {'dense-117 loop s':>17s} "
-          f"{'speed-up':>9s}")
-    for name, mm, n, tt, cpu, target, r in rows:
-        print(f"{name:26s} {mm:8d} {n:7d} {tt:8.3f} {cpu:8.3f} {target:9.1f} "
-              f"{1e6 * tt / (n * mm):17.3f} {r:17.3f} {r / tt:9.1f}")
-    print(f"worker threads: {worker_count()} (TRUSSFE_THREADS); wall and cpu: best of 3 runs "
-          f"(slew) and of {max(1, args.repeat)} (chain)")
+        def run(method="auto"):
+            out = None
+            for mo in motions:
+                out = None
+                out = simulate(c, mo, n_sections=1, method=method)
+            return out
+        name = f"{bays}-bay chain" + (f" ({pieces} x {nt2 // pieces} steps)" if pieces > 1
+                                      else "")
+        if bays == (10 if args.quick else 100) and pieces == 1:
+            # both methods in turn, so that neither has the other's warm memory alone
+            ta = td = (np.inf, np.inf)
+            for _ in range(rep):
+                t1, rc = _best(run, 1)
+                tension, size = rc.forces.tension_end, result_bytes(rc)
+                meth_a = rc.options["method"]
+                del rc
+                t2, rd = _best(lambda: run("direct"), 1)
+                ta, td = min(ta, t1), min(td, t2)
+                agreement = (bays, float(np.abs(rd.forces.tension_end - tension).max()
+                                         / np.abs(tension).max()))
+                meth_d = rd.options["method"]
+                del rd, tension
+            rows.append((name, meth_a, c.n_members, bays, nt2, *ta, refc / 12.0, refc, size))
+            rows.append((name, meth_d, c.n_members, bays, nt2, *td, refc / 12.0, refc, size))
+            continue
+        tc, rc = _best(run, 1 if bays >= 1000 else rep)
+        rows.append((name, rc.options["method"], c.n_members, bays, nt2, *tc, refc / 12.0,
+                     refc, result_bytes(rc) * pieces))
+        del rc
+
+    print(f"{'case':30s} {'method':>10s} {'members':>8s} {'steps':>7s} {'wall s':>8s} "
+          f"{'cpu s':>8s} {'target s':>9s} {'us/(step*member)':>17s} {'us/(bay*step)':>14s} "
+          f"{'dense-117 loop s':>17s} {'speed-up':>9s} {'result GB':>10s}")
+    for name, meth, mm, nb, n, tt, cpu, target, r, size in rows:
+        print(f"{name:30s} {meth:>10s} {mm:8d} {n:7d} {tt:8.3f} {cpu:8.3f} {target:9.3f} "
+              f"{1e6 * tt / (n * mm):17.3f} {1e6 * tt / (n * nb):14.2f} {r:17.3f} "
+              f"{r / tt:9.1f} {size / 1e9:10.2f}")
+    print(f"worker threads: {worker_count()} (TRUSSFE_THREADS); wall and cpu: best of "
+          f"{max(3, rep)} runs (slew), {rep} (chains up to 100 bays), 1 (1,000 bays); "
+          "a chain in pieces: the pieces' times added")
+    print("result GB: the arrays the analysis returns (a chain in pieces: all pieces)")
     print("dense-117 loop: one np.linalg.solve of Lacy's 117 x 117 system (eq. 4.20) per step, "
-          "assembly excluded; for the chain, one per bay and step.")
+          "assembly excluded; for a chain, one per bay and step.  Targets: slew 6x, chains 12x "
+          "the dense loop.")
+    if agreement is not None:
+        print(f"member forces of the {agreement[0]}-bay chain, bay-by-bay against direct: "
+              f"largest difference {agreement[1]:.1e} of the largest force")
 
 
 if __name__ == "__main__":

@@ -160,6 +160,54 @@ def test_cli_bad_input_one_line_exit_2(tmp_path, capsys, case):
     assert not (tmp_path / "out.png").exists()
 
 
+LOAD_CASES = ROOT / "meshes" / "loads_closed_forms.toml"
+
+
+def test_one_case_of_load_case_results_is_drawn(tmp_path, capsys):
+    """``static --all --json`` holds every case and combination: ``--case`` picks the one
+    drawn, whose forces and displacements are that case's of the document (and equal to
+    ``trussfe.static(model, case=...)``), with its name in the title."""
+    res = tmp_path / "all.json"
+    assert main(["static", str(LOAD_CASES), "--all", "--json", str(res)]) == 0
+    doc = json.loads(res.read_text())
+    s = trussfe.read_model(LOAD_CASES)
+    for name, part in (("tip", doc["cases"]["tip"]), ("all", doc["combinations"]["all"])):
+        r = read_results(res, s, case=name)
+        want = [part["members"][m]["axial_force"] for m in s.member_ids]
+        assert np.allclose(r.axial_force, want, rtol=0, atol=0) and r.case == name
+    one = trussfe.static(LOAD_CASES, case="tip")
+    r = read_results(res, s, case="tip")
+    assert np.allclose(r.axial_force, one.axial_force, rtol=1e-12, atol=1e-9)
+    assert np.allclose(r.displacement, one.displacement, rtol=1e-12, atol=1e-15)
+    out = tmp_path / "tip.png"
+    assert main(["show", str(LOAD_CASES), "--results", str(res), "--case", "settlement",
+                 "--png", str(out)]) == 0
+    assert _picture(out).shape == (800, 1000, 3)
+    # a single-case document names its case; another name is refused
+    assert results_from_document(one.to_dict(), s).case == "tip"
+    with pytest.raises(trussfe.InputError, match="not of load case 'heat'"):
+        results_from_document(one.to_dict(), s, case="heat")
+
+
+@pytest.mark.parametrize("args, message", [
+    ([], "choose one with --case NAME (one of heat, settlement, tip, all)"),
+    (["--case", "wind"], "has no load case or combination 'wind'"),
+])
+def test_load_case_results_need_a_known_case(tmp_path, capsys, args, message):
+    res = tmp_path / "all.json"
+    assert main(["static", str(LOAD_CASES), "--all", "--json", str(res)]) == 0
+    capsys.readouterr()
+    out = tmp_path / "out.png"
+    assert main(["show", str(LOAD_CASES), "--results", str(res), "--png", str(out),
+                 *args]) == 2
+    lines = capsys.readouterr().err.splitlines()
+    assert len(lines) == 1 and lines[0].startswith(f"trussfe: error: {res}: "), lines
+    assert message in lines[0]
+    assert not out.exists()
+    assert main(["show", str(LOAD_CASES), "--case", "tip", "--png", str(out)]) == 2
+    assert "give --results too" in capsys.readouterr().err
+
+
 @pytest.mark.parametrize("backend", ["matplotlib", "pyvista"])
 def test_member_loads_drawn(tmp_path, backend):
     """A uniform load along both halves of a simply supported beam is drawn as two

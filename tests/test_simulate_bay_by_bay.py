@@ -24,7 +24,7 @@ ROTATION = "chain3_motion_rotation.toml"
 
 @pytest.fixture(scope="module")
 def both():
-    d = trussfe.simulate(CHAIN3, motion=ROTATION, steps=12)
+    d = trussfe.simulate(CHAIN3, motion=ROTATION, steps=12, method="direct")
     b = trussfe.simulate(CHAIN3, motion=ROTATION, steps=12, method="bay-by-bay")
     return d.solution, b.solution
 

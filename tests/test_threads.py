@@ -4,6 +4,7 @@ boundary (compute_threads), which the command line reads from TRUSSFE_THREADS.""
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from threadpoolctl import threadpool_info
 
@@ -70,11 +71,13 @@ def test_parallel_map_keeps_order_and_raises():
         raise AssertionError("the worker's exception was lost")
 
 
-def test_chain_simulation_threaded_equals_serial(monkeypatch):
-    """A 30-bay chain over 600 steps (several blocks of steps, Newton split in chunks): the
-    threaded forces, stresses and actuator forces equal the serial ones.  Positions come from
-    the same converged Newton iteration (tolerance 1e-12 of the bar lengths), so forces agree
-    to ~1e-9 relative; the block stages themselves are bit-identical."""
+@pytest.mark.parametrize("method", ["bay-by-bay", "direct"])
+def test_chain_simulation_threaded_equals_serial(monkeypatch, method):
+    """A 30-bay chain over 600 steps (several blocks of steps, Newton split in chunks), by
+    both methods: the threaded forces, stresses and actuator forces equal the serial ones.
+    Positions come from the same converged Newton iteration (tolerance 1e-12 of the bar
+    lengths), so forces agree to ~1e-9 relative; the block stages themselves are
+    bit-identical."""
     c = double_octahedral_chain(30, gravity=9.81, top_load=46.0)
     acts = [a.member for a in c.extensions["active_members"]]
     L0 = c.lengths()[acts]
@@ -82,10 +85,11 @@ def test_chain_simulation_threaded_equals_serial(monkeypatch):
     L1[0::3] += 0.02 * (-1.0) ** np.arange(30)
     m = third_order_motion(c, L0, L1, 2.0, 600)
     with threads.compute_threads(workers=1):
-        serial = simulate(c, m, n_sections=1)
+        serial = simulate(c, m, n_sections=1, method=method)
     monkeypatch.setattr(linalg, "PARALLEL_INVERSE_MIN", 1)
     with threads.compute_threads(workers=3):
-        threaded = simulate(c, m, n_sections=1)
+        threaded = simulate(c, m, n_sections=1, method=method)
+    assert serial.options["method"] == threaded.options["method"] == method
     np.testing.assert_allclose(threaded.kinematics.coords, serial.kinematics.coords,
                                rtol=0, atol=1e-12 * np.abs(serial.kinematics.coords).max())
     for a, b in ((threaded.midpoint_axial_force, serial.midpoint_axial_force),

@@ -35,7 +35,7 @@ class Picture:
 
 def show(model: ModelLike, png: str | os.PathLike, *,
          results: str | os.PathLike | Mapping | Result | None = None,
-         color: str | None = None, scale: float | None = None, labels: bool | None = None,
+         case: str | None = None, color: str | None = None, scale: float | None = None, labels: bool | None = None,
          backend: str | None = None, size: tuple[int, int] = DEFAULT_SIZE) -> Picture:
     """Draw a model to a PNG: members coloured by section or by a result, node and member
     ids, supports as symbols, loads as labelled arrows, the deformed shape from results.
@@ -49,6 +49,9 @@ def show(model: ModelLike, png: str | os.PathLike, *,
     results : path, mapping or Result, optional
         Static results of this model: a ``trussfe static --json`` file, its document
         (``to_dict()``) or the :class:`~trussfe.api.linear.StaticResult` itself.
+    case : str, optional
+        The load case or combination to draw from results of several (``static --all``,
+        where it is required); drawn in the title.
     color : {"section", "axial_force", "utilisation"}, optional
         What colours the members (default: axial force with results, else section).
         Utilisation is :func:`trussfe.io.model_picture.utilisation`.
@@ -80,14 +83,17 @@ def show(model: ModelLike, png: str | os.PathLike, *,
         from ..errors import InputError
         raise InputError("backend", f"unknown backend '{backend}'; use pyvista or matplotlib")
     picture_results: PictureResults | None
+    if case is not None and results is None:
+        from ..errors import InputError
+        raise InputError("--case", "chooses a load case of the results: give --results too")
     if results is None:
         picture_results = None
     elif isinstance(results, Result):
-        picture_results = results_from_document(results.to_dict(), structure)
+        picture_results = results_from_document(results.to_dict(), structure, case=case)
     elif isinstance(results, Mapping):
-        picture_results = results_from_document(dict(results), structure)
+        picture_results = results_from_document(dict(results), structure, case=case)
     else:
-        picture_results = read_results(results, structure)
+        picture_results = read_results(results, structure, case)
     width, height = (int(v) for v in size)
     used = draw_model(png, structure, results=picture_results, color=color, scale=scale,
                       labels=labels, backend=backend, size=(width, height))

@@ -18,9 +18,10 @@ from .results import Result
 #: Appendix A (:data:`~trussfe.mechanics.conventions.THESIS`: backward differences and
 #: whole-length section inertia).
 SCHEMES = ("exact", "thesis")
-#: Analysis methods: the whole truss at once, or Lacy's chapter 6 bay by bay
+#: Analysis methods: chosen from the model (bay by bay for a chain of two or more identical
+#: bays, else direct), the whole truss at once, or Lacy's chapter 6 bay by bay
 #: (:mod:`trussfe.rigid.bays`).
-METHODS = ("direct", "bay-by-bay")
+METHODS = ("auto", "direct", "bay-by-bay")
 
 
 def load_motion_for(structure: Structure, motion, steps: int | None, *,
@@ -48,7 +49,7 @@ def load_motion_for(structure: Structure, motion, steps: int | None, *,
 
 
 def _simulate(model: ModelLike, motion, steps, scheme: str, sections: int,
-              progress: Callable[[int, int], None] | None, method: str = "direct"):
+              progress: Callable[[int, int], None] | None, method: str = "auto"):
     from ..mechanics.conventions import Conventions
     from ..rigid.simulate import simulate as run
 
@@ -61,7 +62,7 @@ def _simulate(model: ModelLike, motion, steps, scheme: str, sections: int,
 
 
 def simulate(model: ModelLike, *, motion=None, steps: int | None = None,
-             scheme: str = "exact", sections: int = 7, method: str = "direct",
+             scheme: str = "exact", sections: int = 7, method: str = "auto",
              progress: Callable[[int, int], None] | None = None) -> SimulateResult:
     """Rigid-body dynamic force analysis along a motion of the active members
     (``trussfe simulate``; Lacy chapters 2–4).
@@ -80,13 +81,16 @@ def simulate(model: ModelLike, *, motion=None, steps: int | None = None,
         Kinematics: exact, or Lacy's backward differences.
     sections : int
         Sections per member for the internal forces.
-    method : {"direct", "bay-by-bay"}
-        ``"direct"``: the whole truss at once.  ``"bay-by-bay"``: a chain of identical bays
-        analysed as Lacy's chapter 6 describes — each bay's kinematics in its base frame
-        carried up the chain (eqs. 6.1–6.13), the forces from the top bay down with each
-        bay's base reactions passed to the bay below (§6.2).  Both give the same results to
-        round-off; ``"bay-by-bay"`` refuses a model that is not such a chain and
-        ``scheme="thesis"``.
+    method : {"auto", "direct", "bay-by-bay"}
+        ``"direct"``: the positions by Newton's method on the whole truss.
+        ``"bay-by-bay"``: a chain of identical bays analysed as Lacy's chapter 6 describes —
+        each bay's positions in its base frame carried up the chain (eqs. 6.1–6.3); the
+        velocities and accelerations then run up the chain and the forces down it, each
+        bay's base reactions passed to the bay below (§6.2), in O(n) per step for both
+        methods.  Both give the same results to round-off; ``"bay-by-bay"`` refuses a model
+        that is not such a chain and ``scheme="thesis"``.  ``"auto"`` (default):
+        ``"bay-by-bay"`` for a chain of two or more identical bays with the exact scheme,
+        else ``"direct"``; the result's ``options["method"]`` says which one ran.
     progress : callable, optional
         Called as ``progress(done, total)`` during the run (a progress bar; the command line
         draws one on a terminal).

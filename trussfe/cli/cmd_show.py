@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
-"""``trussfe show MODEL [--png OUT] [--results JSON] [--color section|axial_force|utilisation]
-[--scale S] [--no-labels] [--size WxH]``: a picture of the model (docs/cli.md).
+"""``trussfe show MODEL [--png OUT] [--results JSON [--case NAME]]
+[--color section|axial_force|utilisation] [--scale S] [--no-labels] [--size WxH]``: a picture of the model (docs/cli.md).
 
 Members coloured by section or by a result of ``trussfe static --json`` (axial force,
 utilisation), node and member ids, supports as symbols, loads as labelled arrows, and with
@@ -46,6 +46,9 @@ def register(subparsers) -> None:
                    "folder)")
     p.add_argument("--results", metavar="JSON", type=opt.input_file, default=None,
                    help="results of this model written by 'trussfe static --json'")
+    p.add_argument("--case", metavar="NAME", default=None,
+                   help="the load case or combination to draw from results of several "
+                   "('trussfe static --all --json'; required there)")
     p.add_argument("--color", choices=COLOR_BY, default=None,
                    help="what colours the members (default: axial_force with --results, "
                    "else section)")
@@ -92,8 +95,8 @@ def _run(args: argparse.Namespace) -> int:
         opt.output_file(out)            # the default name is checked as --png would be
     model = api.read_model(args.model)
     with _native_stderr_logged():
-        pic = api.show(model, out, results=args.results, color=args.color, scale=args.scale,
-                       labels=args.labels, size=args.size)
+        pic = api.show(model, out, results=args.results, case=args.case, color=args.color,
+                       scale=args.scale, labels=args.labels, size=args.size)
     sys.stdout.write(f"trussfe show: {model.name}: wrote {out} ({pic.backend}, "
                      f"{pic.size[0]}x{pic.size[1]} px)\n")
     return 0

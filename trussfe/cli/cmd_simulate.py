@@ -26,9 +26,11 @@ def register(subparsers) -> None:
     p.add_argument("--steps", type=opt.positive_int, help="number of time steps of a generated motion")
     p.add_argument("--scheme", choices=("exact", "thesis"), default="exact",
                    help="kinematics: exact (default) or Lacy's backward differences")
-    p.add_argument("--method", choices=("direct", "bay-by-bay"), default="direct",
-                   help="direct (default): the whole truss at once; bay-by-bay: a chain of "
-                   "identical bays by Lacy's chapter 6 (kinematics up the chain, forces down)")
+    p.add_argument("--method", choices=("auto", "direct", "bay-by-bay"), default="auto",
+                   help="auto (default): bay-by-bay for a chain of two or more identical bays, "
+                   "else direct; direct: the whole truss at once; bay-by-bay: a chain of "
+                   "identical bays by Lacy's chapter 6 (positions bay by bay, kinematics up "
+                   "the chain, forces down)")
     p.add_argument("--sections", type=opt.positive_int, default=7,
                    help="sections per member for internal forces (default 7)")
     p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the results as JSON")

@@ -76,6 +76,8 @@ class PictureResults:
         Largest von Mises stress of each member, Pa.
     displacement : ndarray, shape (n, dim) or None
         Nodal translations, m.
+    case : str or None
+        The load case or combination drawn, when the results hold several.
     """
 
     source: str
@@ -83,6 +85,7 @@ class PictureResults:
     axial_force: np.ndarray
     max_von_mises: np.ndarray | None
     displacement: np.ndarray | None
+    case: str | None = None
 
 
 def _number(value, where: str, item: str) -> float:
@@ -91,7 +94,8 @@ def _number(value, where: str, item: str) -> float:
     return float(value)
 
 
-def read_results(path: str | Path, structure: Structure) -> PictureResults:
+def read_results(path: str | Path, structure: Structure, case: str | None = None
+                 ) -> PictureResults:
     """Read a results document (``trussfe static --json``, or any document with per-member
     ``axial_force``) and arrange it as ``structure``'s nodes and members.
 
@@ -102,6 +106,9 @@ def read_results(path: str | Path, structure: Structure) -> PictureResults:
     structure : Structure
         The model the results belong to: every member must be in the document, and node
         displacements, where given, for every node.
+    case : str, optional
+        The load case or combination to draw from a document of several
+        (``trussfe static --all``); required there.
 
     Returns
     -------
@@ -128,14 +135,15 @@ def read_results(path: str | Path, structure: Structure) -> PictureResults:
         raise InputError(where, f"not a JSON document (line {exc.lineno}: {exc.msg})") from None
     except RecursionError:
         raise InputError(where, "the document nests too deeply") from None
-    return results_from_document(doc, structure, where)
+    return results_from_document(doc, structure, where, case)
 
 
-def results_from_document(doc, structure: Structure, where: str = "results"
-                          ) -> PictureResults:
+def results_from_document(doc, structure: Structure, where: str = "results",
+                          case: str | None = None) -> PictureResults:
     """Arrange a results document already read (a ``to_dict()`` of
     :func:`trussfe.static`) as ``structure``'s nodes and members; as :func:`read_results`,
     with ``where`` naming the document in errors."""
+    doc, case = _one_case(doc, where, case)
     members = doc.get("members") if isinstance(doc, dict) else None
     if not isinstance(members, dict):
         raise InputError(where, "has no 'members' table; give the --json document of "
@@ -172,7 +180,36 @@ def results_from_document(doc, structure: Structure, where: str = "results"
     command = doc.get("command", "")
     return PictureResults(source=where, command=command if isinstance(command, str) else "",
                           axial_force=force, max_von_mises=vm if has_vm else None,
-                          displacement=disp)
+                          displacement=disp, case=case)
+
+
+def _one_case(doc, where: str, case: str | None) -> tuple[dict, str | None]:
+    """The single-case part of a results document and the name of its case.
+
+    A load-case document (``cases`` and ``combinations``, docs/json.md) holds one result per
+    case and combination: ``case`` names the one to draw (a case, else a combination of that
+    name).  A single-case document is drawn as it is; a ``case`` given with it must be the one
+    it was solved for."""
+    if not isinstance(doc, dict):
+        return doc, case
+    cases = doc.get("cases") if isinstance(doc.get("cases"), dict) else {}
+    combos = doc.get("combinations") if isinstance(doc.get("combinations"), dict) else {}
+    if "members" not in doc and (cases or combos):
+        names = list(cases) + [n for n in combos if n not in cases]
+        if case is None:
+            raise InputError(where, "holds the results of several load cases: choose one with "
+                                    f"--case NAME (one of {', '.join(names)})")
+        part = cases.get(case, combos.get(case))
+        if not isinstance(part, dict):
+            raise InputError(where, f"has no load case or combination '{case}' (it holds "
+                                    f"{', '.join(names)})")
+        return {"command": doc.get("command", ""), **part}, case
+    solved = doc.get("case", doc.get("combination"))
+    if case is not None and solved != case:
+        held = f"load case '{solved}'" if solved else "the model's loads"
+        raise InputError(where, f"holds the results of {held}, not of load case '{case}'; "
+                                "write 'trussfe static --all' results to choose a case")
+    return doc, case if case is not None else solved
 
 
 def utilisation(structure: Structure, results: PictureResults) -> np.ndarray:
@@ -266,6 +303,8 @@ def _scene(structure: Structure, results: PictureResults | None, colour_by: str 
         if amp > 0 and scale > 0:
             shape, deformed = x0 + scale * results.displacement, True
             title += f" — deformed shape ×{scale:.3g}"
+    if results is not None and results.case:
+        title += f" — {results.case}"
     values, label, clim, cmap, groups = None, "", (0.0, 1.0), "coolwarm", []
     if colour_by == "axial_force":
         values = results.axial_force

@@ -26,7 +26,11 @@ def member_vectors(x: np.ndarray, connectivity: np.ndarray) -> np.ndarray:
     ndarray, shape (..., m, dim)
         ``x[..., end] − x[..., start]``.
     """
-    return x[..., connectivity[:, 1], :] - x[..., connectivity[:, 0], :]
+    # np.take copies whole rows of the last axis: several times faster than fancy indexing
+    # with an ellipsis over many leading steps, and the same numbers.
+    out = np.take(x, connectivity[:, 1], axis=-2)
+    out -= np.take(x, connectivity[:, 0], axis=-2)
+    return out
 
 
 def lengths(d: np.ndarray) -> np.ndarray:

@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: MIT
-"""Multi-bay chains analysed bay by bay (Lacy chapter 6), as a cross-check of the direct analysis.
+"""Multi-bay chains analysed bay by bay (Lacy chapter 6): the positions of ``simulate``'s
+bay-by-bay method (:func:`chain_positions`) and the chapter's frames, rates and forces.
 
 Lacy describes, but never implemented, the kinematics of a chain of double-octahedral bays in
 bay-fixed frames: bay n's base plane is bay n−1's top plane, so each bay is solved alone in a
@@ -27,7 +28,9 @@ difference can be shown.
 
 Bay-local kinematics (:func:`bay_kinematics`) use the forward-position solver and the
 compatibility matrix of the bay: ``B ṗ = L̇``, ``B p̈ = L̈ − (|ṗ_b − ṗ_a|² − L̇²)/L``
-(the bar-length condition differentiated twice), exact, batched over time steps.
+(the bar-length condition differentiated twice), exact, batched over time steps.  The
+positions of all bays and steps are found together (:func:`bay_positions`: continuation on
+coarse steps, cubic Hermite guesses, chord Newton iterations).
 """
 from __future__ import annotations
 
@@ -194,14 +197,20 @@ def _sequential_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, item: s
 
 
 def _batched_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, *,
-                       tolerance: float = 1e-12, iterations: int = 30
+                       tolerance: float = 1e-12, iterations: int = 30,
+                       anchors: np.ndarray | None = None, owner: np.ndarray | None = None
                        ) -> tuple[np.ndarray, np.ndarray]:
-    """Newton's method on the bar-length equations of every step at once, from ``x0``.
+    """Newton's method on the bar-length equations of every step at once, from ``x0``
+    (one guess (n, 3) for all steps, or one per step (N, n, 3)).
 
-    Each iteration factorises every step's compatibility matrix (stacked inverses of its
-    diagonal blocks, :class:`~trussfe.rigid.linalg.CompatSolver`) and solves
-    ``B Δx = L − |d|`` for all steps together.  Returns the positions and a per-step flag:
-    converged, and within a tenth of the bay's size of ``x0``.
+    The compatibility matrix of every step is factorised (stacked inverses of its diagonal
+    blocks, :class:`~trussfe.rigid.linalg.CompatSolver`) at the guess and every
+    :data:`REFACTOR_EVERY` iterations, and ``B Δx = L − |d|`` is solved for all steps
+    together (a chord iteration).  With ``anchors`` (step indices) and ``owner`` (the
+    anchor of every step, indices into ``anchors``), only the anchors' matrices are
+    factorised and every step uses its anchor's (close guesses of a smooth motion: the
+    chord still contracts fast, for a fraction of the factorisations).  Returns the
+    positions and a per-step flag: converged, and within a tenth of the bay's size of ``x0``.
     """
     from .kinematics import _Pattern
     from .linalg import CompatSolver, SingularStep
@@ -209,25 +218,35 @@ def _batched_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, *,
     N = L.shape[0]
     pattern = _Pattern(bay)
     conn = bay.connectivity
-    X = np.broadcast_to(x0, (N,) + x0.shape).copy()
+    X = np.broadcast_to(x0, (N,) + x0.shape[-2:]).copy()      # one guess, or one per step
     flat = X.reshape(N, -1)
     scale = float(L.max()) if N else 1.0
     Lk = L[:, pattern.loaded_idx]
     bad = np.zeros(N, dtype=bool)
     if pattern.m != pattern.nfree or N == 0:
         return X, bad
-    for _ in range(iterations):
+    solver = None
+    for it in range(iterations):
         d = member_vectors(X, conn)
         dn = lengths(d)
         r = dn[:, pattern.loaded_idx] - Lk
         if np.abs(r).max() <= tolerance * scale:
             break
-        try:
-            solver = CompatSolver(pattern.rows, pattern.cols, pattern.values(d / dn[..., None]),
-                                  pattern.m)
-        except SingularStep:
-            return X, bad
-        dx = solver.solve(-r)
+        # Chord iterations: the Jacobian is factorised at the guess and refreshed every
+        # REFACTOR_EVERY iterations; from a close guess the chord contracts to round-off in
+        # a few cheap sweeps, where full Newton would factorise every step every time.
+        if it % REFACTOR_EVERY == 0:
+            e = d / dn[..., None]
+            try:
+                solver = CompatSolver(pattern.rows, pattern.cols, pattern.values(
+                    e if anchors is None else e[anchors]), pattern.m)
+            except SingularStep:
+                return X, bad
+            if anchors is not None and not solver.direct:
+                anchors = owner = None              # anchored only with stacked inverses
+                solver = CompatSolver(pattern.rows, pattern.cols, pattern.values(e),
+                                      pattern.m)
+        dx = solver.solve(-r, steps=owner)
         if not np.all(np.isfinite(dx)):
             return X, bad
         flat[:, pattern.free_flat] += dx
@@ -235,6 +254,147 @@ def _batched_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, *,
     res = np.abs(lengths(d) - L).max(axis=1)
     moved = np.abs(X - x0).reshape(N, -1).max(axis=1)
     return X, (res <= tolerance * scale) & (moved < 0.1 * scale)
+
+
+#: Chord iterations between refactorisations of the bay positions' Newton solve.
+REFACTOR_EVERY = 4
+#: Steps per chord Jacobian of the bay positions' Newton solve over all steps.
+ANCHOR_SPACING = 8
+
+#: Steps of the coarse continuation that gives every bay-local Newton solve its guess: at
+#: most COARSE_STEPS, about one per COARSE_SPACING steps of the motion.
+COARSE_STEPS = 20
+COARSE_SPACING = 50
+
+
+def bay_positions(bay: Structure, L: np.ndarray, item: str = "bay",
+                  rates: np.ndarray | None = None, time: np.ndarray | None = None
+                  ) -> np.ndarray:
+    """Node positions of the bay alone (base fixed) for member lengths ``L`` (nb, nt, m):
+    ``nb`` independent histories of one bay, every bay and step solved together.
+
+    The positions follow each history by continuation: Newton's method on a coarse subset
+    of steps (:data:`COARSE_STEPS`, :data:`COARSE_SPACING`), each from the previous one (all
+    histories at once), then
+    on every step from the positions interpolated between those (:func:`_batched_positions`):
+    cubic Hermite interpolation with the node velocities ``B ṗ = L̇`` at the coarse steps when
+    the length ``rates`` (nb, nt, m) and the ``time`` (nt,) are given (a guess closer by
+    orders of magnitude, so fewer Newton sweeps over all steps), else linear in the step.
+    A history whose steps do not all converge near their guess is solved again one step after
+    the other, warm-started (the robust fallback).
+
+    Returns
+    -------
+    ndarray, shape (nb, nt, n_nodes, 3)
+    """
+    nb, nt, m = L.shape
+    n = bay.n_nodes
+    x0 = np.asarray(bay.coords, dtype=float)
+    # about one coarse step per COARSE_SPACING steps, at most COARSE_STEPS of them
+    n_coarse = min(COARSE_STEPS, nt, max(2, 1 + nt // COARSE_SPACING))
+    idx = np.unique(np.linspace(0, nt - 1, n_coarse).round().astype(np.int64))
+    coarse = np.empty((nb, idx.size, n, 3))
+    ok = np.ones(nb, dtype=bool)
+    x = x0
+    hermite = rates is not None and time is not None and idx.size > 1
+    if hermite:
+        from .kinematics import _Pattern
+        from .linalg import CompatSolver, SingularStep
+        pattern = _Pattern(bay)
+        vel = np.zeros((nb, idx.size, n * 3))
+    for j, k in enumerate(idx):
+        x, good = _batched_positions(bay, L[:, k], x)
+        ok &= good
+        coarse[:, j] = x
+        if hermite:
+            e, _ = unit_vectors(member_vectors(x, bay.connectivity))
+            try:
+                solver = CompatSolver(pattern.rows, pattern.cols, pattern.values(e),
+                                      pattern.m)
+                vel[:, j, pattern.free_flat] = solver.solve(rates[:, k, pattern.loaded_idx])
+            except SingularStep:
+                hermite = False
+    if idx.size > 1:
+        # interpolation between the coarse steps
+        seg = np.clip(np.searchsorted(idx, np.arange(nt), side="right") - 1, 0, idx.size - 2)
+        if hermite:
+            t0, t1 = time[idx[seg]], time[idx[seg + 1]]
+            h = (t1 - t0)[None, :, None, None]
+            s = ((time - t0) / (t1 - t0))[None, :, None, None]
+            v = vel.reshape(nb, idx.size, n, 3)
+            guess = ((2 * s - 3) * s * s + 1) * coarse[:, seg] \
+                + ((s - 2) * s + 1) * s * h * v[:, seg] \
+                + (3 - 2 * s) * s * s * coarse[:, seg + 1] + (s - 1) * s * s * h * v[:, seg + 1]
+        else:
+            w = ((np.arange(nt) - idx[seg]) / (idx[seg + 1] - idx[seg]))[None, :, None, None]
+            guess = coarse[:, seg] * (1.0 - w) + coarse[:, seg + 1] * w
+    else:
+        guess = coarse
+    # the chord Jacobians: every ANCHOR_SPACING-th step of each history, the nearest for all
+    at = np.unique(np.r_[np.arange(0, nt, ANCHOR_SPACING), nt - 1])
+    near = np.searchsorted((at[1:] + at[:-1]) / 2.0, np.arange(nt))
+    X, good = _batched_positions(
+        bay, L.reshape(nb * nt, m), guess.reshape(nb * nt, n, 3),
+        anchors=(np.arange(nb)[:, None] * nt + at).ravel(),
+        owner=(np.arange(nb)[:, None] * at.size + near).ravel())
+    X = X.reshape(nb, nt, n, 3)
+    ok &= good.reshape(nb, nt).all(axis=1)
+    for k in np.flatnonzero(~ok):
+        X[k] = _sequential_positions(bay, L[k], x0, f"{item} {k + 1}" if nb > 1 else item)
+    return X
+
+
+def chain_positions(bay: Structure, lengths: np.ndarray,
+                    next_base: tuple[int, int, int] = TOP_AS_NEXT_BASE,
+                    rates: np.ndarray | None = None, time: np.ndarray | None = None
+                    ) -> np.ndarray:
+    """Node positions of a stacked chain, bay by bay in bay-fixed frames (Lacy eqs. 6.1–6.3).
+
+    Every bay's positions in the frame of its base plane (:func:`bay_positions`, all bays
+    and steps at once), then carried up the chain: ``x = o_n + R_n p`` with o_n, R_n the
+    frame of the plane below (one pass over the bays, each vectorised over the steps).
+
+    Parameters
+    ----------
+    bay : Structure
+        The bay template (base nodes 0–2 supported, then six own nodes).
+    lengths : ndarray, shape (nt, n_bays, n_active)
+        Active lengths of every bay (the bay's active-member order).
+    next_base : tuple of int
+        Template nodes that are the next bay's base nodes 0, 1, 2.
+    rates : ndarray, shape (nt, n_bays, n_active), optional
+        The active lengths' rates, and
+    time : ndarray, shape (nt,), optional
+        the sample times: with both, the guesses of the position solve are cubic Hermite
+        interpolants (:func:`bay_positions`).
+
+    Returns
+    -------
+    ndarray, shape (nt, 3 + 6 n_bays, 3)
+        In the numbering of :func:`stack_bays`.
+    """
+    nt, nb, _ = lengths.shape
+    Lall = _all_lengths(bay, lengths.reshape(nt * nb, -1)).reshape(nt, nb, -1)
+    Ldall = None
+    if rates is not None:
+        acts = np.array([a.member for a in active_members(bay)], dtype=np.int64)
+        Ldall = np.zeros((nb, nt, bay.n_members))
+        Ldall[:, :, acts] = rates.transpose(1, 0, 2)
+    P = bay_positions(bay, Lall.transpose(1, 0, 2), item="bay", rates=Ldall,
+                      time=time)                                       # (nb, nt, 9, 3)
+    o_b, R_b = triangle_frame(bay.coords[:3])
+    P = (P[:, :, 3:] - o_b) @ R_b                       # own nodes in the template's frame
+    X = np.empty((nt, 3 + 6 * nb, 3))
+    X[:, :3] = bay.coords[:3]
+    base = X[:, :3]
+    nxt = np.asarray(next_base) - 3
+    for k in range(nb):
+        o, R = triangle_frame(base)                                   # eqs. 6.2, 6.6
+        own = X[:, 3 + 6 * k:9 + 6 * k]
+        np.matmul(P[k], R.transpose(0, 2, 1), out=own)                # R p, eq. 6.3
+        own += o[:, None, :]
+        base = own[:, nxt]
+    return X
 
 
 def _bay_rates(bay: Structure, L: np.ndarray, rates: np.ndarray, accs: np.ndarray,
@@ -349,13 +509,10 @@ def chain_kinematics(bay: Structure, lengths: np.ndarray, rates: np.ndarray,
     rot = np.empty((nt, nb, 3, 3))
     base_idx = np.array([0, 1, 2])
     # Every bay alone, all bays and steps at once (they are independent problems of the same
-    # bay); a bay whose steps do not all converge from the template is re-solved step by step.
-    Lall = _all_lengths(bay, lengths.transpose(1, 0, 2).reshape(nb * nt, -1))
-    Xall, ok = _batched_positions(bay, Lall, bay.coords)
-    Xall = Xall.reshape(nb, nt, bay.n_nodes, 3)
-    Lall = Lall.reshape(nb, nt, -1)
-    for k in np.flatnonzero(~ok.reshape(nb, nt).all(axis=1)):
-        Xall[k] = _sequential_positions(bay, Lall[k], bay.coords, f"bay {k + 1}")
+    # bay, :func:`bay_positions`).
+    Lall = _all_lengths(bay, lengths.transpose(1, 0, 2).reshape(nb * nt, -1)
+                        ).reshape(nb, nt, -1)
+    Xall = bay_positions(bay, Lall, item="bay")
     nn = bay.n_nodes
     P, Pd, Pdd = _bay_rates(bay, Lall.reshape(nb * nt, -1),
                             rates.transpose(1, 0, 2).reshape(nb * nt, -1),
@@ -455,10 +612,18 @@ def chain_forces(bay: Structure, time: np.ndarray, lengths: np.ndarray, rates: n
     """Nodal forces of a chain by Lacy's bay-by-bay method (chapter 6): top bay first, each
     bay's base reactions applied, reversed, to the top plane of the bay below.
 
+    The chain is stacked from ``bay`` (:func:`stack_bays`), its positions are found bay by
+    bay (:func:`chain_positions`), and the forces by the rigid-body force model of the
+    whole chain, whose equilibrium matrix is block triangular with one block per plane: the
+    back substitution ``Bᵀ t = f`` runs from the top bay down and passes each bay's base
+    reactions to the bay below — the recursion of §6.2, in O(n) per step, batched over the
+    steps (the same code as ``simulate``).
+
     Parameters
     ----------
     bay : Structure
-        Bay template (its gravity is used; its loads and masses are ignored).
+        Bay template (its gravity, sections and materials are used; its loads and masses
+        are ignored).
     time : ndarray, shape (nt,)
     lengths, rates, accs : ndarray, shape (nt, n_bays, n_active)
     top_loads : ndarray, shape (3, 3), optional
@@ -468,49 +633,31 @@ def chain_forces(bay: Structure, time: np.ndarray, lengths: np.ndarray, rates: n
     -------
     ChainForces
     """
-    from .forces import nodal_forces
+    from .forces import member_bodies, nodal_forces
+    from .kinematics import compute_kinematics
+    from .motion import Motion
 
-    ck = chain_kinematics(bay, lengths, rates, accs)
     nt, nb, _ = lengths.shape
-    acts = np.array([a.member for a in active_members(bay)], dtype=np.int64)
     m = bay.n_members
-    template = bay.with_masses(np.zeros(bay.n_nodes))
-    tension = np.empty((nt, nb * m))
-    react = np.empty((nt, nb, 3, 3))
-    idx_of = []
-    base_idx = np.array([0, 1, 2])
-    for k in range(nb):
-        idx = np.concatenate([base_idx, 3 + 6 * k + np.arange(6)])
-        idx_of.append(idx)
-        base_idx = idx[list(TOP_AS_NEXT_BASE)]
-    below = np.zeros((nt, 3, 3)) if top_loads is None else \
-        np.broadcast_to(np.asarray(top_loads, dtype=float), (nt, 3, 3)).copy()
-    for k in range(nb - 1, -1, -1):
-        idx = idx_of[k]
-        Ld = np.zeros((nt, m))
-        Ldd = np.zeros((nt, m))
-        Ld[:, acts] = rates[:, k]
-        Ldd[:, acts] = accs[:, k]
-        kin = kinematics_from_nodes(template, time, ck.coords[:, idx], ck.velocity[:, idx],
-                                    ck.acceleration[:, idx], Ld, Ldd)
-        for t in range(nt):             # loads change with time: one step at a time
-            loads = np.zeros(template.loads.shape)
-            loads[6:9, :3] = below[t]
-            s = template.variant(coords=ck.coords[t, idx], loads=loads)
-            kt = _step(kin, t)
-            f = nodal_forces(s, kt)
-            tension[t, k * m:(k + 1) * m] = f.tension_end[0]
-            react[t, k] = f.reactions[0, :3, :3]
-        # The bay below carries this bay's base: minus the reactions, on its N7, N9, N8.
-        below = np.zeros((nt, 3, 3))
-        below[:, [0, 2, 1]] = -react[:, k]
-    return ChainForces(tension_end=tension, base_reactions=react)
-
-
-def _step(kin, t: int):
-    """The kinematics of time step ``t`` alone."""
-    from dataclasses import fields, replace
-
-    arrays = {f.name: getattr(kin, f.name)[t:t + 1] for f in fields(kin)
-              if isinstance(getattr(kin, f.name), np.ndarray)}
-    return replace(kin, **arrays)
+    chain = stack_bays(bay, nb).with_gravity(bay.gravity)
+    chain = chain.variant(sections=tuple(bay.sections) * nb,
+                          materials=tuple(bay.materials) * nb)
+    if top_loads is not None:
+        loads = np.array(chain.loads)
+        loads[3 + 6 * (nb - 1) + np.arange(3, 6), :3] = top_loads      # N7, N8, N9 of bay nb
+        chain = chain.with_loads(loads)
+    acts = np.array([a.member for a in active_members(chain)], dtype=np.int64)
+    motion = Motion(np.asarray(time, dtype=float), acts, lengths.reshape(nt, -1),
+                    rates.reshape(nt, -1), accs.reshape(nt, -1), source="chain")
+    kin = compute_kinematics(chain, motion, coords=chain_positions(bay, lengths))
+    f = nodal_forces(chain, kin, member_bodies(chain))
+    # Base reactions of every bay: the forces its base nodes exert on its members.
+    conn = chain.connectivity
+    bay_of = np.repeat(np.arange(nb), m)
+    base = np.empty((nb, 3), dtype=np.int64)
+    base[0] = [0, 1, 2]
+    base[1:] = (3 + 6 * np.arange(nb - 1))[:, None] + np.asarray(TOP_AS_NEXT_BASE) - 3
+    j, e, i = np.nonzero(conn[:, :, None] == base[bay_of][:, None, :])
+    react = np.zeros((nt, nb * 3, 3))
+    np.add.at(react, (slice(None), bay_of[j] * 3 + i), f.end_force[:, j, e])
+    return ChainForces(tension_end=f.tension_end, base_reactions=react.reshape(nt, nb, 3, 3))

@@ -139,7 +139,7 @@ def _to_nodes(conn: np.ndarray, n: int, at_start: np.ndarray, at_end: np.ndarray
 def element_accelerations(kin: Kinematics, bodies: MemberBodies, conn: np.ndarray):
     """Accelerations of the tube and base centres of gravity, each (nt, m, 3)."""
     e, ed, edd = kin.unit, kin.unit_rate, kin.unit_acc
-    aa = kin.acceleration[:, conn[:, 0]]
+    aa = np.take(kin.acceleration, conn[:, 0], axis=1)
     L, Ld, Ldd = kin.length[..., None], kin.length_rate[..., None], kin.length_acc[..., None]
     s_t = L - bodies.tube_length[None, :, None] / 2.0
     a_tube = aa + Ldd * e + 2.0 * Ld * ed + s_t * edd

@@ -294,11 +294,26 @@ class _Pattern:
         self.cols = cols.ravel()[keep]
 
     def values(self, unit: np.ndarray) -> np.ndarray:
-        """Entries of B for unit vectors ``unit`` (nt, m, dim) → (nt, nnz)."""
-        nt = unit.shape[0]
-        u = unit[:, self.loaded_idx]
-        vals = np.concatenate([-u, u], axis=2).reshape(nt, -1)
-        return vals[:, self.keep]
+        """Entries of B for unit vectors ``unit`` (nt, m, dim or 3) → (nt, nnz): ``−e`` at
+        the start node's free coordinates, ``+e`` at the end node's (one gather of the
+        unit vectors' components and a sign)."""
+        nt, _, du = unit.shape
+        src, sign = self._gather(du)
+        vals = np.take(unit.reshape(nt, -1), src, axis=1)
+        vals *= sign
+        return vals
+
+    def _gather(self, du: int) -> tuple[np.ndarray, np.ndarray]:
+        """Flat component index into a (m, du) unit-vector array and sign of every entry."""
+        cache = self.__dict__.setdefault("_gathers", {})
+        if du not in cache:
+            comp = np.arange(self.dim)
+            src = np.broadcast_to(self.loaded_idx[:, None, None] * du + comp[None, None, :],
+                                  (self.m, 2, self.dim)).ravel()[self.keep]
+            sign = np.broadcast_to(np.array([-1.0, 1.0])[None, :, None],
+                                   (self.m, 2, self.dim)).ravel()[self.keep]
+            cache[du] = (src, sign)
+        return cache[du]
 
 
 def _solve_compat(structure: Structure, pattern: _Pattern, solver: CompatSolver,

@@ -128,7 +128,7 @@ def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
         p = np.broadcast_to(-g, e.shape)                                  # a_0 = 0
     else:
         edd = kin.unit_acc[:, sel]
-        p = (kin.acceleration[:, conn[:, 0]] + kin.length_acc[:, sel, None] * e
+        p = (np.take(kin.acceleration, conn[:, 0], axis=1) + kin.length_acc[:, sel, None] * e
              + 2.0 * kin.length_rate[:, sel, None] * kin.unit_rate[:, sel] - g)   # a_0 − g
     Fb = forces.end_force[:, sel, 1]
     mu = (bodies.tube_mass[sel] / tube_length)[None, :, None]
@@ -162,7 +162,8 @@ def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
 
 
 def section_stresses(structure: Structure, sf: SectionForces, *,
-                     shear_factor: float = 3.0, convention: str = "combined") -> SectionStresses:
+                     shear_factor: float = 3.0, convention: str = "combined",
+                     round_section: np.ndarray | None = None) -> SectionStresses:
     """von Mises stresses at S1 (neutral axis) and S2 (outer fibre), Lacy eqs. 2.19–2.25.
 
     The stresses are those of :func:`trussfe.mechanics.stress.von_mises`.  A round section
@@ -176,9 +177,12 @@ def section_stresses(structure: Structure, sf: SectionForces, *,
         Factor of τ² under the root at S1: 3 (eq. 2.24, von Mises); Lacy's code uses 1.
     convention : {"combined", "lacy-per-axis"}
         See :mod:`trussfe.mechanics.stress`.
+    round_section : ndarray of bool, shape (m,), optional
+        :func:`~trussfe.mechanics.stress.round_sections` of the structure, if known (a caller
+        that evaluates many blocks of steps asks the sections once).
     """
     col = lambda a: a[None, :, None]     # member properties against (time, member, section)
-    rnd = round_sections(structure.sections)
+    rnd = round_sections(structure.sections) if round_section is None else round_section
     if convention == "combined" and np.all(rnd):
         V, M, zero = sf.shear_magnitude, sf.moment_magnitude, 0.0
         vm = von_mises(sf.tension, V, zero, M, zero, col(structure.area), col(structure.Iy),

@@ -19,9 +19,10 @@ import numpy as np
 from ..budget import along_motion_bytes, require
 from ..errors import AnalysisError, InputError
 from ..mechanics.conventions import PHYSICAL, Conventions
+from ..mechanics.stress import round_sections
 from ..model.structure import Structure
 from .active import active_members
-from .bays import METHODS, bay_by_bay_forces, bay_by_bay_kinematics, chain_layout
+from .bays import METHODS, bay_by_bay_positions, chain_layout, chain_layout_or_none
 from .buckling import BucklingCheck, buckling_check
 from .forces import (MemberBodies, NodalForces, forces_from_tensions, member_bodies,
                      nodal_forces_with_static, pair_loads)
@@ -136,7 +137,7 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
              conventions: Conventions = PHYSICAL, n_sections: int = 7,
              effective_length_factor: np.ndarray | float = 1.0, actuators: bool = True,
              progress: Callable[[int, int], None] | None = None,
-             method: str = "direct") -> SimulationResult:
+             method: str = "auto") -> SimulationResult:
     """Rigid-body dynamic force analysis of a truss along a motion (Lacy chapters 2–4).
 
     Parameters
@@ -160,11 +161,18 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
         Called as ``progress(done, total)``: over the steps while the positions are solved
         one after the other, then over the blocks of steps whose forces are computed (from
         worker threads, one call at a time).
-    method : {"direct", "bay-by-bay"}
-        ``"direct"``: the whole truss at once.  ``"bay-by-bay"``: a chain of identical bays
-        analysed as Lacy's chapter 6 describes (:mod:`trussfe.rigid.bays`): kinematics of
-        each bay in its base frame carried up the chain (eqs. 6.1–6.13), forces from the top
-        bay down with the reactions passed on (§6.2); exact kinematics only.
+    method : {"auto", "direct", "bay-by-bay"}
+        How the positions are found.  ``"direct"``: Newton's method on the whole truss.
+        ``"bay-by-bay"``: a chain of identical bays as Lacy's chapter 6 describes
+        (:mod:`trussfe.rigid.bays`): each bay alone in the frame of its base plane, carried
+        up the chain (eqs. 6.1–6.3); exact kinematics only.  ``"auto"`` (default):
+        ``"bay-by-bay"`` for a chain of two or more identical bays with the exact scheme
+        (:func:`~trussfe.rigid.bays.chain_layout`), else ``"direct"``; ``options["method"]``
+        of the result says which one ran.  Velocities, accelerations and forces are the
+        same block substitutions for both: the compatibility matrix of a chain is block
+        triangular with one 9 × 9 block per plane, so ``B v = L̇`` runs up the chain and
+        ``Bᵀ t = f`` down it, each bay's base reactions passed to the bay below (§6.2), in
+        O(n) per step, batched over the steps.
 
     Returns
     -------
@@ -182,6 +190,11 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
     scheme = conventions.kinematics
     if method not in METHODS:
         raise InputError("--method", f"unknown method {method!r}; valid: {', '.join(METHODS)}")
+    layout = None
+    if method == "auto":
+        # bay by bay for a chain of two or more identical bays (exact kinematics only)
+        layout = chain_layout_or_none(structure) if scheme == "exact" else None
+        method = "bay-by-bay" if layout is not None and layout.n_bays >= 2 else "direct"
     if method == "bay-by-bay" and scheme != "exact":
         raise InputError("--method", "bay-by-bay uses the exact kinematics of every bay; it "
                          "cannot be combined with --scheme thesis")
@@ -197,19 +210,28 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
     check_stroke(structure, motion)
     bodies = member_bodies(structure)
     opts = dict(n_sections=n_sections, full_length_inertia=conventions.full_length_inertia,
-                shear_factor=conventions.shear_factor, stress_form=conventions.stress_form)
+                shear_factor=conventions.shear_factor, stress_form=conventions.stress_form,
+                round_section=round_sections(structure.sections))
     nt, m = motion.n_steps, structure.n_members
     require(along_motion_bytes(nt, structure.n_nodes, m), "motion",
             f"an analysis of {nt:,} time steps", "use fewer steps (--steps) or a longer "
             "time step")
     step = max(1, CHUNK_ENTRIES // max(m, 1))
+    workers = worker_count()
+    if workers > 1 and nt > step:
+        # as many blocks as a multiple of the worker threads, of equal size, so that no
+        # thread is left with the long tail (the slew's 10,000 steps: 2 × 5,000, not
+        # 7,281 + 2,719); every step is computed the same in any block
+        blocks = -(-nt // step)
+        blocks = -(-blocks // workers) * workers
+        step = -(-nt // blocks)
     if method == "bay-by-bay":
-        layout = chain_layout(structure)
-        kin = bay_by_bay_kinematics(structure, motion, layout)
-        (kin, f, fs, sf, ss, st, sts, mid, act_force, act_static, cmoment) = _steps(
-            structure, kin, bodies, act_idx,
-            forces=bay_by_bay_forces(structure, kin, bodies, layout), **opts)
-    elif scheme == "exact" and nt > step:
+        X = bay_by_bay_positions(structure, motion, layout or chain_layout(structure))
+    elif nt > 1:
+        X = solve_motion_positions(structure, motion, progress=progress)
+    else:
+        X = None
+    if scheme == "exact" and nt > step:
         # Positions for the whole motion (warm starts link the steps), then the forces one
         # block of steps at a time: the exact kinematics are independent per step, and blocks
         # that fit in the processor cache are several times faster than whole-motion arrays
@@ -217,16 +239,17 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
         # kinematics are solved for the whole motion at once — a solve costs a Python loop
         # over the diagonal blocks, which is paid once instead of once per block of steps —
         # and the blocks use slices of it.
-        X = solve_motion_positions(structure, motion, progress=progress)
         starts = range(0, nt, step)
         bar = _Counter(progress, len(starts)) if progress is not None else None
         pattern = _Pattern(structure)
-        # With one thread, a direct (stacked-inverse) pattern is cheapest with the kinematics
-        # of the whole motion at once (below); with worker threads, independent blocks of
-        # steps, kinematics included, run in parallel (measured on a 100-bay chain over
-        # 1,000 steps, 2 cores: 11.5 s whole-motion, 12.9 s blocks serially, 7.5 s blocks on
-        # two threads).
-        if worker_count() < 2 and is_direct(pattern.rows, pattern.cols, pattern.m):
+        # A direct (stacked-inverse) pattern is cheapest with the kinematics of the whole
+        # motion at once (its stacked inverses and block substitutions are split over the
+        # steps between the worker threads inside), the rest in blocks of steps in the
+        # threads; an anchored sparse pattern runs whole blocks of steps, kinematics included,
+        # in the threads (measured on a shared 2-core machine with two threads: the slew
+        # 0.32 s whole-motion against 0.34–0.43 s in blocks, the 100-bay chain 2.9–3.4 s
+        # against 3.1–3.3 s).
+        if is_direct(pattern.rows, pattern.cols, pattern.m):
             kin_all = compute_kinematics(structure, motion, scheme=scheme, coords=X)
             # Member loads block by block, the member tensions of all steps in one solve (a
             # loop over the diagonal blocks, paid once), then the rest block by block.
@@ -244,24 +267,22 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
                 if bar is not None:
                     bar.tick()
                 return out
-            parts = parallel_map(rest, range(len(kins)))
             kin = kin_all
             kin.compat = None          # factorisations are not kept
-            f, fs, sf, ss, st, sts, mid, act_force, act_static, cmoment = (
-                _concat([p[i] for p in parts]) for i in range(len(parts[0])))
+            f, fs, sf, ss, st, sts, mid, act_force, act_static, cmoment = _assemble(
+                rest, list(starts), nt, kin, n_sections, first=1)
         else:
-            def block(k0):
+            def block(j):
+                k0 = starts[j]
                 out = _steps(structure, compute_kinematics(
                     structure, _slice_motion(motion, k0, min(nt, k0 + step)), scheme=scheme,
                     coords=X[k0:k0 + step]), bodies, act_idx, **opts)
                 if bar is not None:
                     bar.tick()
                 return out
-            parts = parallel_map(block, starts)
-            kin, f, fs, sf, ss, st, sts, mid, act_force, act_static, cmoment = (
-                _concat([p[i] for p in parts]) for i in range(len(parts[0])))
+            kin, f, fs, sf, ss, st, sts, mid, act_force, act_static, cmoment = _assemble(
+                block, list(starts), nt, None, n_sections, first=0)
     else:
-        X = solve_motion_positions(structure, motion, progress=progress) if nt > 1 else None
         (kin, f, fs, sf, ss, st, sts, mid, act_force, act_static,
          cmoment) = _steps(structure, compute_kinematics(structure, motion, scheme=scheme,
                                                          coords=X),
@@ -299,7 +320,7 @@ def _solve_tensions(kin: Kinematics, rhs: np.ndarray) -> np.ndarray:
 
 
 def _steps(structure, kin, bodies, act_idx, *, n_sections, full_length_inertia,
-           shear_factor, stress_form="combined", forces=None):
+           shear_factor, stress_form="combined", round_section=None, forces=None):
     """Forces, sections, stresses and actuator force for a block of steps of kinematics
     ``kin``; the static ones are those of the same positions at rest.  ``forces``: the
     (dynamic, static) nodal forces if already known."""
@@ -313,8 +334,10 @@ def _steps(structure, kin, bodies, act_idx, *, n_sections, full_length_inertia,
     else:
         mid = section_forces(structure, kin, f, bodies, 1,
                              full_length_inertia=full_length_inertia).tension[:, :, 0]
-    st = section_stresses(structure, sf, shear_factor=shear_factor, convention=stress_form)
-    sts = section_stresses(structure, ss, shear_factor=shear_factor, convention=stress_form)
+    st = section_stresses(structure, sf, shear_factor=shear_factor, convention=stress_form,
+                          round_section=round_section)
+    sts = section_stresses(structure, ss, shear_factor=shear_factor, convention=stress_form,
+                           round_section=round_section)
     # The cantilever connection: the cut at u = L_tube of an active member, where the
     # piece is the whole leadscrew tube; its axial force is the actuator force.
     act_force, act_static, cmoment = _cantilever(structure, kin, f, fs, bodies, act_idx)
@@ -339,36 +362,67 @@ def _slice_motion(motion: Motion, k0: int, k1: int) -> Motion:
                   first_step=motion.first_step + k0)
 
 
-def _concat(items: list):
-    """Join per-block results along the time axis (dataclasses field by field); the copies
-    run in worker threads (they release the GIL, and first-touching the new pages is a
-    good part of their cost)."""
-    first = items[0]
-    if isinstance(first, np.ndarray):
-        return _join([*items])
+def _assemble(fn: Callable[[int], tuple], starts: list, nt: int, kin: Kinematics | None,
+              n_sections: int, first: int) -> list:
+    """Results of every block of steps ``fn(j)`` (a tuple of arrays and dataclasses of
+    arrays, item ``first`` onwards of :func:`_steps`' tuple) written into whole-motion
+    arrays as each block finishes, while its arrays are still in the processor cache (a
+    block at a time in worker threads; the first block to finish allocates them).
+
+    Two results are not copied but shared: the section forces' unit vectors are the
+    kinematics' (``kin``, or the assembled one), and with an odd number of sections the
+    midpoint axial force is the middle section's tension (a view)."""
+    mid_is_view = n_sections == 1 or n_sections % 2
+    skip = {7 - first} if mid_is_view else set()
+    outs: list = []
+    lock = threading.Lock()
+
+    def one(j):
+        part = fn(j)
+        with lock:                    # the first block to finish allocates the whole arrays
+            if not outs:
+                outs.extend(None if i in skip else _allocate(p, nt)
+                            for i, p in enumerate(part))
+        for i, (o, p) in enumerate(zip(outs, part)):
+            if i not in skip:
+                _store(o, p, starts[j])
+    parallel_map(one, range(len(starts)))
+    unit = (kin if kin is not None else outs[0]).unit
+    for o in outs:
+        if isinstance(o, SectionForces):
+            o.unit = unit
+    sf = outs[3 - first]
+    if mid_is_view:
+        outs[7 - first] = sf.tension[:, :, (sf.tension.shape[2] - 1) // 2]
+    return outs
+
+
+def _allocate(item, nt: int):
+    """Empty whole-motion arrays shaped like one block's ``item`` (an array or a dataclass
+    of arrays indexed by time first; section positions and factorisations are not)."""
+    if isinstance(item, np.ndarray):
+        return np.empty((nt,) + item.shape[1:], dtype=item.dtype)
     values = {}
-    for name in first.__dataclass_fields__:
-        v = getattr(first, name)
-        if isinstance(v, np.ndarray) and name not in ("position",):
-            values[name] = _join([getattr(it, name) for it in items])
+    for name in item.__dataclass_fields__:
+        v = getattr(item, name)
+        if name == "unit" and isinstance(item, SectionForces):
+            values[name] = None                        # shared with the kinematics
+        elif isinstance(v, np.ndarray) and name != "position":
+            values[name] = np.empty((nt,) + v.shape[1:], dtype=v.dtype)
         else:
             values[name] = None if name == "compat" else v
-    return type(first)(**values)
+    return type(item)(**values)
 
 
-def _join(arrays: list) -> np.ndarray:
-    """``np.concatenate(arrays, axis=0)``, the block copies in worker threads."""
-    if len(arrays) < 2 or arrays[0].ndim == 0:
-        return np.concatenate(arrays, axis=0)
-    sizes = np.array([a.shape[0] for a in arrays])
-    starts = np.r_[0, np.cumsum(sizes)]
-    out = np.empty((int(starts[-1]),) + arrays[0].shape[1:],
-                   dtype=np.result_type(*arrays))
-
-    def copy(j):
-        out[starts[j]:starts[j + 1]] = arrays[j]
-    parallel_map(copy, range(len(arrays)))
-    return out
+def _store(out, item, k0: int) -> None:
+    """Write one block's ``item`` into the whole-motion ``out`` from step ``k0``."""
+    if isinstance(item, np.ndarray):
+        out[k0:k0 + item.shape[0]] = item
+        return
+    for name in item.__dataclass_fields__:
+        v, o = getattr(item, name), getattr(out, name)
+        if isinstance(v, np.ndarray) and isinstance(o, np.ndarray) and name != "position":
+            o[k0:k0 + v.shape[0]] = v
 
 
 def _cantilever(structure, kin, f, fs, bodies, act_idx):
