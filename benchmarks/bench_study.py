@@ -1,11 +1,11 @@
 # SPDX-License-Identifier: MIT
 """Speed of parameter studies on Dask (``trussfe study``, docs/studies.md); prints a table.
 
-Targets (docs/performance.md): on a 2-core machine, 2 workers run a study at least 1.7× as
-fast as 1 worker; the overhead per run against calling the analysis in a loop in one process
-is at most 20 % for runs of 50 ms or more; 1,000 double-octahedral slews of 500 steps each
-(the third-order slew of meshes/double_octahedron_motion_slew.toml, duration × payload grid)
-in at most 60 s.
+Targets (docs/performance.md): on a 2-core machine, 2 workers give at least 1.7× the
+throughput of 1 worker (runs per second, from the slope between two study sizes); the
+overhead per run against calling the analysis in a loop in one process is at most 20 % for
+runs of 50 ms or more; 1,000 double-octahedral slews of 500 steps each (the third-order slew
+of meshes/double_octahedron_motion_slew.toml, duration × payload grid) in at most 60 s.
 
 The clusters are started, and their workers have imported trussfe (a first small study),
 before the clock runs: starting a local cluster takes a few seconds, once per study.  Each
