@@ -213,17 +213,13 @@ def solve_static(structure: Structure, bar_model: str = "truss",
         f = f + mlv.global_vector
     system = LinearSystem(fe, backend, started=t0)
     u, residual = system.solve(f)
-    # the loads the elements carry themselves are those applied: without self-weight, none
-    # (the recovery's default, the frames' self-weight, would put fixed-end forces of a load
-    # that was never applied into the section forces)
-    base = (None if self_weight
+    # the loads the elements carry themselves are those applied: without self-weight none
+    # but the member loads
+    base = (fe.element_self_weight_local() if self_weight
             else [np.zeros(g.n_local) for g in fe.groups])
-    if mlv is None:
-        return system.recover(u, f, residual, base)
-    if base is None:
-        base = fe.element_self_weight_local()
-    return system.recover(u, f, residual, [b + ml for b, ml in zip(base, mlv.local)],
-                          member_loads=mlv)
+    if mlv is not None:
+        base = [b + ml for b, ml in zip(base, mlv.local)]
+    return system.recover(u, f, residual, base, member_loads=mlv)
 
 
 class LinearSystem:

@@ -519,6 +519,14 @@ def _mpl_draw(scene: _Scene, out: Path, size: tuple[int, int]) -> None:
 
 
 # ---------------------------------------------------------------------- pyvista
+def _pv_arrows(pv, tails: np.ndarray, vectors: np.ndarray):
+    """Arrow glyphs from ``tails`` along ``vectors`` (3-D), each as long as its vector."""
+    points = pv.PolyData(tails)
+    points["v"] = vectors
+    return points.glyph(orient="v", scale="v", factor=1.0,
+                        geom=pv.Arrow(tip_length=0.25, tip_radius=0.08, shaft_radius=0.025))
+
+
 def _pv_draw(scene: _Scene, out: Path, size: tuple[int, int]) -> None:
     import pyvista as pv
     from matplotlib.image import imsave
@@ -574,12 +582,7 @@ def _pv_draw(scene: _Scene, out: Path, size: tuple[int, int]) -> None:
         if scene.load_nodes.size:
             vec = pad3(scene.load_vectors)
             tails = pts[scene.load_nodes] - vec
-            arrows = pv.PolyData(tails)
-            arrows["v"] = vec
-            arrows = arrows.glyph(orient="v", scale="v", factor=1.0,
-                                  geom=pv.Arrow(tip_length=0.25, tip_radius=0.08,
-                                                shaft_radius=0.025))
-            p.add_mesh(arrows, color=_LOAD_COLOUR)
+            p.add_mesh(_pv_arrows(pv, tails, vec), color=_LOAD_COLOUR)
             p.add_point_labels(tails, scene.load_labels, font_size=16,
                                text_color=_LOAD_COLOUR, shape=None, show_points=False,
                                always_visible=True)
@@ -589,12 +592,7 @@ def _pv_draw(scene: _Scene, out: Path, size: tuple[int, int]) -> None:
             tails = pad3(scene.member_load_tips) - vec
             drawn = np.linalg.norm(vec, axis=1) > 0
             if drawn.any():
-                arrows = pv.PolyData(tails[drawn])
-                arrows["v"] = vec[drawn]
-                arrows = arrows.glyph(orient="v", scale="v", factor=1.0,
-                                      geom=pv.Arrow(tip_length=0.25, tip_radius=0.08,
-                                                    shaft_radius=0.025))
-                p.add_mesh(arrows, color=_MEMBER_LOAD_COLOUR)
+                p.add_mesh(_pv_arrows(pv, tails[drawn], vec[drawn]), color=_MEMBER_LOAD_COLOUR)
             p.add_point_labels(tails, scene.member_load_labels, font_size=16,
                                text_color=_MEMBER_LOAD_COLOUR, shape=None, show_points=False,
                                always_visible=True)

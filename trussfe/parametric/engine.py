@@ -421,10 +421,7 @@ class BatchSize:
 def _workers(client) -> int:
     """Workers connected to the client's scheduler (at least 1: workers of a scheduler given
     by address may still be connecting)."""
-    try:
-        return max(1, len(client.scheduler_info().get("workers", {})))
-    except Exception:       # an old scheduler without the call: size as for one worker
-        return 1
+    return max(1, len(client.scheduler_info().get("workers", {})))
 
 
 def _lost_row(study: Study, run: tuple, exc: Exception) -> dict:

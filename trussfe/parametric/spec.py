@@ -167,10 +167,9 @@ def parse_study(path: str | Path) -> Study:
     Raises
     ------
     InputError
-        Naming the study file and the item at fault: an unknown key or table, a path that is
-        not in the model, motion file or catalogue arguments, a bad distribution, an option the
-        analysis does not have, an output without a path, a model that the parameters make
-        invalid.
+        Naming the study file and the item at fault: an unknown key or table, a bad
+        distribution, an option the analysis does not have, an output without a path (what
+        needs the model or motion file is checked by ``read_study``).
     """
     path = Path(path)
     data = _load_toml(path, "study file")
