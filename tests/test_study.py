@@ -162,6 +162,71 @@ def test_draws_depend_on_the_seed_and_the_run_id_only(tmp_path):
     assert design(other)[0][3]["materials.aluminium.E"] != runs[0][3]["materials.aluminium.E"]
 
 
+EVERY_DISTRIBUTION = TRIANGLE.replace(
+    '"materials.aluminium.E" = { distribution = "normal", mean = 71.0e9, std = 2.0e9 }',
+    '"loads.B.0" = { distribution = "uniform", low = -5.0, high = 5.0 }\n'
+    '"materials.aluminium.E" = { distribution = "normal", mean = 71.0e9, std = 2.0e9 }\n'
+    '"materials.aluminium.density" = { distribution = "lognormal", mean = 7.9, sigma = 0.1 }\n'
+    '"sections.tube.inner_diameter" = { distribution = "choice", '
+    'values = [0.02, 0.022225] }').replace("samples = 3", "samples = 500")
+
+
+def test_every_distribution_draws_from_its_run_generator(tmp_path):
+    """uniform (low, high), normal (mean, std), lognormal (mean, sigma of log x) and choice
+    (values), drawn in file order from the run's generator; over the 2,000 runs of the
+    grid × Monte Carlo design the sample moments match the distributions' closed forms
+    (within 5 standard errors): uniform mean (a+b)/2, normal mean μ, lognormal mean
+    exp(μ + σ²/2), choice frequencies 1/2."""
+    s = read_study(_write(tmp_path, EVERY_DISTRIBUTION))
+    runs = design(s)
+    assert len(runs) == 4 * 500 and {(r[1], r[2]) for r in runs} == {
+        (g, k) for g in range(4) for k in range(500)}
+    for rid, _, _, values in runs[:50]:
+        rng = run_rng(7, rid)
+        assert values["loads.B.0"] == rng.uniform(-5.0, 5.0)
+        assert values["materials.aluminium.E"] == rng.normal(71.0e9, 2.0e9)
+        assert values["materials.aluminium.density"] == rng.lognormal(7.9, 0.1)
+        assert values["sections.tube.inner_diameter"] == [0.02, 0.022225][rng.integers(2)]
+    col = {k: np.array([r[3][k] for r in runs]) for k in runs[0][3]}
+    n = len(runs)
+    assert abs(col["loads.B.0"].mean() - 0.0) < 5 * (10 / np.sqrt(12)) / np.sqrt(n)
+    assert abs(col["materials.aluminium.E"].mean() - 71.0e9) < 5 * 2.0e9 / np.sqrt(n)
+    mean_ln = np.exp(7.9 + 0.1 ** 2 / 2)
+    sd_ln = mean_ln * np.sqrt(np.exp(0.1 ** 2) - 1)
+    assert abs(col["materials.aluminium.density"].mean() - mean_ln) < 5 * sd_ln / np.sqrt(n)
+    share = (col["sections.tube.inner_diameter"] == 0.02).mean()
+    assert abs(share - 0.5) < 5 * 0.5 / np.sqrt(n)
+
+
+def test_a_monte_carlo_plot_has_a_histogram_panel(tmp_path, monkeypatch):
+    """Each output's figure: one panel per varying parameter, and for a Monte Carlo study a
+    histogram of the output over the runs (the counts add up to the runs that gave it)."""
+    from trussfe.parametric import engine, plots
+
+    s = read_study(_write(tmp_path, TRIANGLE))
+    rows = [{"run_id": r[0], "grid_point": r[1], "sample": r[2], **r[3], "N_follower": -1.0 - r[0],
+             "uy_B": 1e-6 * r[0], "max_vm": 1e6 + r[0], "status": "ok", "error": None}
+            for r in design(s)]
+    figures = []
+    real = plots.subplots
+
+    def keep(*a, **k):
+        fig, axes = real(*a, **k)
+        figures.append(axes)
+        return fig, axes
+
+    monkeypatch.setattr(plots, "subplots", keep)
+    run = engine.StudyRun(study=s, table=pd.DataFrame(rows), wall_time=1.0, folder=tmp_path,
+                          complete=True)
+    names = plots.write_plots(run, tmp_path)
+    assert names == ["N_follower.png", "uy_B.png", "max_vm.png"]
+    for axes in figures:
+        visible = [ax for ax in axes.ravel() if ax.get_visible()]
+        assert len(visible) == 3 + 1                 # three parameters vary, one histogram
+        bars = visible[-1].patches
+        assert bars and sum(b.get_height() for b in bars) == 12
+
+
 # -- running ---------------------------------------------------------------------------------
 
 def test_triangle_study_gives_table_3_2_forces_for_every_draw(tmp_path, cluster, capsys):
@@ -259,6 +324,15 @@ def test_a_failed_run_is_a_row_not_a_failed_study(tmp_path, cluster):
     assert (df.status[bad] == "error").all() and (df.status[~bad] == "ok").all()
     assert df.error[bad].str.startswith("triangular_truss_static.toml: sections.tube").all()
     assert df.N_follower[bad].isna().all() and df.error[~bad].isna().all()
+
+
+def test_the_progress_bar_counts_failed_runs_and_the_time_left(tmp_path, cluster, capsys):
+    text = TRIANGLE.replace("[0.0254, 0.03]", "[0.0254, 0.02]")
+    df = trussfe.study(_write(tmp_path, text), scheduler=cluster, progress=True)
+    bar = capsys.readouterr().err.replace("\r", "\n").splitlines()
+    last = [line for line in bar if "12/12" in line][-1]
+    assert f"failed={int((df.status == 'error').sum())}" in last      # 6 of 12 failed
+    assert "<" in last and ("run/s" in last or "s/run" in last)      # elapsed<left, rate
 
 
 def test_cli_writes_results_summary_and_plots(tmp_path, cluster):
