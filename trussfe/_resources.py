@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Locate the data shipped with trussfe: ``meshes/`` and ``validation/``.
+"""Locate the data shipped with trussfe: ``meshes/``, ``validation/`` and ``examples/``.
 
 In a wheel they are installed under ``trussfe/_data``; in a source checkout (editable install)
 they are the top-level folders of the repository.
@@ -12,7 +12,7 @@ _PKG = Path(__file__).resolve().parent
 
 
 def data_dir(name: str) -> Path:
-    """Directory of the shipped data set ``name`` ("meshes" or "validation").
+    """Directory of the shipped data set ``name`` ("meshes", "validation" or "examples").
 
     Raises
     ------
