@@ -411,9 +411,9 @@ def _param_paths(name: str, spec: dict, item: str) -> tuple[str, ...]:
 
 
 def _values(spec: dict, item: str) -> tuple[tuple | None, str | None, dict]:
-    kinds = [k for k in ("values", "from", "distribution") if k in spec]
-    if "distribution" in spec and spec.get("distribution") == "choice" and "from" not in spec:
-        kinds = ["distribution"]        # a choice's values are its argument, not a grid
+    # beside a distribution, values are its argument (a choice's), not a grid
+    grid_keys = ("from",) if "distribution" in spec else ("values", "from")
+    kinds = [k for k in (*grid_keys, "distribution") if k in spec]
     if len(kinds) != 1:
         raise _err(item, "give one of: values = [...], from/to with step or count, "
                          "or distribution = " + " | ".join(DISTRIBUTIONS))
