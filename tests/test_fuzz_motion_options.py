@@ -202,3 +202,14 @@ def test_fuzz_extension_tables(data):
         assert str(err) and "\n" not in str(err)
         return
     assert s.n_members == 2
+
+
+def test_a_lightly_damped_short_motion_underflows_harmlessly(tmp_path):
+    """A damping ratio of 1/64 makes the real pole so fast that its term underflows to zero
+    (its exact limit) within a 1 s motion: a motion, not a numerical failure (found by the
+    fuzzer above)."""
+    spec = {"duration": 1.0, "steps": 6, "start": {"active": 1.0}, "end": {"active": 1.0},
+            "damping_ratio": 0.015625}
+    with np.errstate(all="raise"):
+        m = motion_from_spec(spec, STRUCTURE, tmp_path, "fuzz.toml")
+    assert np.all(np.isfinite(m.length)) and np.all(m.length == 1.0)
