@@ -179,7 +179,7 @@ class SimulateResult(Result):
     @property
     def station_axial_force(self) -> np.ndarray:
         """Axial force at the sections, shape (step, member, station), N (Lacy eq. 2.18)."""
-        return self.solution.sections.tension
+        return self.solution.section_tension
 
     @property
     def von_mises(self) -> np.ndarray:

@@ -88,7 +88,8 @@ def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
                    bodies: MemberBodies, n_sections: int = 7, *,
                    positions: np.ndarray | None = None,
                    full_length_inertia: bool = False,
-                   members: np.ndarray | None = None, at_rest: bool = False) -> SectionForces:
+                   members: np.ndarray | None = None, at_rest: bool = False,
+                   tension: np.ndarray | None = None) -> SectionForces:
     """Internal forces at sections along every member, all steps at once.
 
     Parameters
@@ -107,6 +108,9 @@ def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
     at_rest : bool
         Take the kinematics' rates and accelerations as zero (the static case in the same
         positions; equal to passing ``kin.at_rest()``, without the vanishing terms).
+    tension : ndarray, shape (nt, m, k), optional
+        The axial forces of these sections if already known (:func:`section_tension` of the
+        same arguments, the same numbers); the shears and moments are computed beside them.
 
     Notes
     -----
@@ -145,13 +149,15 @@ def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
     half = (mseg * u / 2.0)[..., None]
     if at_rest:
         # ë = α = 0: the lever terms vanish (same arithmetic as below without the zeros).
-        tension = -(mseg * pe - fe)
+        if tension is None:
+            tension = _tension(mseg, pe, fe)
         V = mseg[..., None] * p_perp[:, :, None, :] - f_perp[:, :, None, :]
         M = half * c0[:, :, None, :] - u[..., None] * eF[:, :, None, :]
         return SectionForces(position=positions, tension=tension, shear=V, moment=M, unit=e)
     lever = L - u / 2.0                                                   # (t, m, k)
     qe = np.einsum("tmi,tmi->tm", edd, e)[..., None]
-    tension = -(mseg * (pe + lever * qe) - fe)
+    if tension is None:
+        tension = _tension(mseg, pe, fe, lever, qe)
     q_perp = edd - qe * e
     V = ((mseg[..., None] * p_perp[:, :, None, :])
          + (mseg * lever)[..., None] * q_perp[:, :, None, :] - f_perp[:, :, None, :])
@@ -159,6 +165,44 @@ def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
     M = (half * (c0[:, :, None, :] + lever[..., None] * c1[:, :, None, :])
          + Iseg[..., None] * kin.alpha[:, sel, None, :] - u[..., None] * eF[:, :, None, :])
     return SectionForces(position=positions, tension=tension, shear=V, moment=M, unit=e)
+
+
+def _tension(mseg, pe, fe, lever=None, qe=None):
+    """Axial force T = −N·e at the cuts (Lacy eqs. 2.16, 4.68): −(m_s (a_s − g)·e − F_b·e),
+    with (a_0 − g)·e = ``pe``, ë·e = ``qe`` and the lever L − u/2 (no lever at rest)."""
+    if lever is None:
+        return -(mseg * pe - fe)
+    return -(mseg * (pe + lever * qe) - fe)
+
+
+def section_tension(structure: Structure, kin: Kinematics, forces: NodalForces,
+                    bodies: MemberBodies, n_sections: int = 7, *,
+                    positions: np.ndarray | None = None, members: np.ndarray | None = None,
+                    at_rest: bool = False) -> np.ndarray:
+    """The axial forces of :func:`section_forces` alone, (nt, m, k), N (positive in tension).
+
+    The same arithmetic as ``section_forces(...).tension`` (equal to the last bit), without
+    the shears and moments: the buckling check and the midpoint axial force need only these.
+    """
+    sel = slice(None) if members is None else np.asarray(members, dtype=np.int64)
+    tube_length = bodies.tube_length[sel]
+    if positions is None:
+        positions = stations(tube_length, n_sections)
+    u = positions[None, :, :]
+    g = pad3(np.asarray(structure.gravity, dtype=float))
+    e = kin.unit[:, sel]
+    mu = (bodies.tube_mass[sel] / tube_length)[None, :, None]
+    mseg = mu * u
+    fe = np.einsum("tmi,tmi->tm", forces.end_force[:, sel, 1], e)[..., None]
+    if at_rest:
+        pe = np.einsum("tmi,tmi->tm", np.broadcast_to(-g, e.shape), e)[..., None]
+        return _tension(mseg, pe, fe)
+    conn = structure.connectivity[sel]
+    p = (np.take(kin.acceleration, conn[:, 0], axis=1) + kin.length_acc[:, sel, None] * e
+         + 2.0 * kin.length_rate[:, sel, None] * kin.unit_rate[:, sel] - g)
+    pe = np.einsum("tmi,tmi->tm", p, e)[..., None]
+    qe = np.einsum("tmi,tmi->tm", kin.unit_acc[:, sel], e)[..., None]
+    return _tension(mseg, pe, fe, kin.length[:, sel, None] - u / 2.0, qe)
 
 
 def section_stresses(structure: Structure, sf: SectionForces, *,

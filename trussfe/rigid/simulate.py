@@ -11,7 +11,7 @@ from __future__ import annotations
 import inspect
 import logging
 import threading
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Callable
 
 import numpy as np
@@ -29,7 +29,8 @@ from .forces import (MemberBodies, NodalForces, forces_from_tensions, member_bod
 from .kinematics import Kinematics, _Pattern, compute_kinematics, solve_motion_positions
 from .linalg import SingularStep, is_direct
 from .motion import Motion, check_stroke, rest_motion
-from .sections import SectionForces, SectionStresses, section_forces, section_stresses
+from .sections import (SectionForces, SectionStresses, section_forces, section_stresses,
+                       section_tension)
 from ..threads import parallel_map, worker_count
 
 log = logging.getLogger(__name__)
@@ -45,9 +46,12 @@ class SimulationResult:
         Inputs and kinematics.
     forces, static_forces : NodalForces
         Pin forces along the motion, and at rest in the same positions.
+    section_tension : ndarray, shape (nt, m, k)
+        Axial force at the sections along the motion (``sections.tension``), N.
     sections, static_sections : SectionForces
-        Internal forces at the sections.
+        Internal forces at the sections (computed on first access, see Notes).
     stresses, static_stresses : SectionStresses
+        Their stresses (computed on first access).
     midpoint_axial_force : ndarray, shape (nt, m)
         Axial force at the middle of each member's tube.
     actuator_force, static_actuator_force : ndarray, shape (nt, na)
@@ -59,6 +63,16 @@ class SimulationResult:
         Actuator and motor histories per active member id (empty without ``[actuators]``).
     options : dict
         Options used.
+
+    Notes
+    -----
+    The section forces and stresses are closed-form functions of the kinematics and the
+    nodal forces (Lacy eqs. 2.16–2.25): :func:`simulate` computes the axial forces, which the
+    buckling check needs, and the first access to any of ``sections``, ``static_sections``,
+    ``stresses``, ``static_stresses`` computes the shears, moments and stresses of the whole
+    motion (in blocks of steps, in worker threads) and keeps them — the same numbers as
+    computing them in :func:`simulate`, without writing four (nt, m, k[, 3]) histories that a
+    caller may never read.
     """
 
     structure: Structure
@@ -67,10 +81,7 @@ class SimulationResult:
     bodies: MemberBodies
     forces: NodalForces
     static_forces: NodalForces
-    sections: SectionForces
-    static_sections: SectionForces
-    stresses: SectionStresses
-    static_stresses: SectionStresses
+    section_tension: np.ndarray
     midpoint_axial_force: np.ndarray
     actuator_force: np.ndarray
     static_actuator_force: np.ndarray
@@ -78,6 +89,27 @@ class SimulationResult:
     buckling: BucklingCheck
     actuators: dict = field(default_factory=dict)
     options: dict = field(default_factory=dict)
+    _sections: "_LazySections | None" = field(default=None, repr=False)
+
+    @property
+    def sections(self) -> SectionForces:
+        """Internal forces at the sections along the motion (Lacy eqs. 2.16–2.18)."""
+        return self._sections.get()[0]
+
+    @property
+    def static_sections(self) -> SectionForces:
+        """Internal forces at the sections at rest in the same positions."""
+        return self._sections.get()[1]
+
+    @property
+    def stresses(self) -> SectionStresses:
+        """Stresses at the sections along the motion (Lacy eqs. 2.19–2.25)."""
+        return self._sections.get()[2]
+
+    @property
+    def static_stresses(self) -> SectionStresses:
+        """Stresses at the sections at rest in the same positions."""
+        return self._sections.get()[3]
 
     @property
     def time(self) -> np.ndarray:
@@ -269,8 +301,8 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
                 return out
             kin = kin_all
             kin.compat = None          # factorisations are not kept
-            f, fs, sf, ss, st, sts, mid, act_force, act_static, cmoment = _assemble(
-                rest, list(starts), nt, kin, n_sections, first=1)
+            f, fs, sec_t, mid, act_force, act_static, cmoment = _assemble(
+                rest, list(starts), nt, n_sections, first=1)
         else:
             def block(j):
                 k0 = starts[j]
@@ -280,20 +312,20 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
                 if bar is not None:
                     bar.tick()
                 return out
-            kin, f, fs, sf, ss, st, sts, mid, act_force, act_static, cmoment = _assemble(
-                block, list(starts), nt, None, n_sections, first=0)
+            kin, f, fs, sec_t, mid, act_force, act_static, cmoment = _assemble(
+                block, list(starts), nt, n_sections, first=0)
     else:
-        (kin, f, fs, sf, ss, st, sts, mid, act_force, act_static,
-         cmoment) = _steps(structure, compute_kinematics(structure, motion, scheme=scheme,
-                                                         coords=X),
-                           bodies, act_idx, **opts)
-    buck = buckling_check(structure, sf.tension, bodies.tube_length,
-                          effective_length_factor)
+        step = nt
+        kin, f, fs, sec_t, mid, act_force, act_static, cmoment = _steps(
+            structure, compute_kinematics(structure, motion, scheme=scheme, coords=X),
+            bodies, act_idx, **opts)
+    buck = buckling_check(structure, sec_t, bodies.tube_length, effective_length_factor)
+    lazy = _LazySections(structure, kin, f, fs, bodies, sec_t, step, opts)
     res = SimulationResult(structure=structure, motion=motion, kinematics=kin, bodies=bodies,
-                           forces=f, static_forces=fs, sections=sf, static_sections=ss,
-                           stresses=st, static_stresses=sts, midpoint_axial_force=mid,
+                           forces=f, static_forces=fs, section_tension=sec_t,
+                           midpoint_axial_force=mid,
                            actuator_force=act_force, static_actuator_force=act_static,
-                           cantilever_moment=cmoment, buckling=buck,
+                           cantilever_moment=cmoment, buckling=buck, _sections=lazy,
                            options={"scheme": scheme, "method": method,
                                     "n_sections": int(n_sections),
                                     "full_length_inertia": conventions.full_length_inertia,
@@ -321,28 +353,106 @@ def _solve_tensions(kin: Kinematics, rhs: np.ndarray) -> np.ndarray:
 
 def _steps(structure, kin, bodies, act_idx, *, n_sections, full_length_inertia,
            shear_factor, stress_form="combined", round_section=None, forces=None):
-    """Forces, sections, stresses and actuator force for a block of steps of kinematics
-    ``kin``; the static ones are those of the same positions at rest.  ``forces``: the
-    (dynamic, static) nodal forces if already known."""
+    """Forces, axial forces at the sections, midpoint axial force and actuator force for a
+    block of steps of kinematics ``kin``; the static forces are those of the same positions
+    at rest.  ``forces``: the (dynamic, static) nodal forces if already known.  (The shears,
+    moments and stresses of the sections: :class:`_LazySections`.)"""
     f, fs = nodal_forces_with_static(structure, kin, bodies) if forces is None else forces
-    sf = section_forces(structure, kin, f, bodies, n_sections,
-                        full_length_inertia=full_length_inertia)
-    ss = section_forces(structure, kin, fs, bodies, n_sections,
-                        full_length_inertia=full_length_inertia, at_rest=True)
+    tension = section_tension(structure, kin, f, bodies, n_sections)
     if n_sections == 1 or n_sections % 2:
-        mid = sf.tension[:, :, (sf.tension.shape[2] - 1) // 2]
+        mid = tension[:, :, (tension.shape[2] - 1) // 2]
     else:
-        mid = section_forces(structure, kin, f, bodies, 1,
-                             full_length_inertia=full_length_inertia).tension[:, :, 0]
-    st = section_stresses(structure, sf, shear_factor=shear_factor, convention=stress_form,
-                          round_section=round_section)
-    sts = section_stresses(structure, ss, shear_factor=shear_factor, convention=stress_form,
-                           round_section=round_section)
+        mid = section_tension(structure, kin, f, bodies, 1)[:, :, 0]
     # The cantilever connection: the cut at u = L_tube of an active member, where the
     # piece is the whole leadscrew tube; its axial force is the actuator force.
     act_force, act_static, cmoment = _cantilever(structure, kin, f, fs, bodies, act_idx)
     kin.compat = None                  # factorisations of one block are not kept
-    return kin, f, fs, sf, ss, st, sts, mid, act_force, act_static, cmoment
+    return kin, f, fs, tension, mid, act_force, act_static, cmoment
+
+
+class _LazySections:
+    """The section forces and stresses of a simulation, computed on first access.
+
+    They are closed-form functions of the kinematics, the nodal forces and the axial forces
+    at the sections already computed (Lacy eqs. 2.16–2.25): :meth:`get` evaluates them in
+    the blocks of steps of :func:`simulate` (worker threads take the blocks; every step is
+    computed as in any block) and keeps them.  Thread-safe; a pickled result carries the
+    evaluated arrays.
+    """
+
+    def __init__(self, structure, kin, forces, static_forces, bodies, tension, step, opts):
+        self._inputs = (structure, kin, forces, static_forces, bodies, tension, step, opts)
+        self._value: tuple | None = None
+        self._lock = threading.Lock()
+
+    @property
+    def evaluated(self) -> bool:
+        """Whether the section forces and stresses have been computed."""
+        return self._value is not None
+
+    def get(self) -> tuple[SectionForces, SectionForces, SectionStresses, SectionStresses]:
+        """(sections, static sections, stresses, static stresses)."""
+        with self._lock:
+            if self._value is None:
+                self._value = _section_results(*self._inputs)
+                self._inputs = None
+            return self._value
+
+    def __getstate__(self) -> dict:
+        return {"value": self.get()}
+
+    def __setstate__(self, state: dict) -> None:
+        self._inputs, self._value, self._lock = None, state["value"], threading.Lock()
+
+
+def _section_results(structure, kin, forces, static_forces, bodies, tension, step, opts):
+    """Section forces and stresses, motion and rest, of the whole motion, in blocks of
+    ``step`` steps (:class:`_LazySections`); the dynamic axial forces are ``tension``."""
+    nt = kin.n_steps
+    n_sections, fli = opts["n_sections"], opts["full_length_inertia"]
+    stress = dict(shear_factor=opts["shear_factor"], convention=opts["stress_form"],
+                  round_section=opts["round_section"])
+
+    def block(k0):
+        k1 = min(nt, k0 + step)
+        whole = k0 == 0 and k1 == nt
+        kc = kin if whole else _slice_kinematics(kin, k0, k1)
+        fc = forces if whole else _slice_forces(forces, k0, k1)
+        fsc = static_forces if whole else _slice_forces(static_forces, k0, k1)
+        sf = section_forces(structure, kc, fc, bodies, n_sections, full_length_inertia=fli,
+                            tension=tension[k0:k1])
+        ss = section_forces(structure, kc, fsc, bodies, n_sections, full_length_inertia=fli,
+                            at_rest=True)
+        st = section_stresses(structure, sf, **stress)
+        sts = section_stresses(structure, ss, **stress)
+        return sf, ss, st, sts
+
+    starts = list(range(0, nt, step))
+    if len(starts) == 1:
+        return block(0)
+    outs: list = []
+    lock = threading.Lock()
+
+    def one(k0):
+        part = block(k0)
+        # the dynamic tension and the unit vectors are the whole-motion arrays already
+        part = (replace(part[0], tension=None, unit=None), replace(part[1], unit=None),
+                part[2], part[3])
+        with lock:                    # the first block to finish allocates the whole arrays
+            if not outs:
+                outs.extend(_allocate(p, nt) for p in part)
+        for o, p in zip(outs, part):
+            _store(o, p, k0)
+    parallel_map(one, starts)
+    outs[0].tension = tension
+    outs[0].unit = outs[1].unit = kin.unit
+    return tuple(outs)
+
+
+def _slice_forces(f: NodalForces, k0: int, k1: int) -> NodalForces:
+    """Steps ``k0:k1`` of nodal forces (views)."""
+    return NodalForces(end_force=f.end_force[k0:k1], tension_end=f.tension_end[k0:k1],
+                       tension_start=f.tension_start[k0:k1], reactions=f.reactions[k0:k1])
 
 
 def _slice_kinematics(kin: Kinematics, k0: int, k1: int) -> Kinematics:
@@ -362,18 +472,17 @@ def _slice_motion(motion: Motion, k0: int, k1: int) -> Motion:
                   first_step=motion.first_step + k0)
 
 
-def _assemble(fn: Callable[[int], tuple], starts: list, nt: int, kin: Kinematics | None,
-              n_sections: int, first: int) -> list:
+def _assemble(fn: Callable[[int], tuple], starts: list, nt: int, n_sections: int,
+              first: int) -> list:
     """Results of every block of steps ``fn(j)`` (a tuple of arrays and dataclasses of
     arrays, item ``first`` onwards of :func:`_steps`' tuple) written into whole-motion
     arrays as each block finishes, while its arrays are still in the processor cache (a
     block at a time in worker threads; the first block to finish allocates them).
 
-    Two results are not copied but shared: the section forces' unit vectors are the
-    kinematics' (``kin``, or the assembled one), and with an odd number of sections the
-    midpoint axial force is the middle section's tension (a view)."""
+    With an odd number of sections the midpoint axial force is not copied but the middle
+    section's axial force (a view)."""
     mid_is_view = n_sections == 1 or n_sections % 2
-    skip = {7 - first} if mid_is_view else set()
+    skip = {4 - first} if mid_is_view else set()
     outs: list = []
     lock = threading.Lock()
 
@@ -387,13 +496,9 @@ def _assemble(fn: Callable[[int], tuple], starts: list, nt: int, kin: Kinematics
             if i not in skip:
                 _store(o, p, starts[j])
     parallel_map(one, range(len(starts)))
-    unit = (kin if kin is not None else outs[0]).unit
-    for o in outs:
-        if isinstance(o, SectionForces):
-            o.unit = unit
-    sf = outs[3 - first]
     if mid_is_view:
-        outs[7 - first] = sf.tension[:, :, (sf.tension.shape[2] - 1) // 2]
+        tension = outs[3 - first]
+        outs[4 - first] = tension[:, :, (tension.shape[2] - 1) // 2]
     return outs
 
 
@@ -405,9 +510,7 @@ def _allocate(item, nt: int):
     values = {}
     for name in item.__dataclass_fields__:
         v = getattr(item, name)
-        if name == "unit" and isinstance(item, SectionForces):
-            values[name] = None                        # shared with the kinematics
-        elif isinstance(v, np.ndarray) and name != "position":
+        if isinstance(v, np.ndarray) and name != "position":
             values[name] = np.empty((nt,) + v.shape[1:], dtype=v.dtype)
         else:
             values[name] = None if name == "compat" else v
