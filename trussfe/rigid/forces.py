@@ -30,6 +30,7 @@ solved for all time steps at once.
 """
 from __future__ import annotations
 
+import threading
 from dataclasses import dataclass
 
 import numpy as np
@@ -125,25 +126,91 @@ class NodalForces:
     reactions: np.ndarray
 
 
-def _to_nodes(conn: np.ndarray, n: int, at_start: np.ndarray, at_end: np.ndarray) -> np.ndarray:
-    """Sum member-end vectors (t, m, 3) into their nodes (t, n, 3) with a sparse incidence."""
-    import scipy.sparse as sp
+def _to_nodes(conn: np.ndarray, n: int, at_start: np.ndarray, at_end: np.ndarray,
+              nodes: np.ndarray | None = None) -> np.ndarray:
+    """Sum member-end vectors (t, m, 3) into their nodes, (t, n, 3), or (t, len(nodes), 3)
+    for the given nodes only.
+
+    Each node's sum runs over its member ends in one fixed order — its members' start ends
+    by member, then their end ends — one gathered column of ends per pass for all nodes
+    with the same sequence of start and end ends: a few passes of the node degree instead
+    of a sparse product with transposed copies.
+    """
+    nt = at_start.shape[0]
+    sides = (at_start, at_end)
+    size = n if nodes is None else len(nodes)
+    out = None
+    for rows, pattern, members in _node_groups(conn, n, nodes):
+        if not pattern:
+            acc = np.zeros((nt, rows.size, 3))
+        else:
+            acc = np.take(sides[pattern[0]], members[:, 0], axis=1)
+            for c in range(1, len(pattern)):
+                acc += np.take(sides[pattern[c]], members[:, c], axis=1)
+        if rows.size == size:
+            return acc
+        if out is None:
+            out = np.empty((nt, size, 3))
+        out[:, rows] = acc
+    return out if out is not None else np.zeros((nt, size, 3))
+
+
+def _node_groups(conn: np.ndarray, n: int, nodes: np.ndarray | None) -> list:
+    """The nodes grouped by the sequence of their member ends (:func:`_to_nodes`): a list of
+    (rows among ``nodes``, sides as a tuple of 0 = start end and 1 = end end, members
+    (rows, ends))."""
+    key = (n, conn.tobytes(), None if nodes is None else np.asarray(nodes).tobytes())
+    with _NODE_GROUPS_LOCK:                     # blocks of steps ask from worker threads
+        groups = _NODE_GROUPS.get(key)
+        if groups is None:
+            groups = _NODE_GROUPS[key] = _group_nodes(conn, n, nodes)
+            if len(_NODE_GROUPS) > 16:             # a few models at a time
+                _NODE_GROUPS.pop(next(iter(_NODE_GROUPS)))
+    return groups
+
+
+_NODE_GROUPS: dict = {}
+_NODE_GROUPS_LOCK = threading.Lock()
+
+
+def _group_nodes(conn: np.ndarray, n: int, nodes: np.ndarray | None) -> list:
     m = conn.shape[0]
-    inc = sp.csr_matrix((np.ones(2 * m), (conn.T.ravel(), np.arange(2 * m))), shape=(n, 2 * m))
-    stacked = np.concatenate([at_start, at_end], axis=1)            # (t, 2m, 3)
-    nt = stacked.shape[0]
-    out = inc @ stacked.transpose(1, 0, 2).reshape(2 * m, -1)
-    return np.asarray(out).reshape(n, nt, 3).transpose(1, 0, 2)
+    ends = conn.T.ravel()                        # stacked: start ends, then end ends
+    order = np.argsort(ends, kind="stable")
+    counts = np.bincount(ends, minlength=n)
+    first = np.concatenate([[0], np.cumsum(counts)[:-1]])
+    width = max(int(counts.max(initial=0)), 1)
+    member = np.zeros((n, width), dtype=np.int64)
+    side = np.full((n, width), -1, dtype=np.int64)       # -1: no end (shorter rows)
+    col = np.arange(2 * m) - np.repeat(first, counts)
+    member[ends[order], col] = order % m
+    side[ends[order], col] = order // m
+    if nodes is not None:
+        member, side = member[nodes], side[nodes]
+    keys, inverse = np.unique(side, axis=0, return_inverse=True)
+    groups = []
+    for g, key in enumerate(keys):
+        rows = np.flatnonzero(inverse.reshape(-1) == g)
+        pattern = tuple(int(k) for k in key if k >= 0)
+        groups.append((rows, pattern, member[rows][:, :len(pattern)]))
+    return groups
 
 
-def element_accelerations(kin: Kinematics, bodies: MemberBodies, conn: np.ndarray):
-    """Accelerations of the tube and base centres of gravity, each (nt, m, 3)."""
+def element_accelerations(kin: Kinematics, bodies: MemberBodies, conn: np.ndarray,
+                          base_members: np.ndarray | None = None):
+    """Accelerations of the tube and base centres of gravity, each (nt, m, 3), and the tube
+    centre's distance s_t from the start node, (nt, m, 1); ``base_members``: the bases of
+    these members only."""
     e, ed, edd = kin.unit, kin.unit_rate, kin.unit_acc
     aa = np.take(kin.acceleration, conn[:, 0], axis=1)
     L, Ld, Ldd = kin.length[..., None], kin.length_rate[..., None], kin.length_acc[..., None]
     s_t = L - bodies.tube_length[None, :, None] / 2.0
     a_tube = aa + Ldd * e + 2.0 * Ld * ed + s_t * edd
-    a_base = aa + bodies.base_cg[None, :, None] * edd
+    if base_members is None:
+        a_base = aa + bodies.base_cg[None, :, None] * edd
+    else:
+        a_base = (np.take(aa, base_members, axis=1)
+                  + bodies.base_cg[None, base_members, None] * edd[:, base_members])
     return a_tube, s_t, a_base
 
 
@@ -202,7 +269,8 @@ def _check_model(structure: Structure) -> _Pattern:
 
 
 def member_resultants(kin: Kinematics, bodies: MemberBodies, gravity: np.ndarray,
-                      conn: np.ndarray, rest: bool = False) -> tuple[np.ndarray, ...]:
+                      conn: np.ndarray, rest: bool = False, *, bases: bool = True
+                      ) -> tuple[np.ndarray | None, ...]:
     """Inertia-and-weight loads of every member's bodies (Lacy eqs. 2.9–2.11, 4.20).
 
     Parameters
@@ -211,6 +279,8 @@ def member_resultants(kin: Kinematics, bodies: MemberBodies, gravity: np.ndarray
     rest : bool
         The kinematics' rates and accelerations taken as zero (the terms that vanish are not
         computed: adding an exact zero changes no bit of the result).
+    bases : bool
+        Return ``f_base`` (False: None; the caller needs only ``R`` and ``Ma``).
 
     Returns
     -------
@@ -224,22 +294,32 @@ def member_resultants(kin: Kinematics, bodies: MemberBodies, gravity: np.ndarray
     g = gravity
     e = kin.unit
     mt = bodies.tube_mass[None, :, None]
-    mb = bodies.base_mass[None, :, None]
+    # Only active members have a base body: the others' base terms are exact zeros, which
+    # change no bit of R and Ma, so they are computed for the members with a base only.
+    act = np.flatnonzero(bodies.base_mass)
+    mb = bodies.base_mass[None, act, None]
+    cg = bodies.base_cg[None, act, None]
     if rest:
         s_t = kin.length[..., None] - bodies.tube_length[None, :, None] / 2.0
         f_tube = mt * -g                                         # a_tube = 0
         f_base = mb * -g
     else:
-        a_tube, s_t, a_base = element_accelerations(kin, bodies, conn)
+        a_tube, s_t, a_base = element_accelerations(kin, bodies, conn, act)
         f_tube = mt * (a_tube - g)                               # (time, member, 3)
         f_base = mb * (a_base - g)
-    R = f_tube + f_base
-    Ma = cross(s_t * e, f_tube) + cross(bodies.base_cg[None, :, None] * e, f_base)
+    R = f_tube.copy()
+    R[:, act] += f_base
+    Ma = cross(s_t * e, f_tube)
+    Ma[:, act] += cross(cg * e[:, act], f_base)
     if not rest:
         inertia = (bodies.tube_inertia(bodies.tube_length, bodies.tube_mass)
                    + bodies.base_inertia_cg)[None, :, None]
         Ma += inertia * kin.alpha
-    return f_tube, f_base, R, Ma
+    if not bases:
+        return f_tube, None, R, Ma
+    full_base = np.zeros(R.shape)
+    full_base[:, act] = f_base
+    return f_tube, full_base, R, Ma
 
 
 def _member_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies, rest: bool):
@@ -254,7 +334,7 @@ def _member_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies, r
     g = pad3(np.asarray(structure.gravity, dtype=float))
     e = kin.unit
     L = kin.length[..., None]
-    _, _, R, Ma = member_resultants(kin, bodies, g, conn, rest)
+    _, _, R, Ma = member_resultants(kin, bodies, g, conn, rest, bases=False)
     Fb_perp = cross(Ma, e) / L
     Re = np.einsum("tmi,tmi->tm", R, e)
     Fa_perp = R - Re[..., None] * e - Fb_perp
@@ -324,19 +404,24 @@ def _solve_forces(structure: Structure, kins: list, bodies: MemberBodies | None,
                             "rank deficient): the member forces are not determined there"
                             ) from None
     n = structure.n_nodes
+    # Reactions act on supported nodes only: the end forces are summed there alone.
+    held = np.flatnonzero(structure.translation_supports.any(axis=1))
     out = []
     for j, (Re, Fa_perp, Fb_perp, ext, _) in enumerate(loads):
         t = 0.5 * Re                   # members between two fixed nodes: symmetric split
         t[:, pattern.loaded_idx] = tl[..., j]
         Fb = t[..., None] * e + Fb_perp
         Fa = (Re - t)[..., None] * e + Fa_perp
-        tot = _to_nodes(conn, n, Fa, Fb)
-        react = (tot - ext[0] - ext[1])[..., :dim]
-        react = np.where(structure.translation_supports[None], react, 0.0)
+        tot = _to_nodes(conn, n, Fa, Fb, held)
+        end_force = np.stack([Fa, Fb], axis=2)
+        P, mg = (np.broadcast_to(x, (x.shape[0], n, 3))[:, held] for x in ext)
+        react = np.zeros(t.shape[:1] + (n, dim))
+        react[:, held] = np.where(structure.translation_supports[None, held],
+                                  (tot - P - mg)[..., :dim], 0.0)
         if not np.all(np.isfinite(react)):
             k = int(np.flatnonzero(~np.isfinite(react).all(axis=(1, 2)))[0])
             raise AnalysisError(f"step {k}", "non-finite forces (degenerate geometry)")
-        out.append(NodalForces(end_force=np.stack([Fa, Fb], axis=2), tension_end=t,
+        out.append(NodalForces(end_force=end_force, tension_end=t,
                                tension_start=t - Re, reactions=react))
     return out
 

@@ -536,10 +536,10 @@ def _cantilever(structure, kin, f, fs, bodies, act_idx):
         return z, z.copy(), z.copy()
     pos = bodies.tube_length[act_idx, None].copy()
     cf = section_forces(structure, kin, f, bodies, positions=pos, members=act_idx)
-    cs = section_forces(structure, kin, fs, bodies, positions=pos, members=act_idx,
-                        at_rest=True)
+    cs = section_tension(structure, kin, fs, bodies, positions=pos, members=act_idx,
+                         at_rest=True)
     # N·e = −T: positive when the base pushes the tube outward (Lacy ``actfor``).
-    return -cf.tension[:, :, 0], -cs.tension[:, :, 0], cf.moment_magnitude[:, :, 0]
+    return -cf.tension[:, :, 0], -cs[:, :, 0], cf.moment_magnitude[:, :, 0]
 
 
 def _actuator_histories(structure: Structure, motion: Motion, res: SimulationResult) -> dict:

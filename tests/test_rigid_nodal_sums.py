@@ -1,0 +1,37 @@
+# SPDX-License-Identifier: MIT
+"""Member-end vectors summed at the nodes (trussfe.rigid.forces._to_nodes, the nodal sums of
+the Newton-Euler equations, Lacy eq. 4.20) equal the product with the node-member incidence
+matrix (scipy.sparse, summing each node's ends in the same order) to the last bit, for all
+nodes and for a subset, on a model with nodes of different degrees and an isolated node."""
+from __future__ import annotations
+
+import numpy as np
+import scipy.sparse as sp
+
+from trussfe.rigid.forces import _to_nodes
+from trussfe.studies.lacy_rigid import double_octahedral_chain
+
+
+def _incidence_sum(conn, n, at_start, at_end):
+    m = conn.shape[0]
+    inc = sp.csr_matrix((np.ones(2 * m), (conn.T.ravel(), np.arange(2 * m))), shape=(n, 2 * m))
+    stacked = np.concatenate([at_start, at_end], axis=1)
+    nt = stacked.shape[0]
+    out = inc @ stacked.transpose(1, 0, 2).reshape(2 * m, -1)
+    return np.asarray(out).reshape(n, nt, 3).transpose(1, 0, 2)
+
+
+def test_nodal_sums_equal_the_incidence_product():
+    rng = np.random.default_rng(3)
+    chain = double_octahedral_chain(4).connectivity
+    # an extra node (index n) with no member, and members listed in a shuffled order
+    n = int(chain.max()) + 2
+    conn = chain[rng.permutation(chain.shape[0])]
+    conn[::3] = conn[::3, ::-1]
+    at_start, at_end = rng.standard_normal((2, 7) + conn.shape[:1] + (3,)) * 10.0 ** \
+        rng.integers(-8, 8, size=(2, 7, conn.shape[0], 1))
+    want = _incidence_sum(conn, n, at_start, at_end)
+    np.testing.assert_array_equal(_to_nodes(conn, n, at_start, at_end), want)
+    nodes = np.array([n - 1, 0, 5, 2])
+    np.testing.assert_array_equal(_to_nodes(conn, n, at_start, at_end, nodes), want[:, nodes])
+    assert not want[:, n - 1].any()
