@@ -135,7 +135,14 @@ def main() -> None:
     ap.add_argument("--quick", action="store_true", help="smaller runs (smoke test)")
     ap.add_argument("--repeat", type=int, default=2,
                     help="runs of each case; the best is shown (default 2; slew 3)")
+    ap.add_argument("--no-numpy-hugepages", action="store_true",
+                    help="turn off numpy's transparent-huge-page advice for its arrays (the "
+                         "trussfe command keeps it); shows what it costs repeated runs in "
+                         "one process")
     args = ap.parse_args()
+    if args.no_numpy_hugepages:
+        np._core.multiarray._set_madvise_hugepage(False)
+        print("numpy huge-page advice: off")
     rep = max(1, args.repeat)
     rows = []
 
