@@ -43,6 +43,7 @@ from ..kinematics.assembly import solve_positions
 from ..mechanics.geometry import lengths, member_vectors, unit_vectors
 from ..model.structure import Structure, build_structure
 from .active import ActiveMember, active_members
+from ..threads import parallel_map, worker_count
 from .linalg import cross
 
 #: Bay template nodes: base N1–N3 (0–2), midplane N4–N6 (3–5), top N7–N9 (6–8).  The top
@@ -226,36 +227,62 @@ def _batched_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, *,
     if pattern.m != pattern.nfree or N == 0:
         return X, bad
     solver = None
-    for it in range(iterations):
-        d = member_vectors(X, conn)
+    # Long runs: the steps in contiguous chunks in worker threads, every iteration in
+    # lockstep (one convergence test over all steps, one factorisation), so each step's
+    # arithmetic is that of the whole run (the same numbers for any number of threads).
+    chunks = min(worker_count(), N // PARALLEL_POSITION_MIN_STEPS)
+    cuts = np.linspace(0, N, max(chunks, 1) + 1).astype(np.int64)
+    spans = list(zip(cuts[:-1], cuts[1:]))
+
+    def residual(ab):
+        a, b = ab
+        d = member_vectors(X[a:b], conn)
         dn = lengths(d)
-        r = dn[:, pattern.loaded_idx] - Lk
-        if np.abs(r).max() <= tolerance * scale:
+        return d, dn, dn[:, pattern.loaded_idx] - Lk[a:b]
+
+    for it in range(iterations):
+        parts = parallel_map(residual, spans)
+        if np.max([np.abs(p[2]).max() for p in parts]) <= tolerance * scale:
             break
         # Chord iterations: the Jacobian is factorised at the guess and refreshed every
         # REFACTOR_EVERY iterations; from a close guess the chord contracts to round-off in
         # a few cheap sweeps, where full Newton would factorise every step every time.
         if it % REFACTOR_EVERY == 0:
-            e = d / dn[..., None]
+            if anchors is None:
+                e = np.concatenate([d / dn[..., None] for d, dn, _ in parts])
+            else:
+                e = np.concatenate([d[k] / dn[k][..., None] for (d, dn, _), k in zip(
+                    parts, (anchors[(anchors >= a) & (anchors < b)] - a for a, b in spans))])
             try:
-                solver = CompatSolver(pattern.rows, pattern.cols, pattern.values(
-                    e if anchors is None else e[anchors]), pattern.m)
+                solver = CompatSolver(pattern.rows, pattern.cols, pattern.values(e),
+                                      pattern.m)
             except SingularStep:
                 return X, bad
             if anchors is not None and not solver.direct:
                 anchors = owner = None              # anchored only with stacked inverses
+                e = np.concatenate([d / dn[..., None] for d, dn, _ in parts])
                 solver = CompatSolver(pattern.rows, pattern.cols, pattern.values(e),
                                       pattern.m)
-        dx = solver.solve(-r, steps=owner)
-        if not np.all(np.isfinite(dx)):
+        if owner is None:
+            dxs = [solver.solve(-np.concatenate([p[2] for p in parts]))]
+            spans_dx = [(0, N)]
+        else:
+            dxs = parallel_map(lambda j: solver.solve(-parts[j][2],
+                                                      steps=owner[spans[j][0]:spans[j][1]]),
+                               range(len(spans)))
+            spans_dx = spans
+        if not all(np.all(np.isfinite(dx)) for dx in dxs):
             return X, bad
-        flat[:, pattern.free_flat] += dx
+        for (a, b), dx in zip(spans_dx, dxs):
+            flat[a:b, pattern.free_flat] += dx
     d = member_vectors(X, conn)
     res = np.abs(lengths(d) - L).max(axis=1)
     moved = np.abs(X - x0).reshape(N, -1).max(axis=1)
     return X, (res <= tolerance * scale) & (moved < 0.1 * scale)
 
 
+#: Steps per worker thread below which the bay positions' Newton solve is not split.
+PARALLEL_POSITION_MIN_STEPS = 2000
 #: Chord iterations between refactorisations of the bay positions' Newton solve.
 REFACTOR_EVERY = 4
 #: Steps per chord Jacobian of the bay positions' Newton solve over all steps.
