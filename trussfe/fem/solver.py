@@ -17,7 +17,8 @@ import scipy.sparse as sp
 
 from ..errors import MechanismError
 from ..linalg import SINGULAR_PIVOT, Factor, FreeBlock, factor, free_submatrix
-from ..linalg.factor import banded_limit
+from ..linalg.factor import PARDISO_MIN_DOF, banded_limit
+from ..linalg.ordering import Points
 from ..linalg.rank import DENSE_LIMIT, stiffness_null_space
 
 log = logging.getLogger(__name__)
@@ -53,7 +54,12 @@ def factorise(K: sp.spmatrix, free: np.ndarray, fe=None, item: str = "structure"
     block = FreeBlock(K, free)
     if block.shape[0] and np.any(block.diagonal() <= 0):     # a DOF nothing is attached to
         _raise_mechanism(block.tocsr(), free, fe, item)
-    fac = factor(block, "spd", backend, singular="flag")
+    points = None
+    if fe is not None and free.size >= PARDISO_MIN_DOF:
+        # where the DOFs sit: PARDISO's Cholesky orders them by geometric nested dissection
+        every = fe.dof_points()
+        points = Points(every.of_unknown[free], every.coords)
+    fac = factor(block, "spd", backend, singular="flag", points=points)
     if fac.is_singular:
         _raise_mechanism(block.tocsr(), free, fe, item)
     log.debug("factorised %d free DOFs (%s)", free.size, fac.backend)

@@ -1,0 +1,170 @@
+# SPDX-License-Identifier: MIT
+"""Fill-reducing ordering of a sparse symmetric matrix from the positions of its unknowns:
+geometric nested dissection.
+
+A structure's unknowns sit at points (joints, points inside subdivided members), and two
+unknowns are coupled only when a member joins their points.  Cutting the points of a region
+in half by a plane across its longest extent therefore separates the two halves once the
+unknowns coupled across the plane are set aside; nested dissection orders each half
+recursively and the separator last, so that eliminating one half makes no fill in the other
+(George, "Nested dissection of a regular finite element mesh", SIAM J. Numer. Anal. 10,
+1973; Miller, Teng, Thurston and Vavasis, "Geometric separators for finite-element meshes",
+SIAM J. Sci. Comput. 19, 1998).
+
+The halves are cut on the points, the separators are chosen on the unknowns: of an
+unknown pair coupled across a cut, one unknown joins the separator, and only the
+components a member couples do (a bar along x couples the x translations of its ends
+only).  For each cut the separator is the side with fewer such unknowns.  On a
+square-on-square space grid of 180 × 180 cells (195,471 unknowns) this takes 0.09 s and
+gives PARDISO a factor of 21.8 million entries (7.8 GFlop) where MKL's nested dissection
+of the same matrix, 0.4 s, gives 22.6 million (8.0 GFlop); at 410 × 410 (10⁶ unknowns),
+0.7 s and 137 million entries (91 GFlop) against 3.3 s and 145 million (106 GFlop).  A
+dissection of the points instead of the unknowns, with every component of a separator
+point in the separator, gives 14.7 GFlop at 180 × 180.
+
+Everything is vectorised: the cuts of one level are made together (a sort of the points by
+region and coordinate), and the level at which two coupled unknowns part is the highest
+bit in which their regions' numbers differ, so that the matrix is read once.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+#: Points per region at which the dissection stops (the regions are then ordered as they
+#: come; PARDISO's supernodes take them as dense blocks).  8, 16 and 32 give factors within
+#: 5 % of one another on the space grids; 16 is the fastest to compute of the two best.
+LEAF_POINTS = 16
+#: The first separator of ``n`` unknowns in ``d`` dimensions may hold at most this many
+#: times ``n^((d−1)/d)`` unknowns for the ordering to be used.  A cut plane through a
+#: well-shaped mesh finds a separator of that order (Miller et al. 1998): 0.2 for a 180 ×
+#: 180 space grid (720 of 195,471 unknowns), ~1.8 for a cube of 30³ frame joints; members
+#: that join far-apart points make it of the order of ``n``, which geometric cuts do not
+#: separate (a graph ordering does better).
+SEPARATOR_FACTOR = 4.0
+
+
+@dataclass(frozen=True)
+class Points:
+    """Where the unknowns of a system sit.
+
+    Attributes
+    ----------
+    of_unknown : ndarray of int, shape (n,)
+        The point of each unknown (several unknowns share a point: a joint's translations
+        and rotations).
+    coords : ndarray, shape (p, d)
+        Coordinates of the points.
+    """
+
+    of_unknown: np.ndarray
+    coords: np.ndarray
+
+
+def _region_bits(coords: np.ndarray, depth: int) -> np.ndarray:
+    """The region of each point after ``depth`` levels of halving: bit ``depth − 1 − l`` of
+    the result says on which side of the level-``l`` cut the point lies.
+
+    Each level cuts every region at the median of its points along its longest extent; the
+    lower half of a region of ``s`` points is the first ``⌊…⌋`` of them by the same formula at
+    every level, so that the regions of level ``l + 1`` are exactly the halves of level ``l``.
+    """
+    g, d = coords.shape
+    rank = np.empty((d, g), dtype=np.int64)
+    for a in range(d):
+        rank[a, np.argsort(coords[:, a], kind="stable")] = np.arange(g)
+    order = np.arange(g)                 # points grouped by region, regions in order
+    bits = np.zeros(g, dtype=np.int64)
+    pos = np.arange(g)
+    for level in range(depth):
+        nr = 1 << level
+        bounds = (np.arange(nr + 1) * g) // nr
+        region = np.repeat(np.arange(nr), np.diff(bounds))
+        P = coords[order]
+        extent = (np.maximum.reduceat(P, bounds[:-1], axis=0)
+                  - np.minimum.reduceat(P, bounds[:-1], axis=0))
+        axis = np.argmax(extent, axis=1)
+        order = order[np.argsort(region * g + rank[axis[region], order])]
+        middle = ((2 * np.arange(nr) + 1) * g) // (2 * nr)
+        bits[order] = (bits[order] << 1) | (pos >= middle[region])
+    return bits
+
+
+def nested_dissection(indptr: np.ndarray, indices: np.ndarray, points: Points,
+                      leaf: int = LEAF_POINTS,
+                      separator_factor: float = SEPARATOR_FACTOR) -> np.ndarray | None:
+    """A nested-dissection ordering of a symmetric sparse matrix from its unknowns' points.
+
+    Parameters
+    ----------
+    indptr, indices : ndarray of int
+        Sparsity of the matrix (CSR, zero-based; its upper triangle is enough).
+    points : Points
+        Where the unknowns sit.
+    leaf : int
+        Points per region at which the dissection stops.
+    separator_factor : float
+        The first separator may hold at most ``separator_factor · n^((d−1)/d)`` unknowns.
+
+    Returns
+    -------
+    ndarray of int, shape (n,) or None
+        ``perm`` with ``perm[k]`` the unknown eliminated k-th; None when the first separator
+        holds more than ``separator_factor · n^((d−1)/d)`` unknowns (members join far-apart
+        points: a graph ordering does better).
+
+    Examples
+    --------
+    A chain of five points, one unknown each: the middle one is eliminated last.
+
+    >>> import scipy.sparse as sp
+    >>> A = sp.csr_matrix(sp.diags([1.0, 2.0, 1.0], [-1, 0, 1], shape=(5, 5)))
+    >>> pts = Points(np.arange(5), np.arange(5.0)[:, None])
+    >>> nested_dissection(A.indptr, A.indices, pts, leaf=1).tolist()
+    [0, 1, 4, 3, 2]
+    """
+    n = indptr.size - 1
+    of = np.asarray(points.of_unknown, dtype=np.int64)
+    used, point = np.unique(of, return_inverse=True)
+    coords = np.asarray(points.coords, dtype=float)[used]
+    g = used.size
+    depth = int(np.ceil(np.log2(g / leaf))) if g > leaf else 0
+    region = _region_bits(coords, depth)[point]           # (n,)
+    rows = np.repeat(np.arange(n, dtype=np.int64), np.diff(indptr))
+    cols = np.asarray(indices, dtype=np.int64)
+    differ = region[rows] ^ region[cols]
+    cut = np.flatnonzero((differ != 0) & (cols > rows))          # upper, across a cut
+    r, c, differ = rows[cut], cols[cut], differ[cut]
+    del rows, cols
+    # the level at which the pair parts: the highest differing bit of their regions
+    width = np.frexp(differ.astype(float))[1].astype(np.int64)      # bit length
+    level = depth - width
+    r_upper = ((region[r] >> (width - 1)) & 1).astype(bool)
+    upper = np.where(r_upper, r, c)
+    lower = np.where(r_upper, c, r)
+    # each cut (a node of the dissection tree, numbered as in a heap) takes the side with
+    # fewer distinct unknowns coupled across it
+    cut_id = (np.int64(1) << level) + (region[r] >> width)
+    size = 1 << (depth + 1)
+    levels = max(depth, 1)
+
+    def distinct(side):
+        mark = np.zeros(n * levels, dtype=bool)
+        mark[side * levels + level] = True
+        k = np.flatnonzero(mark)
+        u, lv = k // levels, k % levels
+        return np.bincount((np.int64(1) << lv) + (region[u] >> (depth - lv)), minlength=size)
+
+    take_upper = distinct(upper) <= distinct(lower)
+    chosen = np.where(take_upper[cut_id], upper, lower)
+    sep_level = np.full(n, depth, dtype=np.int64)
+    np.minimum.at(sep_level, chosen, level)               # the first cut that takes it
+    d = coords.shape[1]
+    if depth > 0 and np.count_nonzero(sep_level == 0) > separator_factor * n ** ((d - 1) / d):
+        return None
+    # post-order of the dissection tree: a tree node comes after every region up to the
+    # last region below it, and after its descendants with the same last region
+    shift = depth - sep_level
+    last = (((region >> shift) + 1) << shift) - 1
+    return np.lexsort((shift, last))
