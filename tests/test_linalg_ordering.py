@@ -154,3 +154,49 @@ def test_mechanism_still_detected_in_geometric_order():
     sup[0, :3] = True
     with pytest.raises(MechanismError, match="mechanism"):
         solve_static(s.variant(supports=sup), "truss")
+
+
+def braced_cube(k: int):
+    """A cubic lattice of k³ joints with every edge, face and body diagonal of its cells (1 m),
+    its bottom face pinned."""
+    from trussfe.model.structure import build_structure
+    from test_grid_solvers import ALUMINIUM, TUBE
+    g = np.stack(np.meshgrid(*[np.arange(k)] * 3, indexing="ij"), -1).reshape(-1, 3)
+    idx = np.arange(k ** 3).reshape(k, k, k)
+    members = [np.column_stack([idx[:k - a, :k - b, :k - c].ravel(), idx[a:, b:, c:].ravel()])
+               for a, b, c in [(1, 0, 0), (0, 1, 0), (0, 0, 1), (1, 1, 0), (1, 0, 1), (0, 1, 1),
+                               (1, 1, 1)]]
+    return build_structure(g.astype(float), np.vstack(members), section=TUBE,
+                           material=ALUMINIUM,
+                           supports={int(i): "xyz" for i in idx[:, :, 0].ravel()},
+                           loads={int(idx[-1, -1, -1]): [0.0, 0.0, -1000.0]}, name="cube")
+
+
+def test_declines_a_three_dimensional_lattice():
+    """A cut plane through a braced cube holds ~1.4 n^(2/3) unknowns, more than the 4√n of a
+    two-dimensional mesh: PARDISO orders it; a space grid's cuts are lines (1.6√n)."""
+    for structure, taken in ((braced_cube(14), False), (space_grid(30), True)):
+        fe = discretise(structure, "truss")
+        A = free_submatrix(fe.stiffness(), fe.free)
+        every = fe.dof_points()
+        pts = Points(every.of_unknown[fe.free], every.coords)
+        assert (nested_dissection(A.indptr, A.indices, pts) is not None) == taken
+
+
+@needs_pardiso
+def test_member_dofs_leave_the_order_to_pardiso():
+    """A grid of pinned beams (each end's own rotations) is ordered by PARDISO; loaded at
+    its joints only, its bars carry the axial forces of the truss model of the same grid
+    (an independent discretisation: three DOFs per joint, no rotations)."""
+    from trussfe.fem.solver import joint_dofs_only
+    s = space_grid(24)
+    fe = discretise(s, "pinned-beam", subdivisions=1)
+    assert fe.free.size >= PARDISO_MIN_DOF and not joint_dofs_only(fe)
+    assert joint_dofs_only(discretise(s, "truss"))
+    fac = factorise(fe.stiffness(), fe.free, fe=fe)
+    assert (fac.backend, fac.ordering) == ("pardiso", "pardiso")
+    assert not np.any(s.gravity)
+    res = solve_static(s, "pinned-beam", subdivisions=1)
+    ref = solve_static(s, "truss", backend="superlu")
+    N = ref.axial_force
+    assert_allclose(res.axial_force, N, rtol=0, atol=1e-7 * np.abs(N).max())

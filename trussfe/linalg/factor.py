@@ -41,9 +41,9 @@ inside its members), the Cholesky factorisation takes the geometric nested disse
 :func:`~trussfe.linalg.ordering.nested_dissection` instead: on the space grids it is 4–5×
 faster to compute and gives a factor as sparse or sparser (180 × 180 cells: 7.8 against 8.0
 GFlop; 410 × 410: 91 against 106 GFlop).  The ordering declines, and PARDISO orders, when
-its first cut's separator is larger than a cut plane through a well-shaped mesh
-gives (:data:`~trussfe.linalg.ordering.SEPARATOR_FACTOR`: members joining far-apart
-points).  The ordering changes the round-off of the solution only.
+its first cut's separator is larger than a cut through a two-dimensional mesh gives
+(:data:`~trussfe.linalg.ordering.SEPARATOR_FACTOR`: a three-dimensional lattice, members
+joining far-apart points).  The ordering changes the round-off of the solution only.
 
 Singularity
 -----------

@@ -15,12 +15,18 @@ The halves are cut on the points, the separators are chosen on the unknowns: of 
 unknown pair coupled across a cut, one unknown joins the separator, and only the
 components a member couples do (a bar along x couples the x translations of its ends
 only).  For each cut the separator is the side with fewer such unknowns.  On a
-square-on-square space grid of 180 × 180 cells (195,471 unknowns) this takes 0.09 s and
+square-on-square space grid of 180 × 180 cells (195,471 unknowns) this takes 0.06 s and
 gives PARDISO a factor of 21.8 million entries (7.8 GFlop) where MKL's nested dissection
-of the same matrix, 0.4 s, gives 22.6 million (8.0 GFlop); at 410 × 410 (10⁶ unknowns),
-0.7 s and 137 million entries (91 GFlop) against 3.3 s and 145 million (106 GFlop).  A
+of the same matrix, ~0.4 s, gives 22.6 million (8.0 GFlop); at 410 × 410 (10⁶ unknowns),
+0.4 s and 137 million entries (91 GFlop) against ~3 s and 145 million (106 GFlop).  A
 dissection of the points instead of the unknowns, with every component of a separator
 point in the separator, gives 14.7 GFlop at 180 × 180.
+
+It is meant for layers of joints — grids, plates, shells — whose cuts are lines of ~√n
+unknowns.  A cut plane through a three-dimensional lattice is improved on by graph
+partitioning (MKL's nested dissection of a braced cube of 30³ joints: 76 against 103
+GFlop), so the ordering declines when its first separator is larger than a layer's
+(:data:`SEPARATOR_FACTOR`).
 
 Everything is vectorised: the cuts of one level are made together (a sort of the points by
 region and coordinate), and the level at which two coupled unknowns part is the highest
@@ -36,12 +42,14 @@ import numpy as np
 #: come; PARDISO's supernodes take them as dense blocks).  8, 16 and 32 give factors within
 #: 5 % of one another on the space grids; 16 is the fastest to compute of the two best.
 LEAF_POINTS = 16
-#: The first separator of ``n`` unknowns in ``d`` dimensions may hold at most this many
-#: times ``n^((d−1)/d)`` unknowns for the ordering to be used.  A cut plane through a
-#: well-shaped mesh finds a separator of that order (Miller et al. 1998): 0.2 for a 180 ×
-#: 180 space grid (720 of 195,471 unknowns), ~1.8 for a cube of 30³ frame joints; members
-#: that join far-apart points make it of the order of ``n``, which geometric cuts do not
-#: separate (a graph ordering does better).
+#: The first separator of ``n`` unknowns may hold at most this many times ``√n`` unknowns
+#: for the ordering to be used: what a cut through a two-dimensional mesh (a grid, plate or
+#: shell of joints) gives, with margin — 1.6 √n on the square-on-square space grids (243
+#: of 21,951 unknowns at 60 × 60, 723 of 195,471 at 180 × 180).  A cut plane through a
+#: three-dimensional lattice holds ~1.4 n^(2/3) (7–9 √n for braced cubes of 20³ and 30³
+#: joints), where graph partitioning does better than planes (MKL's nested dissection: 76
+#: against 103 GFlop at 30³); members joining far-apart points make it of the order of
+#: ``n``.
 SEPARATOR_FACTOR = 4.0
 
 
@@ -123,14 +131,14 @@ def nested_dissection(indptr: np.ndarray, indices: np.ndarray, points: Points,
     leaf : int
         Points per region at which the dissection stops.
     separator_factor : float
-        The first separator may hold at most ``separator_factor · n^((d−1)/d)`` unknowns.
+        The first separator may hold at most ``separator_factor · √n`` unknowns.
 
     Returns
     -------
     ndarray of int, shape (n,) or None
         ``perm`` with ``perm[k]`` the unknown eliminated k-th; None when the first separator
-        holds more than ``separator_factor · n^((d−1)/d)`` unknowns (members join far-apart
-        points: a graph ordering does better).
+        holds more than ``separator_factor · √n`` unknowns (a three-dimensional lattice, or
+        members joining far-apart points: a graph ordering does better).
 
     Examples
     --------
@@ -185,8 +193,7 @@ def nested_dissection(indptr: np.ndarray, indices: np.ndarray, points: Points,
     chosen = np.where(take_upper[cut_id], upper, lower)
     sep_level = np.full(n, depth, dtype=np.int64)
     np.minimum.at(sep_level, chosen, level)               # the first cut that takes it
-    d = coords.shape[1]
-    if depth > 0 and np.count_nonzero(sep_level == 0) > separator_factor * n ** ((d - 1) / d):
+    if depth > 0 and np.count_nonzero(sep_level == 0) > separator_factor * np.sqrt(n):
         return None
     # post-order of the dissection tree: a tree node comes after every region up to the
     # last region below it, and after its descendants with the same last region

@@ -26,6 +26,9 @@ Two factorisations:
   factorisation 0.35 s; 22.6 million entries in L, 8 GFlop), and its solves take 0.025 s
   against 0.13 s.  A pivot that is not positive stops it: the caller then takes
   :func:`factorise`.
+  Given the points of the unknowns, it factorises in their geometric nested-dissection
+  order (:mod:`trussfe.linalg.ordering`, ``iparm(5) = 1``): 0.06 s of ordering and 0.15 s of
+  analysis instead of 0.6 s for MKL's ordering and analysis at 180 × 180.
 * :func:`factorise` — Bunch–Kaufman ``LDLᵀ`` (matrix type −2) or LU (type 11) with
   PARDISO's default settings, which reports the inertia and the pivots it had to perturb.
 
