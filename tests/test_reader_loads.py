@@ -95,7 +95,7 @@ def test_large_table_on_mesh_nodes(tmp_path):
     assert_array_equal(s.loads[:, :3], want)
 
 
-@pytest.mark.parametrize("key", ["07", "100", "+7", "x7"])
+@pytest.mark.parametrize("key", ["07", "100", "+7", "x7", "-1", "7_0", " 7"])
 def test_large_table_on_mesh_nodes_bad_key(tmp_path, key):
     """Only the decimal number of a node names it ('07', '+7' do not; 100 is past the
     last of 100 nodes): the entry is reported as in a small table."""

@@ -426,15 +426,15 @@ def _node_rows(keys: list, node_index) -> np.ndarray:
 
     Nodes numbered 0 … n − 1 (a mesh model, :class:`~trussfe.model.ids.IdIndex`) are read
     in one vectorised pass: a key names node ``i`` when it is the decimal ``str(i)``."""
-    if isinstance(node_index, IdIndex) and all(type(k) is str for k in keys):
-        text = np.array(keys, dtype=str)
-        if text.size and np.all(np.char.isdigit(text)):
-            try:
-                rows = text.astype(np.int64)
-            except (ValueError, OverflowError):
-                rows = None
-            if (rows is not None and np.all(rows < len(node_index))
-                    and np.array_equal(rows.astype(str), text)):    # canonical: no "07"
+    if isinstance(node_index, IdIndex):
+        try:
+            numbers = list(map(int, keys))
+        except (ValueError, TypeError):
+            numbers = None
+        # canonical spelling only: int() also reads "07", "+7", " 7" and "7_0"
+        if numbers is not None and list(map(str, numbers)) == keys:
+            rows = np.array(numbers, dtype=np.int64)
+            if rows.size and rows.min() >= 0 and rows.max() < len(node_index):
                 return rows
     return np.array([node_index[str(k)] for k in keys], dtype=np.int64)
 
