@@ -20,7 +20,7 @@ from pathlib import Path
 from trussfe.cli import main
 
 SCRIPT = r'''
-import json, logging, os, signal, sys, tempfile, warnings
+import json, logging, os, signal, sys, warnings
 from pathlib import Path
 
 import matplotlib
@@ -59,7 +59,7 @@ from trussfe._resources import mesh_path
 from trussfe.report_figures import render_shape
 from trussfe.rigid.output import write_plots
 
-out = Path(tempfile.mkdtemp(prefix="trussfe-state-"))
+out = Path(os.environ["TRUSSFE_STATE_OUT"])   # the test's own temporary folder
 st = api.static(mesh_path("triangular_truss_static.toml"))
 mo = api.modes(mesh_path("double_octahedron_equilibrium.toml"), count=3)
 sim = api.simulate(mesh_path("triangular_truss_motion_active.toml"),
@@ -79,12 +79,13 @@ print(json.dumps({"changed": changed, "before": {k: before[k] for k in changed},
 '''
 
 
-def test_analyses_and_plots_leave_process_state_unchanged():
+def test_analyses_and_plots_leave_process_state_unchanged(tmp_path):
     """Static, modes, a short rigid-body simulation, its thesis-style figures and a
     member-coloured shape: nothing process-wide differs after them (and the figures exist)."""
     env = {k: v for k, v in os.environ.items() if k not in ("MPLBACKEND",
                                                              "TRUSSFE_PLOT_BACKEND")}
     env["MPLBACKEND"] = "svg"                       # a backend trussfe must not replace
+    env["TRUSSFE_STATE_OUT"] = str(tmp_path)
     env["PYTHONPATH"] = os.pathsep.join([str(Path(__file__).resolve().parents[1]),
                                          env.get("PYTHONPATH", "")])
     run = subprocess.run([sys.executable, "-c", SCRIPT], env=env, capture_output=True,

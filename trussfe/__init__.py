@@ -16,17 +16,11 @@ has one function per analysis, available here::
 use, so that ``import trussfe`` stays light; so is ``show``, which draws a model (and its
 static results) to a PNG.
 """
-from importlib.metadata import PackageNotFoundError, version as _version
-
-try:
-    __version__ = _version("trussfe")
-except PackageNotFoundError:  # running from a source tree
-    __version__ = "0.0.0+unknown"
-
-from .errors import AnalysisError, InputError, MechanismError, TrussfeError  # noqa: E402
-from .io.model_file import read_model  # noqa: E402
-from .model.sections import Material, Section  # noqa: E402
-from .model.structure import Structure, build_structure  # noqa: E402
+from ._version import __version__   # the one place the version is written (pyproject reads it)
+from .errors import AnalysisError, InputError, MechanismError, TrussfeError
+from .io.model_file import read_model
+from .model.sections import Material, Section
+from .model.structure import Structure, build_structure
 
 #: Analyses of the Python API, imported from :mod:`trussfe.api` on first use.
 _API = ("static", "modes", "buckling", "simulate", "actuators", "elastic", "transient",

@@ -22,7 +22,7 @@ from typing import Iterator
 
 import numpy as np
 
-from .. import __version__
+from .._version import __version__
 from ..allocator import tune_allocator
 from ..errors import TrussfeError, one_line
 from ..io.output import output_transaction

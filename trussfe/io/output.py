@@ -94,6 +94,9 @@ class OutputTransaction:
 
 _TRANSACTION: contextvars.ContextVar[OutputTransaction | None] = contextvars.ContextVar(
     "trussfe_output_transaction", default=None)
+# The scratch folder of the innermost scratch_files() block, None outside one.
+_SCRATCH: contextvars.ContextVar[Path | None] = contextvars.ContextVar("trussfe_scratch",
+                                                                      default=None)
 
 
 @contextlib.contextmanager
@@ -122,12 +125,27 @@ def output_transaction() -> Iterator[OutputTransaction]:
 def scratch_files() -> Iterator[None]:
     """Files written inside the block are the program's own working files (a validation case's
     temporary model file, a study's figure read back at once), not outputs of the run: they
-    are written at once, outside any :func:`output_transaction` around the block."""
+    are written at once, outside any :func:`output_transaction` around the block, and the
+    folders :func:`working_folder` makes inside the block are removed when it ends."""
     token = _TRANSACTION.set(None)
-    try:
-        yield
-    finally:
-        _TRANSACTION.reset(token)
+    with tempfile.TemporaryDirectory(prefix="trussfe-scratch-") as folder:
+        scratch = _SCRATCH.set(Path(folder))
+        try:
+            yield
+        finally:
+            _SCRATCH.reset(scratch)
+            _TRANSACTION.reset(token)
+
+
+def working_folder(prefix: str) -> Path:
+    """A new empty folder for files a study writes and hands back by path (its figures).
+
+    Inside :func:`scratch_files` the folder lies in the block's scratch folder and goes with
+    it (the validation report reads the figures back and embeds them); called directly, the
+    files are the caller's result and the folder stays in the system's temporary folder.
+    """
+    parent = _SCRATCH.get()
+    return Path(tempfile.mkdtemp(prefix=prefix, dir=None if parent is None else parent))
 
 
 @contextlib.contextmanager

@@ -19,6 +19,7 @@ from ..kinematics.trace import trace_mechanism
 from ..kinematics.unfolding import tangent_cone
 from ..mechanics.geometry import member_lengths
 from ..models.mechanisms import CATALOGUE, section6_foldable
+from ..io.output import working_folder
 
 # --------------------------------------------------------------------------- Hortobágyi sec. 4
 #: Hortobágyi section 4 assembly with l = 1: joints 1, 2 free; 3 at the origin and 4 at (l, 0)
@@ -218,8 +219,6 @@ def section6_unfolding_traces(remove: int = 0, *, step: float = 0.05, steps: int
 
 def _section6_figure(results: dict) -> dict:
     """Node trajectories of the four unfolding shapes (two rows: the two removed bars)."""
-    import tempfile
-    from pathlib import Path
 
     from ..io.figures import subplots
     fig, axes = subplots(len(results), 4, figsize=(14, 1.0 + 1.3 * len(results)), squeeze=False)
@@ -242,7 +241,7 @@ def _section6_figure(results: dict) -> dict:
     fig.suptitle("Hortobágyi section 6 (construction): four unfolding shapes from the folded "
                  "state (grey) — trajectories of P1–P4, final state dark", fontsize=10)
     fig.tight_layout()
-    path = Path(tempfile.mkdtemp(prefix="trussfe_sec6_")) / "section6_unfolding.png"
+    path = working_folder("trussfe_sec6_") / "section6_unfolding.png"
     fig.savefig(path, dpi=110)
     return {"section6_unfolding": str(path)}
 

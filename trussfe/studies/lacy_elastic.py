@@ -22,7 +22,6 @@ from __future__ import annotations
 
 import logging
 import math
-import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -38,6 +37,7 @@ from ..rigid.simulate import SimulationResult, simulate
 from ..rigid.slew import TopPlaneInverse
 from ..response.along_motion import ElasticResponse, compare_with_rigid, elastic_along_motion
 from ..response.strains import gauge_strains, static_strain, zeroed_strain
+from ..io.output import working_folder
 
 log = logging.getLogger(__name__)
 
@@ -114,7 +114,7 @@ def slew(which: int, subdivisions: int = 6, steps: int | None = None
 
 # ------------------------------------------------------------------ figures
 def _figure_dir() -> Path:
-    return Path(tempfile.mkdtemp(prefix="trussfe-elastic-"))
+    return working_folder("trussfe-elastic-")
 
 
 def _plot_rigid_fe(path: Path, t, curves, title: str, ylabel: str) -> str:

@@ -19,6 +19,7 @@ from ..model.structure import Structure, build_structure
 from ..fem.buckling import solve_buckling
 from ..fem.modal import solve_modes
 from ..mechanics.euler import member_euler_loads
+from ..io.output import working_folder
 
 #: Lacy, Appendix A/C code: ``E = 71.0e9``, ``ro = 2711.5``, ``G = 26.2e9``.
 ALUMINIUM = Material("aluminium", E=71.0e9, G=26.2e9, density=2711.5)
@@ -76,8 +77,6 @@ def lacy_buckling_allowables(subdivisions: int = 8) -> dict:
 def _axial_modes_figure(x: np.ndarray, shapes: np.ndarray, L: float) -> dict:
     """The fixed–free bar's first axial modes against sin((2n − 1)πx/2L), as a PNG in a
     temporary folder."""
-    import tempfile
-    from pathlib import Path
 
     from ..io.figures import subplots
     from ..io.output import atomic_path
@@ -95,7 +94,7 @@ def _axial_modes_figure(x: np.ndarray, shapes: np.ndarray, L: float) -> dict:
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    path = Path(tempfile.mkdtemp(prefix="trussfe_modal_")) / "axial_bar_modes.png"
+    path = working_folder("trussfe_modal_") / "axial_bar_modes.png"
     with atomic_path(path) as tmp:
         fig.savefig(tmp, dpi=120, format="png")
     return {"axial_bar_modes": str(path)}

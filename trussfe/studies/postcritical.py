@@ -26,6 +26,7 @@ from ..nonlinear.analysis import run_postcritical
 from ..nonlinear.buckling import linear_buckling
 from ..nonlinear.model import NonlinearModel
 from ..nonlinear.path import follow_path
+from ..io.output import working_folder
 
 
 # ------------------------------------------------------------------------- closed forms
@@ -101,10 +102,8 @@ def elastica_load_ratio(deflection_ratio: float) -> float:
 # ------------------------------------------------------------------------- studies
 def _figure(result, name: str) -> dict:
     """The load–displacement plot of a path as a PNG in a temporary folder."""
-    import tempfile
-    from pathlib import Path
     from ..nonlinear.plot import write_plot
-    path = Path(tempfile.mkdtemp(prefix="trussfe_postcritical_")) / f"{name}.png"
+    path = working_folder("trussfe_postcritical_") / f"{name}.png"
     write_plot(path, result)
     return {name: str(path)}
 
@@ -175,9 +174,6 @@ def _column_figure(name: str, title: str, imperfect: tuple[np.ndarray, np.ndarra
     """P/P_E against the mid-span deflection δ/L of the imperfect path and of the perfect
     column's secondary branch, with the elastica (Timoshenko & Gere §2.7), as a PNG in a
     temporary folder."""
-    import tempfile
-    from pathlib import Path
-
     from ..io.figures import subplots
     from ..io.output import atomic_path
 
@@ -195,7 +191,7 @@ def _column_figure(name: str, title: str, imperfect: tuple[np.ndarray, np.ndarra
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    path = Path(tempfile.mkdtemp(prefix="trussfe_postcritical_")) / f"{name}.png"
+    path = working_folder("trussfe_postcritical_") / f"{name}.png"
     with atomic_path(path) as tmp:
         fig.savefig(tmp, dpi=120, format="png")
     return {name: str(path)}

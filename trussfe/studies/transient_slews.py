@@ -15,7 +15,6 @@ from __future__ import annotations
 import itertools
 import logging
 import math
-import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -26,6 +25,7 @@ from ..rigid.active import ActiveMember
 from ..rigid.motion import Motion, third_order_motion
 from .lacy_rigid import L2, L3MIN, triangular_truss
 from ..response.transient import TransientResult, transient_response
+from ..io.output import working_folder
 
 log = logging.getLogger(__name__)
 
@@ -324,7 +324,7 @@ def validation_transient_triangle(figures: bool = True) -> dict:
     out["convergence"] = conv
     out["f1_hz"] = float(slow.frequencies_hz[0])
     if figures:
-        folder = Path(tempfile.mkdtemp(prefix="trussfe_transient_"))
+        folder = working_folder("trussfe_transient_")
         out["figures"] = {
             "transient_follower_axial": str(history_figure(
                 results, folder / "follower_axial.png", 0)),

@@ -8,7 +8,7 @@ import html
 import re
 from pathlib import Path
 
-from .. import __version__
+from .._version import __version__
 from ..io.output import atomic_dir
 from .engine import CaseResult, QuantityResult
 
