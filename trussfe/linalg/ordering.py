@@ -28,9 +28,9 @@ partitioning (MKL's nested dissection of a braced cube of 30³ joints: 76 agains
 GFlop), so the ordering declines when its first separator is larger than a layer's
 (:data:`SEPARATOR_FACTOR`).
 
-Everything is vectorised: the cuts of one level are made together (a sort of the points by
-region and coordinate), and the level at which two coupled unknowns part is the highest
-bit in which their regions' numbers differ, so that the matrix is read once.
+Everything is vectorised: the cuts of one level are made together (a stable partition of
+one order of the points per axis), and the level at which two coupled unknowns part is the
+highest bit in which their regions' numbers differ, so that the matrix is read once.
 """
 from __future__ import annotations
 
