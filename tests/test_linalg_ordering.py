@@ -200,3 +200,29 @@ def test_member_dofs_leave_the_order_to_pardiso():
     ref = solve_static(s, "truss", backend="superlu")
     N = ref.axial_force
     assert_allclose(res.axial_force, N, rtol=0, atol=1e-7 * np.abs(N).max())
+
+
+@needs_pardiso
+def test_plane_truss_in_geometric_order():
+    """A plane truss of 110 × 110 joints (squares with both diagonals, one edge pinned;
+    23,980 free DOFs): ordered by its points in two dimensions, with the member forces of
+    SuperLU's solve."""
+    from trussfe.model.structure import build_structure
+    from test_grid_solvers import ALUMINIUM, TUBE
+    k = 110
+    xy = np.stack(np.meshgrid(np.arange(k), np.arange(k), indexing="ij"), -1).reshape(-1, 2)
+    idx = np.arange(k * k).reshape(k, k)
+    bars = [np.column_stack([idx[:k - a, :k - b].ravel(), idx[a:, b:].ravel()])
+            for a, b in [(1, 0), (0, 1), (1, 1)]]
+    bars.append(np.column_stack([idx[1:, :k - 1].ravel(), idx[:k - 1, 1:].ravel()]))
+    s = build_structure(xy.astype(float), np.vstack(bars), section=TUBE, material=ALUMINIUM,
+                        supports={int(i): "xy" for i in idx[0]},
+                        loads={int(idx[-1, -1]): [0.0, -1000.0]}, name="plate")
+    fe = discretise(s, "truss")
+    assert fe.free.size >= PARDISO_MIN_DOF
+    fac = factorise(fe.stiffness(), fe.free, fe=fe)
+    assert (fac.backend, fac.ordering) == ("pardiso", "geometric")
+    res = solve_static(s, "truss")
+    ref = solve_static(s, "truss", backend="superlu")
+    N = ref.axial_force
+    assert_allclose(res.axial_force, N, rtol=0, atol=1e-9 * np.abs(N).max())
