@@ -152,7 +152,12 @@ def nested_dissection(indptr: np.ndarray, indices: np.ndarray, points: Points,
     """
     n = indptr.size - 1
     of = np.asarray(points.of_unknown, dtype=np.int64)
-    used, point = np.unique(of, return_inverse=True)
+    # the points that hold an unknown, numbered in their order (a count, not a sort)
+    held = np.zeros(len(points.coords), dtype=bool)
+    held[of] = True
+    used = np.flatnonzero(held)
+    number = np.cumsum(held) - 1
+    point = number[of]
     coords = np.asarray(points.coords, dtype=float)[used]
     g = used.size
     depth = int(np.ceil(np.log2(g / leaf))) if g > leaf else 0
