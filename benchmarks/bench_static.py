@@ -24,6 +24,7 @@ Usage::
     python benchmarks/bench_static.py --large         # adds 100,000 bays and a 10^6-DOF grid
     python benchmarks/bench_static.py --no-opensees
     python benchmarks/bench_static.py --repeat 3      # fastest of 3 runs in each program
+    python benchmarks/bench_static.py --large --only "10000 " 180x180 410x410
 
 Targets (2-core machine): 10,000 bays read + assemble + solve ≤ 0.5 s and ≥ 6× OpenSeesPy;
 100,000 bays ≤ 6 s; 180 × 180 grid ≥ 6× OpenSeesPy; a 10^6-DOF grid (410 × 410 cells) ≤ 8 s.
@@ -176,12 +177,17 @@ def main() -> None:
     ap.add_argument("--no-opensees", action="store_true")
     ap.add_argument("--repeat", type=int, default=1,
                     help="runs of each model in each program; the fastest is shown (default 1)")
+    ap.add_argument("--only", nargs="+", metavar="TEXT",
+                    help="run only the models whose name contains one of these, e.g. "
+                         "--only 10000 180x180")
     args = ap.parse_args()
     repeat = max(1, args.repeat)
     chains = [10, 100, 1000, 10_000] + ([100_000] if args.large else [])
     grids = [20, 60, 120, 180] + ([410] if args.large else [])      # 410 × 410: 1.01e6 DOF
     cases = [(f"chain {n} bays", lambda n=n: double_octahedral_chain(n)) for n in chains]
     cases += [(f"grid {n}x{n}", lambda n=n: space_grid(n)) for n in grids]
+    if args.only:
+        cases = [c for c in cases if any(t in c[0] for t in args.only)]
     head = (f"{'model':<20}{'DOF':>9}{'read s':>9}{'assemble s':>11}{'solve s':>9}"
             f"{'total s':>9}{'cpu s':>8}{'residual':>10}{'backend':>10}{'OpenSees s':>11}"
             f"{'speed-up':>9}{'max |dN| N':>12}{'peak MiB':>10}")

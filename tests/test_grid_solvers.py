@@ -126,6 +126,19 @@ def test_bandwidth_lower_bound_is_a_bound():
     assert bandwidth_lower_bound(Kc) < BANDED_MAX_BANDWIDTH
 
 
+def test_bandwidth_lower_bound_uses_the_eccentricity():
+    """The bound is ⌈(n − 1)/(2e)⌉ with e the eccentricity of vertex 0, here from scipy's
+    unweighted shortest paths: for a grid (a short path of predecessors, walked one by one)
+    and for a path longer than WALK_STEPS (depths taken by pointer doubling)."""
+    from scipy.sparse.csgraph import shortest_path
+    from trussfe.linalg.banded import WALK_STEPS
+    Kg, _ = _free_stiffness(space_grid(20))
+    path = sp.csr_matrix(sp.diags([1.0, 2.0, 1.0], [-1, 0, 1], shape=(3 * WALK_STEPS,) * 2))
+    for K in (Kg, path):
+        e = int(shortest_path(abs(K), indices=0, unweighted=True).max())
+        assert bandwidth_lower_bound(K) == int(np.ceil((K.shape[0] - 1) / (2 * e)))
+
+
 def test_auto_rule_bands_a_long_chain_and_not_a_grid():
     """The automatic rule (no timing): a 300-bay chain (≥ BANDED_MIN_DOF unknowns, narrow)
     gets the banded Cholesky; a 60 × 60 grid (≥ PARDISO_MIN_DOF unknowns, wide) gets the

@@ -53,6 +53,7 @@ from skfem import Basis, ElementLineHermite, ElementLineP1, MeshLine1, asm
 
 from ..budget import require
 from ..errors import InputError
+from ..linalg.ordering import Points
 from ..mechanics.geometry import local_axes, member_vectors, unit_vectors
 from ..mechanics.member_loads import deflection_shapes, rotation_shapes, shear_parameter
 from ..mechanics.mass import mass_per_length, twist_inertia_per_length
@@ -1098,6 +1099,49 @@ class FEModel:
             lastmask = j[els] == k[emem[els]] - 1
             out[emem[els][lastmask], k[emem[els]][lastmask]] = glob[lastmask, 1]
         return out
+
+    def dof_points(self) -> Points:
+        """Where every DOF sits (:class:`~trussfe.linalg.ordering.Points`, for the geometric
+        ordering of :func:`trussfe.linalg.factor`): a joint's translations and rotations and
+        the rotations a member end owns at the joint, a subdivided member's interior DOFs at
+        their station.
+
+        Returns
+        -------
+        Points
+            ``of_unknown`` of shape (n_dof,) indexing ``coords`` of shape
+            (n_nodes + interior points, dim).
+        """
+        s = self.structure
+        n = s.n_nodes
+        m = s.n_members
+        of = np.full(self.n_dof, -1, dtype=np.int64)
+        nd = self.node_dofs
+        ok = nd >= 0
+        of[nd[ok]] = np.nonzero(ok)[0]
+        pd = self.private_dofs                         # (m, 2, r): at the member's end joint
+        ok = pd >= 0
+        if ok.any():
+            mem, end, _ = np.nonzero(ok)
+            of[pd[ok]] = s.connectivity[mem, end]
+        pts = self.interior_dofs                       # (p, ncomp): inside members
+        mem = self.interior_member
+        if pts.size:
+            off = np.zeros(m + 1, dtype=np.int64)
+            np.cumsum(np.bincount(mem, minlength=m), out=off[1:])
+            k = np.arange(mem.size) - off[mem] + 1     # station k of the member's k_i
+            frac = k / self.member_subdivisions[mem]
+            start = s.coords[s.connectivity[mem, 0]]
+            inner = start + frac[:, None] * (s.coords[s.connectivity[mem, 1]] - start)
+            ok = pts >= 0
+            of[pts[ok]] = n + np.nonzero(ok)[0]
+        else:
+            inner = np.zeros((0, s.dim))
+        coords = np.vstack([s.coords, inner])
+        if np.any(of < 0):             # a DOF of no point: at the centre (ordered late)
+            of[of < 0] = coords.shape[0]
+            coords = np.vstack([coords, coords.mean(axis=0)])
+        return Points(of, coords)
 
     def node_values(self, u_global: np.ndarray) -> np.ndarray:
         """Global vector → per-node array (n_nodes, ndof_node); 0 where a DOF is absent."""

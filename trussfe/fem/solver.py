@@ -17,7 +17,8 @@ import scipy.sparse as sp
 
 from ..errors import MechanismError
 from ..linalg import SINGULAR_PIVOT, Factor, FreeBlock, factor, free_submatrix
-from ..linalg.factor import banded_limit
+from ..linalg.factor import PARDISO_MIN_DOF, banded_limit
+from ..linalg.ordering import Points
 from ..linalg.rank import DENSE_LIMIT, stiffness_null_space
 
 log = logging.getLogger(__name__)
@@ -53,11 +54,29 @@ def factorise(K: sp.spmatrix, free: np.ndarray, fe=None, item: str = "structure"
     block = FreeBlock(K, free)
     if block.shape[0] and np.any(block.diagonal() <= 0):     # a DOF nothing is attached to
         _raise_mechanism(block.tocsr(), free, fe, item)
-    fac = factor(block, "spd", backend, singular="flag")
+    points = None
+    if fe is not None and free.size >= PARDISO_MIN_DOF and joint_dofs_only(fe):
+        # where the DOFs sit: PARDISO's Cholesky orders them by geometric nested dissection
+        every = fe.dof_points()
+        points = Points(every.of_unknown[free], every.coords)
+    fac = factor(block, "spd", backend, singular="flag", points=points)
     if fac.is_singular:
         _raise_mechanism(block.tocsr(), free, fe, item)
     log.debug("factorised %d free DOFs (%s)", free.size, fac.backend)
     return fac
+
+
+def joint_dofs_only(fe) -> bool:
+    """Whether every DOF of the model is a joint's (no points inside subdivided members, no
+    rotations a released member end owns): the models whose K_ff PARDISO's Cholesky takes in
+    the geometric nested-dissection order of the DOFs' points.
+
+    A member's own DOFs are coupled to that member only; eliminated first they fill nothing
+    but the block between its two joints, which a graph ordering finds and a cut through
+    the points does not (a 60 × 60 space grid of pinned beams: 7.0 GFlop in the geometric
+    order against 0.5 GFlop in MKL's).
+    """
+    return fe.interior_dofs.size == 0 and not np.any(fe.private_dofs >= 0)
 
 
 def solve_free(fac: Factor, free: np.ndarray, f: np.ndarray) -> np.ndarray:

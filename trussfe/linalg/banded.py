@@ -100,7 +100,7 @@ def bandwidth_lower_bound(A: sp.spmatrix) -> int:
     connected (no bound).
 
     A square space grid of 180 × 180 cells (195k DOF) has a bound of ~270, so the banded
-    path is rejected at the cost of a search (~20 ms) instead of a reverse Cuthill–McKee
+    path is rejected at the cost of a search (~10 ms) instead of a reverse Cuthill–McKee
     ordering; a chain of bays has a bound of a few units.
 
     Examples
@@ -112,21 +112,35 @@ def bandwidth_lower_bound(A: sp.spmatrix) -> int:
     n = A.shape[0]
     if n <= 1:
         return 0
-    order, pred = breadth_first_order(A, 0, directed=False, return_predecessors=True)
+    # A is symmetric: its rows are its columns, and the directed search (4× faster than
+    # scipy's undirected one, which first adds Aᵀ) visits the same graph
+    order, pred = breadth_first_order(A, 0, directed=True, return_predecessors=True)
     if order.size < n:
         return 0
-    # depth of every vertex by pointer doubling along the search tree (root: its own parent)
-    p = pred.astype(np.int64)
-    p[0] = 0
-    depth = np.ones(n, dtype=np.int64)
-    depth[0] = 0
-    for _ in range(int(np.ceil(np.log2(n))) + 1):
-        depth += depth[p]
-        p = p[p]
-        if not np.any(p):
-            break
-    e = int(depth.max())
+    # the search visits the vertices by increasing depth: the eccentricity of the root is
+    # the depth of the last one, the length of its path of predecessors
+    e, v = 0, int(order[-1])
+    while v != 0 and e < WALK_STEPS:
+        v = int(pred[v])
+        e += 1
+    if v != 0:
+        # a long path (a chain of bays): its depth by pointer doubling along the tree
+        p = pred.astype(np.int64)
+        p[0] = 0
+        depth = np.ones(n, dtype=np.int64)
+        depth[0] = 0
+        for _ in range(int(np.ceil(np.log2(n))) + 1):
+            depth += depth[p]
+            p = p[p]
+            if not np.any(p):
+                break
+        e = int(depth.max())
     return int(np.ceil((n - 1) / (2 * e))) if e > 0 else 0
+
+
+#: Steps of the predecessor path that :func:`bandwidth_lower_bound` walks one by one before
+#: it takes every vertex's depth at once.
+WALK_STEPS = 4096
 
 
 def _finish(n: int, row: np.ndarray, col: np.ndarray, data: np.ndarray, max_bandwidth: int,

@@ -33,6 +33,18 @@ smoothed-aggregation multigrid with the rigid-body modes as near-null space did 
 whatever the size and bandwidth (then ``auto``'s general backend); ``"superlu"`` and
 ``"pardiso"`` are taken as asked.
 
+Ordering
+--------
+PARDISO orders a matrix itself (MKL's parallel nested dissection of the matrix's graph).
+When the caller says where the unknowns sit (``points``: a structure's joints and the points
+inside its members), the Cholesky factorisation takes the geometric nested dissection of
+:func:`~trussfe.linalg.ordering.nested_dissection` instead: on the space grids it is 4–5×
+faster to compute and gives a factor as sparse or sparser (180 × 180 cells: 7.8 against 8.0
+GFlop; 410 × 410: 91 against 106 GFlop).  The ordering declines, and PARDISO orders, when
+its first cut's separator is larger than a cut through a two-dimensional mesh gives
+(:data:`~trussfe.linalg.ordering.SEPARATOR_FACTOR`: a three-dimensional lattice, members
+joining far-apart points).  The ordering changes the round-off of the solution only.
+
 Singularity
 -----------
 One policy for every backend (:mod:`trussfe.linalg.tolerance`).  A singular matrix gives a
@@ -67,6 +79,7 @@ import scipy.sparse.linalg as spla
 
 from . import pardiso
 from .banded import BandLayout, band_layout, band_layout_free, banded_factor
+from .ordering import Points
 from .sparse import FreeBlock
 from .tolerance import SINGULAR_PIVOT
 
@@ -127,6 +140,10 @@ class Factor:
         The column of ``A`` whose elimination gave that pivot (SuperLU's LU), so that a
         caller can name the unknown — or the block of a block-diagonal matrix — that is
         singular; None where unknown.
+    ordering : str
+        How the unknowns were ordered for PARDISO's Cholesky: ``"geometric"``
+        (:func:`~trussfe.linalg.ordering.nested_dissection`) or ``"pardiso"`` (its own);
+        ``""`` for the other factorisations.
     """
 
     matrix: object
@@ -143,6 +160,7 @@ class Factor:
     _solve_transposed: Callable | None = field(repr=False, default=None)
     smallest_pivot: float = float("nan")
     smallest_pivot_column: int | None = None
+    ordering: str = ""
 
     def solve(self, b: np.ndarray, refine: bool = True, transpose: bool = False) -> np.ndarray:
         """Solve ``A x = b`` (b of shape (n,) or (n, k)); ``Aᵀ x = b`` with ``transpose``
@@ -215,7 +233,7 @@ def general_backend(backend: str, n: int) -> str:
 
 def factor(A, kind: str = "general", backend: str = "auto", *,
            anchored: np.ndarray | None = None, layout: BandLayout | None = None,
-           singular: str = "raise") -> Factor:
+           singular: str = "raise", points: Points | None = None) -> Factor:
     """Factorise a sparse square matrix.
 
     Parameters
@@ -234,6 +252,11 @@ def factor(A, kind: str = "general", backend: str = "auto", *,
     singular : {"raise", "flag"}
         On a singular matrix raise :class:`SingularMatrixError`, or return a Factor with
         ``is_singular`` set.
+    points : Points, optional
+        Where the unknowns sit (:class:`~trussfe.linalg.ordering.Points`): PARDISO's
+        Cholesky then factorises in the geometric nested-dissection order
+        (:func:`~trussfe.linalg.ordering.nested_dissection`) instead of ordering the matrix
+        itself (see the module notes).
 
     Returns
     -------
@@ -278,7 +301,7 @@ def factor(A, kind: str = "general", backend: str = "auto", *,
     used = general_backend(backend, n)
     M = _csr(A)
     if used == "pardiso":
-        out = _pardiso(M, kind)
+        out = _pardiso(M, kind, points)
     elif kind == "symmetric":
         out = _superlu_symmetric(M)
     else:
@@ -394,11 +417,11 @@ def _superlu_symmetric(M: sp.csr_matrix) -> Factor:
                   determinant_sign=(-1) ** neg)
 
 
-def _pardiso(M: sp.csr_matrix, kind: str) -> Factor:
+def _pardiso(M: sp.csr_matrix, kind: str, points: Points | None = None) -> Factor:
     if not pardiso.available():
         raise ValueError("the PARDISO backend is not available (pypardiso with MKL)")
     if kind == "spd":
-        chol = _pardiso_cholesky(M)
+        chol = _pardiso_cholesky(M, points)
         if chol is not None:
             return chol
     try:
@@ -412,12 +435,12 @@ def _pardiso(M: sp.csr_matrix, kind: str) -> Factor:
                   determinant_sign=None if negative is None else (-1) ** negative)
 
 
-def _pardiso_cholesky(M: sp.csr_matrix) -> Factor | None:
+def _pardiso_cholesky(M: sp.csr_matrix, points: Points | None = None) -> Factor | None:
     """PARDISO's Cholesky factorisation (:func:`trussfe.linalg.pardiso.cholesky`), its
     pivots under the one singularity policy; None when a pivot is not positive (the caller
     then takes the ``LDLᵀ``, which reports the inertia or the perturbed pivots)."""
     try:
-        solve, pivots = pardiso.cholesky(M)
+        solve, pivots, ordering = pardiso.cholesky(M, points)
     except pardiso.NotPositiveDefinite:
         return None
     except ValueError as exc:           # an empty row or column
@@ -433,4 +456,4 @@ def _pardiso_cholesky(M: sp.csr_matrix) -> Factor | None:
                              ratio, **pivot)
     return Factor(matrix=M, backend="pardiso", kind="spd", n=M.shape[0], inertia=0,
                   pivot_ratio=ratio, is_singular=False, _solve=solve, determinant_sign=1,
-                  **pivot)
+                  ordering=ordering, **pivot)

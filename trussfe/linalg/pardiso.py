@@ -26,6 +26,9 @@ Two factorisations:
   factorisation 0.35 s; 22.6 million entries in L, 8 GFlop), and its solves take 0.025 s
   against 0.13 s.  A pivot that is not positive stops it: the caller then takes
   :func:`factorise`.
+  Given the points of the unknowns, it factorises in their geometric nested-dissection
+  order (:mod:`trussfe.linalg.ordering`, ``iparm(5) = 1``): 0.06 s of ordering and 0.15 s of
+  analysis instead of 0.6 s for MKL's ordering and analysis at 180 × 180.
 * :func:`factorise` — Bunch–Kaufman ``LDLᵀ`` (matrix type −2) or LU (type 11) with
   PARDISO's default settings, which reports the inertia and the pivots it had to perturb.
 
@@ -45,6 +48,8 @@ from functools import lru_cache
 
 import numpy as np
 import scipy.sparse as sp
+
+from .ordering import nested_dissection
 
 
 @lru_cache(maxsize=1)
@@ -246,8 +251,16 @@ def _call(solver, phase: int, n: int, data, ia, ja, b: np.ndarray) -> np.ndarray
     return x
 
 
-def cholesky(A: sp.csr_matrix):
+def cholesky(A: sp.csr_matrix, points=None):
     """PARDISO ``LLᵀ`` (matrix type 2) of a symmetric matrix expected positive definite.
+
+    Parameters
+    ----------
+    A : scipy.sparse.csr_matrix
+    points : trussfe.linalg.ordering.Points, optional
+        Where the unknowns sit: PARDISO then factorises in the geometric nested-dissection
+        order of :func:`trussfe.linalg.ordering.nested_dissection` (``iparm(5) = 1``)
+        instead of ordering the matrix itself, unless that ordering declines.
 
     Returns
     -------
@@ -256,6 +269,9 @@ def cholesky(A: sp.csr_matrix):
     pivots : ndarray or None
         The ``LDLᵀ`` pivots (squares of the Cholesky factor's diagonal), None when MKL does
         not return them.
+    ordering : str
+        ``"geometric"`` (the nested dissection of ``points``) or ``"pardiso"`` (PARDISO's
+        own).
 
     Raises
     ------
@@ -270,9 +286,15 @@ def cholesky(A: sp.csr_matrix):
         raise ValueError("Matrix A is singular, because it contains empty row(s)")
     ia, ja, data = _upper(A)
     data = np.ascontiguousarray(data, dtype=float)
+    perm = None
+    if points is not None:
+        perm = nested_dissection(ia, ja, points)
     solver = new_solver(2)
     solver.set_iparm(1, 1)          # the settings below are used (else all defaults)
     solver.set_iparm(2, 3)          # MKL's parallel nested dissection (METIS)
+    if perm is not None:            # the geometric order instead
+        solver.perm = perm.astype(np.int32)
+        solver.set_iparm(5, 1)
     solver.set_iparm(8, 0)          # no PARDISO refinement: Factor.solve refines
     solver.set_iparm(24, 1)         # two-level parallel factorisation (−8 % on the grids)
     solver.set_iparm(35, 1)         # zero-based indices: the arrays go in as they are
@@ -287,4 +309,4 @@ def cholesky(A: sp.csr_matrix):
         x = _call(handle.solver, 33, n, data, ia, ja, rhs)
         return x.reshape(b.shape)
 
-    return solve, pivots
+    return solve, pivots, "pardiso" if perm is None else "geometric"

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..model.structure import Structure
-from .releases import OWN, EndRotations, end_rotations
+from .releases import OWN, EndRotations, end_rotations, no_end_rotations
 
 
 def frame_members(structure: Structure, bar_model: str) -> np.ndarray:
@@ -51,6 +51,8 @@ def member_end_rotations(structure: Structure, bar_model: str,
     s = structure
     dim = s.dim
     frame = frame_members(s, bar_model)
+    if not frame.any():                 # a truss: nothing to classify
+        return no_end_rotations(dim, s.n_members, s.n_nodes)
     if axis is None:
         d = s.member_vectors()
         axis = d / np.sqrt(np.einsum("ij,ij->i", d, d))[:, None]
