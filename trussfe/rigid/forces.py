@@ -174,6 +174,8 @@ _NODE_GROUPS_LOCK = threading.Lock()
 
 
 def _group_nodes(conn: np.ndarray, n: int, nodes: np.ndarray | None) -> list:
+    """:func:`_node_groups`, computed (a node's ends in the order of the stacked start and
+    end ends: a stable sort of the ends by node)."""
     m = conn.shape[0]
     ends = conn.T.ravel()                        # stacked: start ends, then end ends
     order = np.argsort(ends, kind="stable")
