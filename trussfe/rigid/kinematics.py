@@ -391,9 +391,15 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
          else coords)
     nt = X.shape[0]
     conn = structure.connectivity
-    d = member_vectors(X, conn)                      # (time, member, dim)
-    L = lengths(d)
-    e = d / L[..., None]
+    m = structure.n_members
+    L = np.empty((nt, m))
+    e = np.empty((nt, m, X.shape[2]))
+
+    def geometry(s):
+        d = member_vectors(X[s], conn)               # (time, member, dim)
+        L[s] = lengths(d)
+        e[s] = d / L[s][..., None]
+    _in_blocks(nt, m, geometry)
     solver = _factorise(structure, pattern, X, motion, e)
     Ld = np.zeros_like(L)
     Ldd = np.zeros_like(L)
@@ -402,15 +408,26 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     e3 = pad3(e)
     if scheme == "exact":
         V = _solve_compat(structure, pattern, solver, Ld)
-        vrel = member_vectors(V, conn)
-        quad = (np.einsum("tmi,tmi->tm", vrel, vrel) - Ld ** 2) / L
-        A = _solve_compat(structure, pattern, solver, Ldd - quad)
-        arel = member_vectors(A, conn)
-        ed = pad3((vrel - Ld[..., None] * e) / L[..., None])
-        edd = pad3((arel - Ldd[..., None] * e) / L[..., None]) - 2 * Ld[..., None] * ed / \
-            L[..., None]
-        omega = cross(e3, ed)
-        alpha = cross(e3, edd)
+        vrel = np.empty_like(e)
+        rhs = np.empty_like(L)
+
+        def relative_velocity(s):
+            vrel[s] = member_vectors(V[s], conn)
+            quad = (np.einsum("tmi,tmi->tm", vrel[s], vrel[s]) - Ld[s] ** 2) / L[s]
+            rhs[s] = Ldd[s] - quad
+        _in_blocks(nt, m, relative_velocity)
+        A = _solve_compat(structure, pattern, solver, rhs)
+        ed, edd, omega, alpha = (np.empty((nt, m, 3)) for _ in range(4))
+
+        def rates(s):
+            arel = member_vectors(A[s], conn)
+            Ls, Lds = L[s][..., None], Ld[s][..., None]
+            ed_s = pad3((vrel[s] - Lds * e[s]) / Ls)
+            edd_s = pad3((arel - Ldd[s][..., None] * e[s]) / Ls) - 2 * Lds * ed_s / Ls
+            ed[s], edd[s] = ed_s, edd_s
+            omega[s] = cross(e3[s], ed_s)
+            alpha[s] = cross(e3[s], edd_s)
+        _in_blocks(nt, m, rates)
         return Kinematics(motion.time, X, pad3(V), pad3(A), L, Ld, Ldd, e3, ed, edd, omega,
                           alpha, "exact", solver)
     # Lacy Appendix A: angle rates by backward differences.
@@ -431,6 +448,18 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     V, A = _walk_nodes(structure, motion, e3, ed, edd, L, Ld, Ldd)
     return Kinematics(motion.time, X, V, A, L, Ld, Ldd, e3, ed, edd, omega, alpha, "thesis",
                       solver)
+
+
+#: Members × steps per block of the element-wise kinematics (:func:`_in_blocks`).
+BLOCK_ENTRIES = 1 << 17
+
+
+def _in_blocks(nt: int, m: int, fn: Callable[[slice], None]) -> None:
+    """``fn(steps)`` over blocks of about :data:`BLOCK_ENTRIES` members × steps, in worker
+    threads: element-wise work on the motion's arrays, each block written into whole-motion
+    arrays while it is in the processor cache (every step computed as in any block)."""
+    step = max(1, BLOCK_ENTRIES // max(m, 1))
+    parallel_map(lambda k0: fn(slice(k0, min(nt, k0 + step))), range(0, nt, step))
 
 
 def _walk_nodes(structure, motion, e, ed, edd, L, Ld, Ldd):
