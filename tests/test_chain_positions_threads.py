@@ -33,3 +33,25 @@ def test_threaded_bay_positions_equal_serial(monkeypatch):
     L = np.broadcast_to(c.lengths(), (m.n_steps, c.n_members)).copy()
     L[:, m.members] = m.length
     np.testing.assert_allclose(np.linalg.norm(d, axis=2), L, rtol=0, atol=1e-11)
+
+
+def test_kinematics_in_blocks_equal_whole_motion(monkeypatch):
+    """The element-wise kinematics (trussfe.rigid.kinematics._in_blocks) in blocks of 50
+    steps on 3 threads equal one block of the whole motion to the last bit; the unit vectors
+    have unit length and the angular velocity is e x e_dot (Lacy eqs. 2.3-2.8)."""
+    from trussfe.rigid import kinematics
+    from trussfe.studies.lacy_rigid import double_octahedron
+    s = double_octahedron((1.2289, 1.1079, 1.1079), gravity=-9.81, top_load=46.0)
+    m = third_order_motion(s, [1.2289, 1.1079, 1.1079], [1.1079, 1.2289, 1.2289], 2.0, 400)
+    X = kinematics.solve_motion_positions(s, m)
+    with threads.compute_threads(workers=1, blas=None):
+        whole = kinematics.compute_kinematics(s, m, coords=X)
+    monkeypatch.setattr(kinematics, "BLOCK_ENTRIES", 50 * s.n_members)
+    with threads.compute_threads(workers=3, blas=None):
+        blocked = kinematics.compute_kinematics(s, m, coords=X)
+    for name in ("length", "unit", "velocity", "acceleration", "unit_rate", "unit_acc",
+                 "omega", "alpha"):
+        np.testing.assert_array_equal(getattr(blocked, name), getattr(whole, name),
+                                      err_msg=name)
+    np.testing.assert_allclose(np.linalg.norm(blocked.unit, axis=2), 1.0, rtol=0, atol=1e-14)
+    np.testing.assert_array_equal(blocked.omega, np.cross(blocked.unit, blocked.unit_rate))
