@@ -13,6 +13,7 @@ from __future__ import annotations
 import functools
 import inspect
 import sys
+import tempfile
 
 import numpy as np
 import pytest
@@ -92,3 +93,14 @@ def equilibrium():
     loads, self-weight and reactions have zero resultant force and moment
     (:func:`equilibrium.assert_global_equilibrium`)."""
     return assert_global_equilibrium
+
+
+@pytest.fixture(scope="session", autouse=True)
+def _own_temporary_folder(tmp_path_factory):
+    """The system's temporary folder of the tests is a folder of this run's own: a study
+    called directly hands its figures back in a new folder there (they are the caller's
+    result), and pytest removes it with the run's other temporary files."""
+    patch = pytest.MonkeyPatch()
+    patch.setattr(tempfile, "tempdir", str(tmp_path_factory.mktemp("system-temp")))
+    yield
+    patch.undo()
