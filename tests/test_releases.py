@@ -304,3 +304,23 @@ def test_reversing_a_member_moves_every_release_with_its_end():
     assert r.connectivity.tolist() == [[1, 0]]
     assert r.releases.tolist() == [[False, True]]
     assert r.torsion_releases.tolist() == [[True, False]]
+
+
+def test_a_truss_has_the_end_rotations_of_the_general_classification():
+    """``no_end_rotations`` (the shortcut for models without bending members) gives what
+    ``end_rotations`` gives for the same members none of which is a frame: every component
+    held, no joint with rotations (3-D chain and 2-D triangle)."""
+    import dataclasses
+    from trussfe.mechanics.releases import no_end_rotations
+    from trussfe.models import double_octahedral_chain, triangular_truss
+    for s in (double_octahedral_chain(3), triangular_truss()):
+        d = s.member_vectors()
+        axis = d / np.linalg.norm(d, axis=1)[:, None]
+        m = s.n_members
+        general = end_rotations(s.dim, s.connectivity, axis, np.zeros(m, bool),
+                                np.zeros(m, bool), np.zeros((m, 2), bool),
+                                np.zeros((m, 2), bool), s.supports[:, s.dim:])
+        short = no_end_rotations(s.dim, m, s.n_nodes)
+        for f in dataclasses.fields(general):
+            a, b = getattr(general, f.name), getattr(short, f.name)
+            assert a.dtype == b.dtype and np.array_equal(a, b), f.name

@@ -126,8 +126,6 @@ def end_rotations(dim: int, connectivity: np.ndarray, axis: np.ndarray, frame: n
     m = conn.shape[0]
     n = np.asarray(rotation_supports).shape[0]
     frame = np.asarray(frame, dtype=bool)
-    if not frame.any():
-        return no_end_rotations(dim, m, n)
     twist = np.asarray(twist, dtype=bool) & frame & (dim == 3)
     sup = np.asarray(rotation_supports, dtype=bool)
     rel = np.asarray(bending_released, dtype=bool)
