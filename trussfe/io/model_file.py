@@ -422,20 +422,11 @@ def _loads_fast(table: dict, node_index: dict, loads: np.ndarray, dim: int) -> b
 
 
 def _node_rows(keys: list, node_index) -> np.ndarray:
-    """The rows of the nodes named by ``keys``; KeyError when one is not a node.
-
-    Nodes numbered 0 … n − 1 (a mesh model, :class:`~trussfe.model.ids.IdIndex`) are read
-    in one vectorised pass: a key names node ``i`` when it is the decimal ``str(i)``."""
+    """The rows of the nodes named by ``keys``; KeyError when one is not a node (nodes
+    numbered 0 … n − 1, a mesh model's :class:`~trussfe.model.ids.IdIndex`, in one
+    vectorised pass)."""
     if isinstance(node_index, IdIndex):
-        try:
-            numbers = list(map(int, keys))
-        except (ValueError, TypeError):
-            numbers = None
-        # canonical spelling only: int() also reads "07", "+7", " 7" and "7_0"
-        if numbers is not None and list(map(str, numbers)) == keys:
-            rows = np.array(numbers, dtype=np.int64)
-            if rows.size and rows.min() >= 0 and rows.max() < len(node_index):
-                return rows
+        return node_index.positions(keys)
     return np.array([node_index[str(k)] for k in keys], dtype=np.int64)
 
 
