@@ -28,6 +28,7 @@ import numpy as np
 for _v in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_v, "1")
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from trussfe.cli import environment_workers  # noqa: E402
 from trussfe.threads import compute_threads  # noqa: E402
@@ -38,6 +39,7 @@ from trussfe.fem import discretise  # noqa: E402
 from trussfe.fem.modal import RESOLVED_RESIDUAL, mass_matrix, solve_modes  # noqa: E402
 from trussfe.linalg import free_submatrix  # noqa: E402
 from trussfe.model.structure import Structure  # noqa: E402
+from _peers import blas_note  # noqa: E402
 from trussfe.models import double_octahedral_chain  # noqa: E402
 
 
@@ -142,6 +144,7 @@ def main(argv=None) -> None:
     print(f"\nresidual: max over the modes of ‖Kφ − ω²Mφ‖ / (ω²‖Mφ‖) with trussfe's K and M; "
           f"above {RESOLVED_RESIDUAL} a mode is not resolved in double precision "
           "(trussfe modes refuses it).")
+    print(blas_note())
 
 
 if __name__ == "__main__":

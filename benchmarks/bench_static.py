@@ -11,6 +11,8 @@ K, beside every time.  When OpenSeesPy is installed the same model is built and 
 (``Truss`` elements, ``BandSPD`` / ``UmfPack`` solvers) and the largest member-force
 difference is printed: member forces, not displacements, are compared, because the long chain
 is so badly conditioned that two correct solvers disagree on displacements beyond ~300 bays.
+OpenSeesPy runs on the system's ``libblas.so.3``: the footer names it, since the reference
+implementation makes the peer about three times slower on the grid (``_peers.py``).
 ``speed-up`` is OpenSeesPy's total time over trussfe's, both measured in the same run;
 ``peak MiB`` is the process's resident-memory high-water mark during trussfe's runs of the
 model (Linux: ``VmHWM`` of ``/proc/self/status``, reset before the model by writing 5 to
@@ -45,6 +47,7 @@ import meshio
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+from _peers import blas_note  # noqa: E402
 from _structures import space_grid  # noqa: E402
 
 from trussfe import read_model  # noqa: E402
@@ -223,6 +226,8 @@ def main() -> None:
           "speed-up = OpenSees s / total s; peak MiB = resident high-water mark of trussfe's "
           f"runs of the model ({'VmHWM' if reset_peak_memory() else 'ru_maxrss'}); "
           f"fastest of {repeat} run(s) of each program.")
+    if not args.no_opensees:
+        print(blas_note())
 
 
 if __name__ == "__main__":
