@@ -199,7 +199,12 @@ def element_accelerations(kin: Kinematics, bodies: MemberBodies, conn: np.ndarra
     aa = np.take(kin.acceleration, conn[:, 0], axis=1)
     L, Ld, Ldd = kin.length[..., None], kin.length_rate[..., None], kin.length_acc[..., None]
     s_t = L - bodies.tube_length[None, :, None] / 2.0
-    a_tube = aa + Ldd * e + 2.0 * Ld * ed + s_t * edd
+    # aa + L̈ e + 2 L̇ ė + s_t ë, added in that order, with one scratch array
+    a_tube = Ldd * e
+    a_tube += aa
+    term = np.multiply(2.0 * Ld, ed)
+    a_tube += term
+    a_tube += np.multiply(s_t, edd, out=term)
     if base_members is None:
         a_base = aa + bodies.base_cg[None, :, None] * edd
     else:
@@ -299,7 +304,9 @@ def member_resultants(kin: Kinematics, bodies: MemberBodies, gravity: np.ndarray
         f_base = mb * -g
     else:
         a_tube, s_t, a_base = element_accelerations(kin, bodies, conn, act)
-        f_tube = mt * (a_tube - g)                               # (time, member, 3)
+        f_tube = a_tube                  # m_t (a_tube − g), in the accelerations' place
+        f_tube -= g
+        f_tube *= mt                                             # (time, member, 3)
         f_base = mb * (a_base - g)
     R = f_tube.copy()
     R[:, act] += f_base
@@ -329,12 +336,17 @@ def _member_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies, r
     e = kin.unit
     L = kin.length[..., None]
     _, _, R, Ma = member_resultants(kin, bodies, g, conn, rest, bases=False)
-    Fb_perp = cross(Ma, e) / L
+    Fb_perp = cross(Ma, e)
+    Fb_perp /= L
     Re = np.einsum("tmi,tmi->tm", R, e)
-    Fa_perp = R - Re[..., None] * e - Fb_perp
+    axial = Re[..., None] * e
+    Fa_perp = R - axial
+    Fa_perp -= Fb_perp
     n = structure.n_nodes
-    # Known (tension-free) parts of the end forces, summed at the nodes.
-    S = _to_nodes(conn, n, Re[..., None] * e + Fa_perp, Fb_perp)
+    # Known (tension-free) parts of the end forces, summed at the nodes: the start ends'
+    # Re e + Fa_perp (in place of the axial part, which is not needed again).
+    axial += Fa_perp
+    S = _to_nodes(conn, n, axial, Fb_perp)
     P = pad3(structure.loads[:, :dim])[None]
     Mn = structure.masses[None, :, None]
     mg = Mn * g if rest else Mn * (g - kin.acceleration)      # lumped masses' loads
@@ -404,10 +416,14 @@ def _solve_forces(structure: Structure, kins: list, bodies: MemberBodies | None,
     for j, (Re, Fa_perp, Fb_perp, ext, _) in enumerate(loads):
         t = 0.5 * Re                   # members between two fixed nodes: symmetric split
         t[:, pattern.loaded_idx] = tl[..., j]
-        Fb = t[..., None] * e + Fb_perp
-        Fa = (Re - t)[..., None] * e + Fa_perp
+        # Fa = (Re − t) e + Fa_perp and Fb = t e + Fb_perp, written into their places
+        end_force = np.empty(e.shape[:2] + (2, e.shape[2]))
+        Fa, Fb = end_force[:, :, 0], end_force[:, :, 1]
+        np.multiply(t[..., None], e, out=Fb)
+        Fb += Fb_perp
+        np.multiply((Re - t)[..., None], e, out=Fa)
+        Fa += Fa_perp
         tot = _to_nodes(conn, n, Fa, Fb, held)
-        end_force = np.stack([Fa, Fb], axis=2)
         P, mg = (np.broadcast_to(x, (x.shape[0], n, 3))[:, held] for x in ext)
         react = np.zeros(t.shape[:1] + (n, dim))
         react[:, held] = np.where(structure.translation_supports[None, held],

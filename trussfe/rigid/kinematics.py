@@ -422,11 +422,14 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
         def rates(s):
             arel = member_vectors(A[s], conn)
             Ls, Lds = L[s][..., None], Ld[s][..., None]
-            ed_s = pad3((vrel[s] - Lds * e[s]) / Ls)
-            edd_s = pad3((arel - Ldd[s][..., None] * e[s]) / Ls) - 2 * Lds * ed_s / Ls
-            ed[s], edd[s] = ed_s, edd_s
-            omega[s] = cross(e3[s], ed_s)
-            alpha[s] = cross(e3[s], edd_s)
+            if e.shape[2] == 3:
+                _rates_into(ed[s], edd[s], vrel[s], arel, e[s], Ls, Lds, Ldd[s][..., None])
+            else:
+                ed_s = pad3((vrel[s] - Lds * e[s]) / Ls)
+                ed[s] = ed_s
+                edd[s] = pad3((arel - Ldd[s][..., None] * e[s]) / Ls) - 2 * Lds * ed_s / Ls
+            cross(e3[s], ed[s], out=omega[s])
+            cross(e3[s], edd[s], out=alpha[s])
         _in_blocks(nt, m, rates)
         return Kinematics(motion.time, X, pad3(V), pad3(A), L, Ld, Ldd, e3, ed, edd, omega,
                           alpha, "exact", solver)
@@ -448,6 +451,22 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     V, A = _walk_nodes(structure, motion, e3, ed, edd, L, Ld, Ldd)
     return Kinematics(motion.time, X, V, A, L, Ld, Ldd, e3, ed, edd, omega, alpha, "thesis",
                       solver)
+
+
+def _rates_into(ed: np.ndarray, edd: np.ndarray, vrel: np.ndarray, arel: np.ndarray,
+                e: np.ndarray, L: np.ndarray, Ld: np.ndarray, Ldd: np.ndarray) -> None:
+    """ė = (v_rel − L̇ e)/L and ë = (a_rel − L̈ e)/L − 2 L̇ ė / L written into ``ed`` and
+    ``edd`` (3-D members), operation for operation as the expressions read, without their
+    temporaries (``arel`` is overwritten)."""
+    np.multiply(Ld, e, out=ed)
+    np.subtract(vrel, ed, out=ed)
+    ed /= L
+    np.multiply(Ldd, e, out=edd)
+    np.subtract(arel, edd, out=edd)
+    edd /= L
+    np.multiply(2 * Ld, ed, out=arel)
+    arel /= L
+    edd -= arel
 
 
 #: Members × steps per block of the element-wise kinematics (:func:`_in_blocks`).
