@@ -354,15 +354,21 @@ def _member_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies, r
     return Re, Fa_perp, Fb_perp, (P, mg), rhs
 
 
-def pair_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies) -> tuple:
+def pair_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies,
+               out: np.ndarray | None = None) -> tuple:
     """Member resultants of the motion and of rest, and their right-hand sides of
     ``Bᵀ t = rhs`` on the free coordinates, (nt, n_free, 2): the first half of
     :func:`nodal_forces_with_static`, so that the solve can be done for many blocks of steps
-    at once (:func:`forces_from_tensions` finishes)."""
+    at once (:func:`forces_from_tensions` finishes).  ``out``: an (nt, n_free, 2) array to
+    write the right-hand sides into (a block's rows of the whole motion's)."""
     pattern = _check_model(structure)
     loads = [_member_loads(structure, kin, bodies, False),
              _member_loads(structure, kin, bodies, True)]
-    return loads, np.stack([ld[4][:, pattern.free_flat] for ld in loads], axis=2)
+    if out is None:
+        out = np.empty((kin.length.shape[0], pattern.free_flat.size, len(loads)))
+    for j, ld in enumerate(loads):
+        np.take(ld[4], pattern.free_flat, axis=1, out=out[..., j])
+    return loads, out
 
 
 def forces_from_tensions(structure: Structure, kin: Kinematics, bodies: MemberBodies,

@@ -367,35 +367,47 @@ class _BlockInverses:
                 O[:, lr * ucols.size + pos] = vals[:, e]
                 self.off[b] = O.reshape(nt, form.rows[b].size, ucols.size)
 
-    def solve(self, rhs: np.ndarray, transpose: bool, steps: np.ndarray | None) -> np.ndarray:
+    def solve(self, rhs: np.ndarray, transpose: bool, steps: np.ndarray | None,
+              out: np.ndarray | None = None) -> np.ndarray:
         """Forward (B x = rhs) or backward (Bᵀ x = rhs) block substitution, every step at
-        once; ``steps`` maps each right-hand side to its factorised step."""
-        f = self.form
+        once; ``steps`` maps each right-hand side to its factorised step; ``out``: an array
+        shaped like ``rhs`` to write the solution into."""
+        out = np.empty_like(rhs) if out is None else out
         if transpose and rhs.ndim == 3 and rhs.shape[2] > 1:
             # one right-hand side at a time: numpy's einsum is several times slower with a
-            # trailing axis, and the columns' arithmetic is the same
-            return np.stack([self.solve(np.ascontiguousarray(rhs[..., c]), True, steps)
-                             for c in range(rhs.shape[2])], axis=-1)
-        out = np.empty_like(rhs)
+            # trailing axis, and the columns' arithmetic is the same; each column's
+            # contiguous copy is the backward substitution's scratch array
+            for c in range(rhs.shape[2]):
+                self._backward(np.ascontiguousarray(rhs[..., c]), steps, out[..., c])
+            return out
+        if transpose:
+            self._backward(rhs.copy(), steps, out)
+            return out
+        f = self.form
 
         def pick(a):
             return a if steps is None else a[steps]
 
-        if not transpose:
-            for b in range(f.n_blocks):
-                r = rhs[:, f.rows[b]]
-                if self.off[b] is not None:
-                    r = r - np.einsum("tij,tj...->ti...", pick(self.off[b]),
-                                      out[:, f.coupling[b][0]])
-                out[:, f.cols[b]] = np.einsum("tij,tj...->ti...", pick(self.inv[b]), r)
-            return out
-        c = rhs.copy()
+        for b in range(f.n_blocks):
+            r = rhs[:, f.rows[b]]
+            if self.off[b] is not None:
+                r = r - np.einsum("tij,tj...->ti...", pick(self.off[b]),
+                                  out[:, f.coupling[b][0]])
+            out[:, f.cols[b]] = np.einsum("tij,tj...->ti...", pick(self.inv[b]), r)
+        return out
+
+    def _backward(self, c: np.ndarray, steps: np.ndarray | None, out: np.ndarray) -> None:
+        """Backward block substitution Bᵀ x = c into ``out``; ``c`` is overwritten."""
+        f = self.form
+
+        def pick(a):
+            return a if steps is None else a[steps]
+
         for b in range(f.n_blocks - 1, -1, -1):
             y = np.einsum("tji,tj...->ti...", pick(self.inv[b]), c[:, f.cols[b]])
             out[:, f.rows[b]] = y
             if self.off[b] is not None:
                 c[:, f.coupling[b][0]] -= np.einsum("tij,ti...->tj...", pick(self.off[b]), y)
-        return out
 
 
 def is_direct(rows: np.ndarray, cols: np.ndarray, n: int) -> bool:
@@ -539,12 +551,15 @@ class CompatSolver:
             workers = min(worker_count(), self.nt // PARALLEL_SOLVE_MIN_STEPS)
             if steps is not None or workers < 2 or rhs.shape[0] != self.nt:
                 return self.block_inverses.solve(rhs, transpose, steps)
-            # independent steps: contiguous chunks of them in worker threads
+            # independent steps: contiguous chunks of them in worker threads, each writing
+            # its rows of the solution
             cuts = np.linspace(0, self.nt, workers + 1).astype(int)
-            parts = parallel_map(
+            out = np.empty_like(rhs)
+            parallel_map(
                 lambda ab: self.subset(ab[0], ab[1]).block_inverses.solve(
-                    rhs[ab[0]:ab[1]], transpose, None), list(zip(cuts[:-1], cuts[1:])))
-            return np.concatenate(parts, axis=0)
+                    rhs[ab[0]:ab[1]], transpose, None, out[ab[0]:ab[1]]),
+                list(zip(cuts[:-1], cuts[1:])))
+            return out
         if self.n == 0:
             return np.zeros_like(rhs, dtype=float)
         if steps is not None:
