@@ -262,7 +262,7 @@ def _batched_newton_chunk(structure, pattern, L, X, tolerance=1e-12, iterations=
             dx = solver.solve(-r, approximate=True)
         if not np.all(np.isfinite(dx)):
             return X, np.zeros(nt, dtype=bool)
-        flat[:, pattern.free_flat] += dx
+        flat[:, pattern.free_cols] += dx
     d = member_vectors(X, conn)
     res = np.abs(lengths(d) - L).max(axis=1)
     moved = np.abs(X - X0).reshape(nt, -1).max(axis=1)
@@ -277,6 +277,11 @@ class _Pattern:
         conn = structure.connectivity
         free = ~structure.translation_supports
         self.free_flat = np.flatnonzero(free.ravel())
+        # the free coordinates as a slice when they are contiguous (supports numbered first):
+        # updates of them are then plain strided operations, not gathers and scatters
+        f = self.free_flat
+        contiguous = f.size > 0 and f[-1] - f[0] + 1 == f.size
+        self.free_cols = slice(int(f[0]), int(f[-1]) + 1) if contiguous else f
         full_to_free = -np.ones(structure.n_nodes * dim, dtype=np.int64)
         full_to_free[self.free_flat] = np.arange(self.free_flat.size)
         m = conn.shape[0]
@@ -322,7 +327,7 @@ def _solve_compat(structure: Structure, pattern: _Pattern, solver: CompatSolver,
     nt = rhs.shape[0]
     out = np.zeros((nt, structure.n_nodes * structure.dim))
     try:
-        out[:, pattern.free_flat] = solver.solve(rhs[:, pattern.loaded_idx])
+        out[:, pattern.free_cols] = solver.solve(rhs[:, pattern.loaded_idx])
     except SingularStep as s:
         raise AnalysisError(f"motion: step {s.step}", "the assembly is at a singular position "
                             "(its compatibility matrix is rank deficient): its velocities and "
