@@ -209,7 +209,8 @@ def element_accelerations(kin: Kinematics, bodies: MemberBodies, conn: np.ndarra
         a_base = aa + bodies.base_cg[None, :, None] * edd
     else:
         a_base = (np.take(aa, base_members, axis=1)
-                  + bodies.base_cg[None, base_members, None] * edd[:, base_members])
+                  + bodies.base_cg[None, base_members, None]
+                  * np.take(edd, base_members, axis=1))
     return a_tube, s_t, a_base
 
 
@@ -309,9 +310,9 @@ def member_resultants(kin: Kinematics, bodies: MemberBodies, gravity: np.ndarray
         f_tube *= mt                                             # (time, member, 3)
         f_base = mb * (a_base - g)
     R = f_tube.copy()
-    R[:, act] += f_base
+    _add_to_members(R, act, f_base)
     Ma = cross(s_t * e, f_tube)
-    Ma[:, act] += cross(cg * e[:, act], f_base)
+    _add_to_members(Ma, act, cross(cg * np.take(e, act, axis=1), f_base))
     if not rest:
         inertia = (bodies.tube_inertia(bodies.tube_length, bodies.tube_mass)
                    + bodies.base_inertia_cg)[None, :, None]
@@ -321,6 +322,15 @@ def member_resultants(kin: Kinematics, bodies: MemberBodies, gravity: np.ndarray
     full_base = np.zeros(R.shape)
     full_base[:, act] = f_base
     return f_tube, full_base, R, Ma
+
+
+def _add_to_members(a: np.ndarray, members: np.ndarray, b: np.ndarray) -> None:
+    """``a[:, members] += b`` for distinct ``members``, through a gathered copy (numpy's
+    fancy indexing with a leading slice is several times slower than ``np.take`` and a
+    plain assignment on the (steps, members, 3) arrays of a motion)."""
+    part = np.take(a, members, axis=1)
+    part += b
+    a[:, members] = part
 
 
 def _member_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies, rest: bool):
