@@ -263,13 +263,15 @@ def _batched_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, *,
                 e = np.concatenate([d / dn[..., None] for d, dn, _ in parts])
                 solver = CompatSolver(pattern.rows, pattern.cols, pattern.values(e),
                                       pattern.m)
+            if owner is not None:
+                # every chunk's anchors gathered once for the iterations until the next
+                # factorisation
+                local = parallel_map(lambda ab: solver.gather(owner[ab[0]:ab[1]]), spans)
         if owner is None:
             dxs = [solver.solve(-np.concatenate([p[2] for p in parts]))]
             spans_dx = [(0, N)]
         else:
-            dxs = parallel_map(lambda j: solver.solve(-parts[j][2],
-                                                      steps=owner[spans[j][0]:spans[j][1]]),
-                               range(len(spans)))
+            dxs = parallel_map(lambda j: local[j].solve(-parts[j][2]), range(len(spans)))
             spans_dx = spans
         if not all(np.all(np.isfinite(dx)) for dx in dxs):
             return X, bad

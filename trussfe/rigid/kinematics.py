@@ -251,13 +251,15 @@ def _batched_newton_chunk(structure, pattern, L, X, tolerance=1e-12, iterations=
             solver, owner = CompatSolver(pattern.rows, pattern.cols, vals, pattern.m), None
     except SingularStep:
         return X, np.zeros(nt, dtype=bool)
+    if owner is not None:
+        solver = solver.gather(owner)    # every iteration solves with the same anchors
     for _ in range(iterations):
         d = member_vectors(X, conn)
         r = lengths(d)[:, pattern.loaded_idx] - Lk
         if np.abs(r).max() <= tolerance * scale:
             break
         if owner is not None:
-            dx = solver.solve(-r, steps=owner)
+            dx = solver.solve(-r)
         else:
             dx = solver.solve(-r, approximate=True)
         if not np.all(np.isfinite(dx)):

@@ -450,6 +450,8 @@ class CompatSolver:
         self.nt = vals.shape[0]
         self.inverse = None
         self.block_inverses: _BlockInverses | None = None
+        # whether a direct solve of many steps splits them between worker threads
+        self.split = True
         if n == 0:
             return
         form = block_triangular_form(rows, cols, n) if DENSE_LIMIT > 0 else None
@@ -528,6 +530,27 @@ class CompatSolver:
             out.block_inverses = bi
         return out
 
+    def gather(self, steps: np.ndarray) -> "CompatSolver":
+        """The factorisations of the steps ``steps`` (one per right-hand side of the later
+        solves, gathered once): ``gather(steps).solve(rhs)`` is ``solve(rhs, steps=steps)``
+        with the same numbers, for an iteration that solves with one step map many times.
+        Direct paths only; its solves run in the calling thread (it is made for work
+        already split between threads)."""
+        if not self.direct:
+            raise ValueError("gather needs a direct (stacked-inverse) solver")
+        out = object.__new__(CompatSolver)
+        out.__dict__.update(self.__dict__)
+        out.nt, out.split = len(steps), False
+        if self.inverse is not None:
+            out.inverse = self.inverse[steps]
+        if self.block_inverses is not None:
+            bi = object.__new__(_BlockInverses)
+            bi.form = self.block_inverses.form
+            bi.inv = [a[steps] for a in self.block_inverses.inv]
+            bi.off = [None if a is None else a[steps] for a in self.block_inverses.off]
+            out.block_inverses = bi
+        return out
+
     @property
     def direct(self) -> bool:
         """Whether solves are direct (stacked inverses), not anchored refinement."""
@@ -548,7 +571,8 @@ class CompatSolver:
             return np.einsum(sub, self.inverse if steps is None else self.inverse[steps], rhs)
         if self.block_inverses is not None:
             rhs = np.asarray(rhs, dtype=float)
-            workers = min(worker_count(), self.nt // PARALLEL_SOLVE_MIN_STEPS)
+            workers = (min(worker_count(), self.nt // PARALLEL_SOLVE_MIN_STEPS)
+                       if self.split else 1)
             if steps is not None or workers < 2 or rhs.shape[0] != self.nt:
                 return self.block_inverses.solve(rhs, transpose, steps)
             # independent steps: contiguous chunks of them in worker threads, each writing
