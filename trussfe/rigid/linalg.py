@@ -319,6 +319,16 @@ def _stacked_inverse(D: np.ndarray) -> np.ndarray:
     return np.concatenate(parts, axis=1)
 
 
+def _step_pieces(nt: int, count: int) -> list[tuple[int, int]]:
+    """Contiguous pieces of ``nt`` steps, one per worker thread when the stack of ``count``
+    matrices per step is large (:data:`PARALLEL_INVERSE_MIN`), else the whole range."""
+    workers = worker_count()
+    if workers < 2 or nt < 2 or count * nt < PARALLEL_INVERSE_MIN:
+        return [(0, nt)]
+    cuts = np.linspace(0, nt, min(workers, nt) + 1).astype(int)
+    return list(zip(cuts[:-1], cuts[1:]))
+
+
 def _rcond(A: np.ndarray, inv: np.ndarray) -> np.ndarray:
     """Reciprocal condition numbers from Frobenius norms of a stack and its inverses."""
     with np.errstate(over="ignore", invalid="ignore"):
@@ -341,12 +351,20 @@ class _BlockInverses:
         self.off: list = [None] * form.n_blocks
         sizes = np.array([r.size for r in form.rows])
         worst = np.full(nt, np.inf)
+        # The stacks are filled, and their condition numbers taken, over the same pieces of
+        # the steps as their inversion (in worker threads for a large stack; every step
+        # is filled and tested the same in any piece).
+        spans = _step_pieces(nt, form.n_blocks)
         for size in np.unique(sizes):
             ids = np.flatnonzero(sizes == size)
             D = np.zeros((ids.size, nt, size * size))
-            for g, b in enumerate(ids):
-                r, c, e = form.diag[b]
-                D[g][:, r * size + c] = vals[:, e]
+
+            def fill(span, ids=ids, D=D, size=size):
+                a, b = span
+                for g, blk in enumerate(ids):
+                    r, c, e = form.diag[blk]
+                    D[g, a:b][:, r * size + c] = vals[a:b, e]
+            parallel_map(fill, spans)
             D = D.reshape(ids.size, nt, size, size)
             try:
                 inv = _stacked_inverse(D)
@@ -355,7 +373,12 @@ class _BlockInverses:
                 rc = np.sqrt(np.clip(lam[..., 0], 0.0, None) / np.maximum(lam[..., -1], 1e-300))
                 raise SingularStep(int(np.flatnonzero((~(rc >= SINGULAR_RCOND)).any(axis=0))[0])
                                    ) from None
-            worst = np.fmin(worst, np.nan_to_num(_rcond(D, inv), nan=0.0).min(axis=0))
+
+            def condition(span, D=D, inv=inv):
+                a, b = span
+                worst[a:b] = np.fmin(worst[a:b], np.nan_to_num(
+                    _rcond(D[:, a:b], inv[:, a:b]), nan=0.0).min(axis=0))
+            parallel_map(condition, spans)
             for g, b in enumerate(ids):
                 self.inv[b] = inv[g]
         bad = np.flatnonzero(~(worst >= SINGULAR_RCOND))
@@ -363,9 +386,17 @@ class _BlockInverses:
             raise SingularStep(int(bad[0]))
         for b, (ucols, lr, pos, e) in enumerate(form.coupling):
             if ucols.size:
-                O = np.zeros((nt, form.rows[b].size * ucols.size))
-                O[:, lr * ucols.size + pos] = vals[:, e]
-                self.off[b] = O.reshape(nt, form.rows[b].size, ucols.size)
+                self.off[b] = np.zeros((nt, form.rows[b].size * ucols.size))
+
+        def fill_off(span):
+            a, b_ = span
+            for b, (ucols, lr, pos, e) in enumerate(form.coupling):
+                if ucols.size:
+                    self.off[b][a:b_][:, lr * ucols.size + pos] = vals[a:b_, e]
+        parallel_map(fill_off, spans)
+        for b, (ucols, lr, pos, e) in enumerate(form.coupling):
+            if ucols.size:
+                self.off[b] = self.off[b].reshape(nt, form.rows[b].size, ucols.size)
 
     def solve(self, rhs: np.ndarray, transpose: bool, steps: np.ndarray | None,
               out: np.ndarray | None = None) -> np.ndarray:
