@@ -432,14 +432,10 @@ def _solve_forces(structure: Structure, kins: list, bodies: MemberBodies | None,
     for j, (Re, Fa_perp, Fb_perp, ext, _) in enumerate(loads):
         t = 0.5 * Re                   # members between two fixed nodes: symmetric split
         t[:, pattern.loaded_idx] = tl[..., j]
-        # Fa = (Re − t) e + Fa_perp and Fb = t e + Fb_perp, written into their places
-        end_force = np.empty(e.shape[:2] + (2, e.shape[2]))
-        Fa, Fb = end_force[:, :, 0], end_force[:, :, 1]
-        np.multiply(t[..., None], e, out=Fb)
-        Fb += Fb_perp
-        np.multiply((Re - t)[..., None], e, out=Fa)
-        Fa += Fa_perp
+        Fb = t[..., None] * e + Fb_perp
+        Fa = (Re - t)[..., None] * e + Fa_perp
         tot = _to_nodes(conn, n, Fa, Fb, held)
+        end_force = np.stack([Fa, Fb], axis=2)
         P, mg = (np.broadcast_to(x, (x.shape[0], n, 3))[:, held] for x in ext)
         react = np.zeros(t.shape[:1] + (n, dim))
         react[:, held] = np.where(structure.translation_supports[None, held],
