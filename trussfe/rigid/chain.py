@@ -263,22 +263,28 @@ def _batched_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, *,
                 e = np.concatenate([d / dn[..., None] for d, dn, _ in parts])
                 solver = CompatSolver(pattern.rows, pattern.cols, pattern.values(e),
                                       pattern.m)
+            if owner is not None:
+                # every chunk's anchors gathered once for the iterations until the next
+                # factorisation
+                local = parallel_map(lambda ab: solver.gather(owner[ab[0]:ab[1]]), spans)
         if owner is None:
             dxs = [solver.solve(-np.concatenate([p[2] for p in parts]))]
             spans_dx = [(0, N)]
         else:
-            dxs = parallel_map(lambda j: solver.solve(-parts[j][2],
-                                                      steps=owner[spans[j][0]:spans[j][1]]),
-                               range(len(spans)))
+            dxs = parallel_map(lambda j: local[j].solve(-parts[j][2]), range(len(spans)))
             spans_dx = spans
         if not all(np.all(np.isfinite(dx)) for dx in dxs):
             return X, bad
         for (a, b), dx in zip(spans_dx, dxs):
-            flat[a:b, pattern.free_flat] += dx
-    d = member_vectors(X, conn)
-    res = np.abs(lengths(d) - L).max(axis=1)
-    moved = np.abs(X - x0).reshape(N, -1).max(axis=1)
-    return X, (res <= tolerance * scale) & (moved < 0.1 * scale)
+            flat[a:b, pattern.free_cols] += dx
+    x0 = np.broadcast_to(x0, X.shape)
+
+    def accept(ab):
+        a, b = ab
+        res = np.abs(lengths(member_vectors(X[a:b], conn)) - L[a:b]).max(axis=1)
+        moved = np.abs(X[a:b] - x0[a:b]).reshape(b - a, -1).max(axis=1)
+        return (res <= tolerance * scale) & (moved < 0.1 * scale)
+    return X, np.concatenate(parallel_map(accept, spans))
 
 
 #: Steps per worker thread below which the bay positions' Newton solve is not split.
@@ -349,9 +355,7 @@ def bay_positions(bay: Structure, L: np.ndarray, item: str = "bay",
             h = (t1 - t0)[None, :, None, None]
             s = ((time - t0) / (t1 - t0))[None, :, None, None]
             v = vel.reshape(nb, idx.size, n, 3)
-            guess = ((2 * s - 3) * s * s + 1) * coarse[:, seg] \
-                + ((s - 2) * s + 1) * s * h * v[:, seg] \
-                + (3 - 2 * s) * s * s * coarse[:, seg + 1] + (s - 1) * s * s * h * v[:, seg + 1]
+            guess = _hermite(coarse, v, seg, s, h)
         else:
             w = ((np.arange(nt) - idx[seg]) / (idx[seg + 1] - idx[seg]))[None, :, None, None]
             guess = coarse[:, seg] * (1.0 - w) + coarse[:, seg + 1] * w
@@ -369,6 +373,29 @@ def bay_positions(bay: Structure, L: np.ndarray, item: str = "bay",
     for k in np.flatnonzero(~ok):
         X[k] = _sequential_positions(bay, L[k], x0, f"{item} {k + 1}" if nb > 1 else item)
     return X
+
+
+def _hermite(x: np.ndarray, v: np.ndarray, seg: np.ndarray, s: np.ndarray, h: np.ndarray
+             ) -> np.ndarray:
+    """Cubic Hermite interpolant of positions ``x`` and velocities ``v`` (nb, nc, n, 3) at
+    the coarse steps: every step between coarse steps ``seg`` and ``seg + 1`` at the fraction
+    ``s`` of the interval ``h`` ((1, nt, 1, 1) each).
+
+    The four terms h00 x0 + h10 h v0 + h01 x1 + h11 h v1 are added in that order into the
+    first one's gathered array, with one scratch array (the interpolant has the size of
+    all the positions)."""
+    out = np.take(x, seg, axis=1)
+    out *= ((2 * s - 3) * s * s + 1)
+    term = np.take(v, seg, axis=1)
+    term *= ((s - 2) * s + 1) * s * h
+    out += term
+    np.take(x, seg + 1, axis=1, out=term)
+    term *= (3 - 2 * s) * s * s
+    out += term
+    np.take(v, seg + 1, axis=1, out=term)
+    term *= (s - 1) * s * s * h
+    out += term
+    return out
 
 
 def chain_positions(bay: Structure, lengths: np.ndarray,

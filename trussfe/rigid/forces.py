@@ -199,12 +199,18 @@ def element_accelerations(kin: Kinematics, bodies: MemberBodies, conn: np.ndarra
     aa = np.take(kin.acceleration, conn[:, 0], axis=1)
     L, Ld, Ldd = kin.length[..., None], kin.length_rate[..., None], kin.length_acc[..., None]
     s_t = L - bodies.tube_length[None, :, None] / 2.0
-    a_tube = aa + Ldd * e + 2.0 * Ld * ed + s_t * edd
+    # aa + L̈ e + 2 L̇ ė + s_t ë, added in that order, with one scratch array
+    a_tube = Ldd * e
+    a_tube += aa
+    term = np.multiply(2.0 * Ld, ed)
+    a_tube += term
+    a_tube += np.multiply(s_t, edd, out=term)
     if base_members is None:
         a_base = aa + bodies.base_cg[None, :, None] * edd
     else:
         a_base = (np.take(aa, base_members, axis=1)
-                  + bodies.base_cg[None, base_members, None] * edd[:, base_members])
+                  + bodies.base_cg[None, base_members, None]
+                  * np.take(edd, base_members, axis=1))
     return a_tube, s_t, a_base
 
 
@@ -299,12 +305,14 @@ def member_resultants(kin: Kinematics, bodies: MemberBodies, gravity: np.ndarray
         f_base = mb * -g
     else:
         a_tube, s_t, a_base = element_accelerations(kin, bodies, conn, act)
-        f_tube = mt * (a_tube - g)                               # (time, member, 3)
+        f_tube = a_tube                  # m_t (a_tube − g), in the accelerations' place
+        f_tube -= g
+        f_tube *= mt                                             # (time, member, 3)
         f_base = mb * (a_base - g)
     R = f_tube.copy()
-    R[:, act] += f_base
+    _add_to_members(R, act, f_base)
     Ma = cross(s_t * e, f_tube)
-    Ma[:, act] += cross(cg * e[:, act], f_base)
+    _add_to_members(Ma, act, cross(cg * np.take(e, act, axis=1), f_base))
     if not rest:
         inertia = (bodies.tube_inertia(bodies.tube_length, bodies.tube_mass)
                    + bodies.base_inertia_cg)[None, :, None]
@@ -314,6 +322,15 @@ def member_resultants(kin: Kinematics, bodies: MemberBodies, gravity: np.ndarray
     full_base = np.zeros(R.shape)
     full_base[:, act] = f_base
     return f_tube, full_base, R, Ma
+
+
+def _add_to_members(a: np.ndarray, members: np.ndarray, b: np.ndarray) -> None:
+    """``a[:, members] += b`` for distinct ``members``, through a gathered copy (numpy's
+    fancy indexing with a leading slice is several times slower than ``np.take`` and a
+    plain assignment on the (steps, members, 3) arrays of a motion)."""
+    part = np.take(a, members, axis=1)
+    part += b
+    a[:, members] = part
 
 
 def _member_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies, rest: bool):
@@ -329,12 +346,17 @@ def _member_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies, r
     e = kin.unit
     L = kin.length[..., None]
     _, _, R, Ma = member_resultants(kin, bodies, g, conn, rest, bases=False)
-    Fb_perp = cross(Ma, e) / L
+    Fb_perp = cross(Ma, e)
+    Fb_perp /= L
     Re = np.einsum("tmi,tmi->tm", R, e)
-    Fa_perp = R - Re[..., None] * e - Fb_perp
+    axial = Re[..., None] * e
+    Fa_perp = R - axial
+    Fa_perp -= Fb_perp
     n = structure.n_nodes
-    # Known (tension-free) parts of the end forces, summed at the nodes.
-    S = _to_nodes(conn, n, Re[..., None] * e + Fa_perp, Fb_perp)
+    # Known (tension-free) parts of the end forces, summed at the nodes: the start ends'
+    # Re e + Fa_perp (in place of the axial part, which is not needed again).
+    axial += Fa_perp
+    S = _to_nodes(conn, n, axial, Fb_perp)
     P = pad3(structure.loads[:, :dim])[None]
     Mn = structure.masses[None, :, None]
     mg = Mn * g if rest else Mn * (g - kin.acceleration)      # lumped masses' loads
@@ -342,15 +364,21 @@ def _member_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies, r
     return Re, Fa_perp, Fb_perp, (P, mg), rhs
 
 
-def pair_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies) -> tuple:
+def pair_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies,
+               out: np.ndarray | None = None) -> tuple:
     """Member resultants of the motion and of rest, and their right-hand sides of
     ``Bᵀ t = rhs`` on the free coordinates, (nt, n_free, 2): the first half of
     :func:`nodal_forces_with_static`, so that the solve can be done for many blocks of steps
-    at once (:func:`forces_from_tensions` finishes)."""
+    at once (:func:`forces_from_tensions` finishes).  ``out``: an (nt, n_free, 2) array to
+    write the right-hand sides into (a block's rows of the whole motion's)."""
     pattern = _check_model(structure)
     loads = [_member_loads(structure, kin, bodies, False),
              _member_loads(structure, kin, bodies, True)]
-    return loads, np.stack([ld[4][:, pattern.free_flat] for ld in loads], axis=2)
+    if out is None:
+        out = np.empty((kin.length.shape[0], pattern.free_flat.size, len(loads)))
+    for j, ld in enumerate(loads):
+        np.take(ld[4], pattern.free_flat, axis=1, out=out[..., j])
+    return loads, out
 
 
 def forces_from_tensions(structure: Structure, kin: Kinematics, bodies: MemberBodies,

@@ -251,18 +251,20 @@ def _batched_newton_chunk(structure, pattern, L, X, tolerance=1e-12, iterations=
             solver, owner = CompatSolver(pattern.rows, pattern.cols, vals, pattern.m), None
     except SingularStep:
         return X, np.zeros(nt, dtype=bool)
+    if owner is not None:
+        solver = solver.gather(owner)    # every iteration solves with the same anchors
     for _ in range(iterations):
         d = member_vectors(X, conn)
         r = lengths(d)[:, pattern.loaded_idx] - Lk
         if np.abs(r).max() <= tolerance * scale:
             break
         if owner is not None:
-            dx = solver.solve(-r, steps=owner)
+            dx = solver.solve(-r)
         else:
             dx = solver.solve(-r, approximate=True)
         if not np.all(np.isfinite(dx)):
             return X, np.zeros(nt, dtype=bool)
-        flat[:, pattern.free_flat] += dx
+        flat[:, pattern.free_cols] += dx
     d = member_vectors(X, conn)
     res = np.abs(lengths(d) - L).max(axis=1)
     moved = np.abs(X - X0).reshape(nt, -1).max(axis=1)
@@ -277,6 +279,11 @@ class _Pattern:
         conn = structure.connectivity
         free = ~structure.translation_supports
         self.free_flat = np.flatnonzero(free.ravel())
+        # the free coordinates as a slice when they are contiguous (supports numbered first):
+        # updates of them are then plain strided operations, not gathers and scatters
+        f = self.free_flat
+        contiguous = f.size > 0 and f[-1] - f[0] + 1 == f.size
+        self.free_cols = slice(int(f[0]), int(f[-1]) + 1) if contiguous else f
         full_to_free = -np.ones(structure.n_nodes * dim, dtype=np.int64)
         full_to_free[self.free_flat] = np.arange(self.free_flat.size)
         m = conn.shape[0]
@@ -322,7 +329,7 @@ def _solve_compat(structure: Structure, pattern: _Pattern, solver: CompatSolver,
     nt = rhs.shape[0]
     out = np.zeros((nt, structure.n_nodes * structure.dim))
     try:
-        out[:, pattern.free_flat] = solver.solve(rhs[:, pattern.loaded_idx])
+        out[:, pattern.free_cols] = solver.solve(rhs[:, pattern.loaded_idx])
     except SingularStep as s:
         raise AnalysisError(f"motion: step {s.step}", "the assembly is at a singular position "
                             "(its compatibility matrix is rank deficient): its velocities and "
@@ -422,11 +429,14 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
         def rates(s):
             arel = member_vectors(A[s], conn)
             Ls, Lds = L[s][..., None], Ld[s][..., None]
-            ed_s = pad3((vrel[s] - Lds * e[s]) / Ls)
-            edd_s = pad3((arel - Ldd[s][..., None] * e[s]) / Ls) - 2 * Lds * ed_s / Ls
-            ed[s], edd[s] = ed_s, edd_s
-            omega[s] = cross(e3[s], ed_s)
-            alpha[s] = cross(e3[s], edd_s)
+            if e.shape[2] == 3:
+                _rates_into(ed[s], edd[s], vrel[s], arel, e[s], Ls, Lds, Ldd[s][..., None])
+            else:
+                ed_s = pad3((vrel[s] - Lds * e[s]) / Ls)
+                ed[s] = ed_s
+                edd[s] = pad3((arel - Ldd[s][..., None] * e[s]) / Ls) - 2 * Lds * ed_s / Ls
+            cross(e3[s], ed[s], out=omega[s])
+            cross(e3[s], edd[s], out=alpha[s])
         _in_blocks(nt, m, rates)
         return Kinematics(motion.time, X, pad3(V), pad3(A), L, Ld, Ldd, e3, ed, edd, omega,
                           alpha, "exact", solver)
@@ -448,6 +458,22 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     V, A = _walk_nodes(structure, motion, e3, ed, edd, L, Ld, Ldd)
     return Kinematics(motion.time, X, V, A, L, Ld, Ldd, e3, ed, edd, omega, alpha, "thesis",
                       solver)
+
+
+def _rates_into(ed: np.ndarray, edd: np.ndarray, vrel: np.ndarray, arel: np.ndarray,
+                e: np.ndarray, L: np.ndarray, Ld: np.ndarray, Ldd: np.ndarray) -> None:
+    """ė = (v_rel − L̇ e)/L and ë = (a_rel − L̈ e)/L − 2 L̇ ė / L written into ``ed`` and
+    ``edd`` (3-D members), operation for operation as the expressions read, without their
+    temporaries (``arel`` is overwritten)."""
+    np.multiply(Ld, e, out=ed)
+    np.subtract(vrel, ed, out=ed)
+    ed /= L
+    np.multiply(Ldd, e, out=edd)
+    np.subtract(arel, edd, out=edd)
+    edd /= L
+    np.multiply(2 * Ld, ed, out=arel)
+    arel /= L
+    edd -= arel
 
 
 #: Members × steps per block of the element-wise kinematics (:func:`_in_blocks`).

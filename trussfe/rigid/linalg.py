@@ -187,11 +187,12 @@ class BlockTriangularForm:
 _BTF_CACHE: dict = {}
 
 
-def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+def cross(a: np.ndarray, b: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
     """Cross product over the last axis of 3-vectors (broadcasting), as :func:`numpy.cross`.
 
     The same arithmetic as ``numpy.cross`` (``a1 b2 − a2 b1``, …; equal to the last bit), in
-    about half its time on the (steps, members, 3) arrays of a motion.
+    about half its time on the (steps, members, 3) arrays of a motion.  ``out``: an array of
+    the broadcast shape to write into (it must not overlap ``a`` or ``b``).
 
     Examples
     --------
@@ -200,7 +201,16 @@ def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """
     a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
     b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
-    return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=-1)
+    if out is None:
+        out = np.empty(np.broadcast_shapes(a.shape, b.shape),
+                       dtype=np.result_type(a.dtype, b.dtype))
+    # each component written in place (one scratch array, no stacked copy)
+    scratch = np.empty(out.shape[:-1], dtype=out.dtype)
+    for c, (x, y, u, v) in enumerate(((a1, b2, a2, b1), (a2, b0, a0, b2), (a0, b1, a1, b0))):
+        np.multiply(x, y, out=out[..., c])
+        np.multiply(u, v, out=scratch)
+        out[..., c] -= scratch
+    return out
 
 
 def norm(a: np.ndarray) -> np.ndarray:
@@ -309,6 +319,16 @@ def _stacked_inverse(D: np.ndarray) -> np.ndarray:
     return np.concatenate(parts, axis=1)
 
 
+def _step_pieces(nt: int, count: int) -> list[tuple[int, int]]:
+    """Contiguous pieces of ``nt`` steps, one per worker thread when the stack of ``count``
+    matrices per step is large (:data:`PARALLEL_INVERSE_MIN`), else the whole range."""
+    workers = worker_count()
+    if workers < 2 or nt < 2 or count * nt < PARALLEL_INVERSE_MIN:
+        return [(0, nt)]
+    cuts = np.linspace(0, nt, min(workers, nt) + 1).astype(int)
+    return list(zip(cuts[:-1], cuts[1:]))
+
+
 def _rcond(A: np.ndarray, inv: np.ndarray) -> np.ndarray:
     """Reciprocal condition numbers from Frobenius norms of a stack and its inverses."""
     with np.errstate(over="ignore", invalid="ignore"):
@@ -331,12 +351,20 @@ class _BlockInverses:
         self.off: list = [None] * form.n_blocks
         sizes = np.array([r.size for r in form.rows])
         worst = np.full(nt, np.inf)
+        # The stacks are filled, and their condition numbers taken, over the same pieces of
+        # the steps as their inversion (in worker threads for a large stack; every step
+        # is filled and tested the same in any piece).
+        spans = _step_pieces(nt, form.n_blocks)
         for size in np.unique(sizes):
             ids = np.flatnonzero(sizes == size)
             D = np.zeros((ids.size, nt, size * size))
-            for g, b in enumerate(ids):
-                r, c, e = form.diag[b]
-                D[g][:, r * size + c] = vals[:, e]
+
+            def fill(span, ids=ids, D=D, size=size):
+                a, b = span
+                for g, blk in enumerate(ids):
+                    r, c, e = form.diag[blk]
+                    D[g, a:b][:, r * size + c] = vals[a:b, e]
+            parallel_map(fill, spans)
             D = D.reshape(ids.size, nt, size, size)
             try:
                 inv = _stacked_inverse(D)
@@ -345,7 +373,12 @@ class _BlockInverses:
                 rc = np.sqrt(np.clip(lam[..., 0], 0.0, None) / np.maximum(lam[..., -1], 1e-300))
                 raise SingularStep(int(np.flatnonzero((~(rc >= SINGULAR_RCOND)).any(axis=0))[0])
                                    ) from None
-            worst = np.fmin(worst, np.nan_to_num(_rcond(D, inv), nan=0.0).min(axis=0))
+
+            def condition(span, D=D, inv=inv):
+                a, b = span
+                worst[a:b] = np.fmin(worst[a:b], np.nan_to_num(
+                    _rcond(D[:, a:b], inv[:, a:b]), nan=0.0).min(axis=0))
+            parallel_map(condition, spans)
             for g, b in enumerate(ids):
                 self.inv[b] = inv[g]
         bad = np.flatnonzero(~(worst >= SINGULAR_RCOND))
@@ -353,39 +386,59 @@ class _BlockInverses:
             raise SingularStep(int(bad[0]))
         for b, (ucols, lr, pos, e) in enumerate(form.coupling):
             if ucols.size:
-                O = np.zeros((nt, form.rows[b].size * ucols.size))
-                O[:, lr * ucols.size + pos] = vals[:, e]
-                self.off[b] = O.reshape(nt, form.rows[b].size, ucols.size)
+                self.off[b] = np.zeros((nt, form.rows[b].size * ucols.size))
 
-    def solve(self, rhs: np.ndarray, transpose: bool, steps: np.ndarray | None) -> np.ndarray:
+        def fill_off(span):
+            a, b_ = span
+            for b, (ucols, lr, pos, e) in enumerate(form.coupling):
+                if ucols.size:
+                    self.off[b][a:b_][:, lr * ucols.size + pos] = vals[a:b_, e]
+        parallel_map(fill_off, spans)
+        for b, (ucols, lr, pos, e) in enumerate(form.coupling):
+            if ucols.size:
+                self.off[b] = self.off[b].reshape(nt, form.rows[b].size, ucols.size)
+
+    def solve(self, rhs: np.ndarray, transpose: bool, steps: np.ndarray | None,
+              out: np.ndarray | None = None) -> np.ndarray:
         """Forward (B x = rhs) or backward (Bᵀ x = rhs) block substitution, every step at
-        once; ``steps`` maps each right-hand side to its factorised step."""
-        f = self.form
+        once; ``steps`` maps each right-hand side to its factorised step; ``out``: an array
+        shaped like ``rhs`` to write the solution into."""
+        out = np.empty_like(rhs) if out is None else out
         if transpose and rhs.ndim == 3 and rhs.shape[2] > 1:
             # one right-hand side at a time: numpy's einsum is several times slower with a
-            # trailing axis, and the columns' arithmetic is the same
-            return np.stack([self.solve(np.ascontiguousarray(rhs[..., c]), True, steps)
-                             for c in range(rhs.shape[2])], axis=-1)
-        out = np.empty_like(rhs)
+            # trailing axis, and the columns' arithmetic is the same; each column's
+            # contiguous copy is the backward substitution's scratch array
+            for c in range(rhs.shape[2]):
+                self._backward(np.ascontiguousarray(rhs[..., c]), steps, out[..., c])
+            return out
+        if transpose:
+            self._backward(rhs.copy(), steps, out)
+            return out
+        f = self.form
 
         def pick(a):
             return a if steps is None else a[steps]
 
-        if not transpose:
-            for b in range(f.n_blocks):
-                r = rhs[:, f.rows[b]]
-                if self.off[b] is not None:
-                    r = r - np.einsum("tij,tj...->ti...", pick(self.off[b]),
-                                      out[:, f.coupling[b][0]])
-                out[:, f.cols[b]] = np.einsum("tij,tj...->ti...", pick(self.inv[b]), r)
-            return out
-        c = rhs.copy()
+        for b in range(f.n_blocks):
+            r = rhs[:, f.rows[b]]
+            if self.off[b] is not None:
+                r = r - np.einsum("tij,tj...->ti...", pick(self.off[b]),
+                                  out[:, f.coupling[b][0]])
+            out[:, f.cols[b]] = np.einsum("tij,tj...->ti...", pick(self.inv[b]), r)
+        return out
+
+    def _backward(self, c: np.ndarray, steps: np.ndarray | None, out: np.ndarray) -> None:
+        """Backward block substitution Bᵀ x = c into ``out``; ``c`` is overwritten."""
+        f = self.form
+
+        def pick(a):
+            return a if steps is None else a[steps]
+
         for b in range(f.n_blocks - 1, -1, -1):
             y = np.einsum("tji,tj...->ti...", pick(self.inv[b]), c[:, f.cols[b]])
             out[:, f.rows[b]] = y
             if self.off[b] is not None:
                 c[:, f.coupling[b][0]] -= np.einsum("tij,ti...->tj...", pick(self.off[b]), y)
-        return out
 
 
 def is_direct(rows: np.ndarray, cols: np.ndarray, n: int) -> bool:
@@ -428,6 +481,8 @@ class CompatSolver:
         self.nt = vals.shape[0]
         self.inverse = None
         self.block_inverses: _BlockInverses | None = None
+        # whether a direct solve of many steps splits them between worker threads
+        self.split = True
         if n == 0:
             return
         form = block_triangular_form(rows, cols, n) if DENSE_LIMIT > 0 else None
@@ -506,6 +561,27 @@ class CompatSolver:
             out.block_inverses = bi
         return out
 
+    def gather(self, steps: np.ndarray) -> "CompatSolver":
+        """The factorisations of the steps ``steps`` (one per right-hand side of the later
+        solves, gathered once): ``gather(steps).solve(rhs)`` is ``solve(rhs, steps=steps)``
+        with the same numbers, for an iteration that solves with one step map many times.
+        Direct paths only; its solves run in the calling thread (it is made for work
+        already split between threads)."""
+        if not self.direct:
+            raise ValueError("gather needs a direct (stacked-inverse) solver")
+        out = object.__new__(CompatSolver)
+        out.__dict__.update(self.__dict__)
+        out.nt, out.split = len(steps), False
+        if self.inverse is not None:
+            out.inverse = self.inverse[steps]
+        if self.block_inverses is not None:
+            bi = object.__new__(_BlockInverses)
+            bi.form = self.block_inverses.form
+            bi.inv = [a[steps] for a in self.block_inverses.inv]
+            bi.off = [None if a is None else a[steps] for a in self.block_inverses.off]
+            out.block_inverses = bi
+        return out
+
     @property
     def direct(self) -> bool:
         """Whether solves are direct (stacked inverses), not anchored refinement."""
@@ -526,15 +602,19 @@ class CompatSolver:
             return np.einsum(sub, self.inverse if steps is None else self.inverse[steps], rhs)
         if self.block_inverses is not None:
             rhs = np.asarray(rhs, dtype=float)
-            workers = min(worker_count(), self.nt // PARALLEL_SOLVE_MIN_STEPS)
+            workers = (min(worker_count(), self.nt // PARALLEL_SOLVE_MIN_STEPS)
+                       if self.split else 1)
             if steps is not None or workers < 2 or rhs.shape[0] != self.nt:
                 return self.block_inverses.solve(rhs, transpose, steps)
-            # independent steps: contiguous chunks of them in worker threads
+            # independent steps: contiguous chunks of them in worker threads, each writing
+            # its rows of the solution
             cuts = np.linspace(0, self.nt, workers + 1).astype(int)
-            parts = parallel_map(
+            out = np.empty_like(rhs)
+            parallel_map(
                 lambda ab: self.subset(ab[0], ab[1]).block_inverses.solve(
-                    rhs[ab[0]:ab[1]], transpose, None), list(zip(cuts[:-1], cuts[1:])))
-            return np.concatenate(parts, axis=0)
+                    rhs[ab[0]:ab[1]], transpose, None, out[ab[0]:ab[1]]),
+                list(zip(cuts[:-1], cuts[1:])))
+            return out
         if self.n == 0:
             return np.zeros_like(rhs, dtype=float)
         if steps is not None:

@@ -132,8 +132,7 @@ def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
         p = np.broadcast_to(-g, e.shape)                                  # a_0 = 0
     else:
         edd = kin.unit_acc[:, sel]
-        p = (np.take(kin.acceleration, conn[:, 0], axis=1) + kin.length_acc[:, sel, None] * e
-             + 2.0 * kin.length_rate[:, sel, None] * kin.unit_rate[:, sel] - g)   # a_0 − g
+        p = _base_acceleration(kin, conn, sel, e, g)                      # a_0 − g
     Fb = forces.end_force[:, sel, 1]
     mu = (bodies.tube_mass[sel] / tube_length)[None, :, None]
     mseg = mu * u                                                         # (1, m, k)
@@ -151,20 +150,42 @@ def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
         # ë = α = 0: the lever terms vanish (same arithmetic as below without the zeros).
         if tension is None:
             tension = _tension(mseg, pe, fe)
-        V = mseg[..., None] * p_perp[:, :, None, :] - f_perp[:, :, None, :]
-        M = half * c0[:, :, None, :] - u[..., None] * eF[:, :, None, :]
+        V = mseg[..., None] * p_perp[:, :, None, :]
+        V -= f_perp[:, :, None, :]
+        M = half * c0[:, :, None, :]
+        M -= u[..., None] * eF[:, :, None, :]
         return SectionForces(position=positions, tension=tension, shear=V, moment=M, unit=e)
     lever = L - u / 2.0                                                   # (t, m, k)
     qe = np.einsum("tmi,tmi->tm", edd, e)[..., None]
     if tension is None:
         tension = _tension(mseg, pe, fe, lever, qe)
     q_perp = edd - qe * e
-    V = ((mseg[..., None] * p_perp[:, :, None, :])
-         + (mseg * lever)[..., None] * q_perp[:, :, None, :] - f_perp[:, :, None, :])
+    # V = m_s p⊥ + m_s (L − u/2) q⊥ − F_b⊥ and
+    # M = (m_s u/2) (c0 + (L − u/2) c1) + I_s α − u e × F_b, added in that order in place
+    # (every (t, m, k, 3) term once, no temporaries of the sums)
+    V = mseg[..., None] * p_perp[:, :, None, :]
+    term = np.multiply((mseg * lever)[..., None], q_perp[:, :, None, :])
+    V += term
+    V -= f_perp[:, :, None, :]
     c1 = cross(e, edd)
-    M = (half * (c0[:, :, None, :] + lever[..., None] * c1[:, :, None, :])
-         + Iseg[..., None] * kin.alpha[:, sel, None, :] - u[..., None] * eF[:, :, None, :])
+    M = np.multiply(lever[..., None], c1[:, :, None, :])
+    M += c0[:, :, None, :]
+    M *= half
+    M += np.multiply(Iseg[..., None], kin.alpha[:, sel, None, :], out=term)
+    M -= np.multiply(u[..., None], eF[:, :, None, :], out=term)
     return SectionForces(position=positions, tension=tension, shear=V, moment=M, unit=e)
+
+
+def _base_acceleration(kin: Kinematics, conn: np.ndarray, sel, e: np.ndarray,
+                       g: np.ndarray) -> np.ndarray:
+    """a_0 − g = a_a + L̈ e + 2 L̇ ė − g of the members ``sel`` (start nodes ``conn``),
+    (t, m, 3), the terms added in that order in place."""
+    p = np.take(kin.acceleration, conn[:, 0], axis=1)
+    p += kin.length_acc[:, sel, None] * e
+    term = np.multiply(2.0 * kin.length_rate[:, sel, None], kin.unit_rate[:, sel])
+    p += term
+    p -= g
+    return p
 
 
 def _tension(mseg, pe, fe, lever=None, qe=None):
@@ -198,8 +219,7 @@ def section_tension(structure: Structure, kin: Kinematics, forces: NodalForces,
         pe = np.einsum("tmi,tmi->tm", np.broadcast_to(-g, e.shape), e)[..., None]
         return _tension(mseg, pe, fe)
     conn = structure.connectivity[sel]
-    p = (np.take(kin.acceleration, conn[:, 0], axis=1) + kin.length_acc[:, sel, None] * e
-         + 2.0 * kin.length_rate[:, sel, None] * kin.unit_rate[:, sel] - g)
+    p = _base_acceleration(kin, conn, sel, e, g)
     pe = np.einsum("tmi,tmi->tm", p, e)[..., None]
     qe = np.einsum("tmi,tmi->tm", kin.unit_acc[:, sel], e)[..., None]
     return _tension(mseg, pe, fe, kin.length[:, sel, None] - u / 2.0, qe)

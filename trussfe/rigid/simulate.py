@@ -286,9 +286,13 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
             # Member loads block by block, the member tensions of all steps in one solve (a
             # loop over the diagonal blocks, paid once), then the rest block by block.
             kins = [_slice_kinematics(kin_all, k0, k0 + step) for k0 in starts]
-            # The blocks are independent: worker threads (trussfe.threads) take them.
-            loads, rhs = zip(*parallel_map(lambda kc: pair_loads(structure, kc, bodies), kins))
-            tension = _solve_tensions(kin_all, np.concatenate(rhs, axis=0))
+            # The blocks are independent: worker threads (trussfe.threads) take them, each
+            # writing its rows of the right-hand sides of all steps.
+            rhs = np.empty((nt, pattern.free_flat.size, 2))
+            loads = parallel_map(lambda j: pair_loads(structure, kins[j], bodies,
+                                                      rhs[starts[j]:starts[j] + step])[0],
+                                 range(len(kins)))
+            tension = _solve_tensions(kin_all, rhs)
             del rhs
 
             def rest(j):
