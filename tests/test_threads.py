@@ -12,7 +12,7 @@ from trussfe import threads
 from trussfe.cli import environment_workers
 from trussfe.rigid import linalg
 from trussfe.rigid.motion import third_order_motion
-from trussfe.studies.lacy_rigid import double_octahedral_chain
+from trussfe.studies.lacy_rigid import double_octahedral_chain, double_octahedron
 from trussfe.rigid.simulate import simulate
 
 
@@ -73,11 +73,11 @@ def test_parallel_map_keeps_order_and_raises():
 
 @pytest.mark.parametrize("method", ["bay-by-bay", "direct"])
 def test_chain_simulation_threaded_equals_serial(monkeypatch, method):
-    """A 30-bay chain over 600 steps (several blocks of steps, Newton split in chunks), by
-    both methods: the threaded forces, stresses and actuator forces equal the serial ones.
-    Positions come from the same converged Newton iteration (tolerance 1e-12 of the bar
-    lengths), so forces agree to ~1e-9 relative; the block stages themselves are
-    bit-identical."""
+    """A 30-bay chain over 600 steps (several blocks of steps, the positions' Newton
+    iteration split in chunks between the threads), by both methods: every output of the
+    threaded run equals the serial one bit for bit.  The chunks iterate in lockstep (one
+    convergence test, the whole motion's chord Jacobians), so no step's arithmetic depends
+    on the number of threads."""
     c = double_octahedral_chain(30, gravity=9.81, top_load=46.0)
     acts = [a.member for a in c.extensions["active_members"]]
     L0 = c.lengths()[acts]
@@ -90,9 +90,29 @@ def test_chain_simulation_threaded_equals_serial(monkeypatch, method):
     with threads.compute_threads(workers=3):
         threaded = simulate(c, m, n_sections=1, method=method)
     assert serial.options["method"] == threaded.options["method"] == method
-    np.testing.assert_allclose(threaded.kinematics.coords, serial.kinematics.coords,
-                               rtol=0, atol=1e-12 * np.abs(serial.kinematics.coords).max())
-    for a, b in ((threaded.midpoint_axial_force, serial.midpoint_axial_force),
-                 (threaded.stresses.von_mises, serial.stresses.von_mises),
-                 (threaded.actuator_force, serial.actuator_force)):
-        np.testing.assert_allclose(a, b, rtol=0, atol=1e-9 * np.abs(b).max())
+    _assert_same_outputs(threaded, serial)
+
+
+def test_slew_threaded_equals_serial():
+    """The double-octahedral slew (the direct method: Newton on the whole truss, 2,000 steps
+    in chunks) gives the same numbers with one thread and with three."""
+    s = double_octahedron((1.2289, 1.1079, 1.1079), gravity=-9.81, top_load=46.0)
+    m = third_order_motion(s, [1.2289, 1.1079, 1.1079], [1.1079, 1.2289, 1.2289], 2.0, 2000)
+    with threads.compute_threads(workers=1):
+        serial = simulate(s, m, n_sections=3)
+    with threads.compute_threads(workers=3):
+        threaded = simulate(s, m, n_sections=3)
+    assert serial.options["method"] == "direct"
+    _assert_same_outputs(threaded, serial)
+
+
+def _assert_same_outputs(a, b):
+    """Positions, rates, member forces, section stresses and actuator forces equal."""
+    for name in ("coords", "velocity", "acceleration"):
+        np.testing.assert_array_equal(getattr(a.kinematics, name), getattr(b.kinematics, name))
+    for x, y in ((a.forces.tension_end, b.forces.tension_end),
+                 (a.static_forces.end_force, b.static_forces.end_force),
+                 (a.midpoint_axial_force, b.midpoint_axial_force),
+                 (a.stresses.von_mises, b.stresses.von_mises),
+                 (a.actuator_force, b.actuator_force)):
+        np.testing.assert_array_equal(x, y)

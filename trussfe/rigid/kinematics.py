@@ -203,72 +203,72 @@ PARALLEL_NEWTON_MIN_STEPS = 200
 
 
 def _batched_newton(structure, pattern, L, X, tolerance=1e-12, iterations=30):
-    """Chord Newton on every step at once (:func:`_batched_newton_chunk`), the steps split
-    into contiguous chunks between worker threads for long motions (the steps are
-    independent given their guesses)."""
-    nt = X.shape[0]
-    chunks = min(worker_count(), nt // PARALLEL_NEWTON_MIN_STEPS)
-    if chunks < 2:
-        return _batched_newton_chunk(structure, pattern, L, X, tolerance, iterations)
-    # cut at multiples of the anchor spacing, so the chord Jacobians are those of the
-    # whole-motion iteration (and the last step of each chunk); one tolerance scale for all
-    cuts = np.unique(np.r_[(np.linspace(0, nt, chunks + 1) // ANCHOR_SPACING).astype(int)
-                           * ANCHOR_SPACING, nt])
-    scale = float(L.max())
-    parts = parallel_map(lambda ab: _batched_newton_chunk(
-        structure, pattern, L[ab[0]:ab[1]], X[ab[0]:ab[1]], tolerance, iterations, scale),
-        list(zip(cuts[:-1], cuts[1:])))
-    return (np.concatenate([p[0] for p in parts], axis=0),
-            np.concatenate([p[1] for p in parts], axis=0))
-
-
-def _batched_newton_chunk(structure, pattern, L, X, tolerance=1e-12, iterations=30,
-                          scale=None):
     """Chord (modified) Newton on the bar-length equations of every step at once.
 
     The Jacobian (the compatibility matrix) is factorised once at the interpolated guess and
     reused: the guess is close, so the iteration contracts fast, and one factorisation per
-    step costs far less than one per iteration.  Returns the positions and a per-step flag:
-    converged and within a tenth of the truss size of its guess (so that no step has jumped
-    to another assembly branch).
+    step costs far less than one per iteration.  The chord Jacobian of a step is its nearest
+    anchor's (every :data:`ANCHOR_SPACING`-th step of the motion, and the last).  Returns
+    the positions and a per-step flag: converged and within a tenth of the truss size of its
+    guess (so that no step has jumped to another assembly branch).
+
+    Long motions are split into contiguous chunks of steps between worker threads, in
+    lockstep: one convergence test over all steps per iteration, the whole motion's anchors,
+    so that every step's arithmetic is that of the whole-motion iteration and the positions
+    do not depend on the number of threads (the same numbers, bit for bit).
     """
     conn = structure.connectivity
     X = X.copy()
     X0 = X.copy()
     nt = X.shape[0]
-    scale = float(L.max()) if scale is None else scale
+    scale = float(L.max())
     Lk = L[:, pattern.loaded_idx]
     flat = X.reshape(nt, -1)
+    failed = (X, np.zeros(nt, dtype=bool))
+    chunks = min(worker_count(), nt // PARALLEL_NEWTON_MIN_STEPS)
+    cuts = np.linspace(0, nt, max(chunks, 1) + 1).astype(np.int64)
+    spans = list(zip(cuts[:-1], cuts[1:]))
     d = member_vectors(X, conn)
     vals = pattern.values(d / lengths(d)[..., None])
-    # The chord Jacobian is the guess's compatibility matrix at anchor steps (every 8th);
-    # each step uses its nearest anchor (large systems do the same inside CompatSolver).
     anchors = np.unique(np.r_[np.arange(0, nt, ANCHOR_SPACING), nt - 1])
     owner = np.searchsorted((anchors[1:] + anchors[:-1]) / 2.0, np.arange(nt))
     try:
         solver = CompatSolver(pattern.rows, pattern.cols, vals[anchors], pattern.m)
         if not solver.direct:
+            # anchored refinement (large systems) on every step, in the calling thread
             solver, owner = CompatSolver(pattern.rows, pattern.cols, vals, pattern.m), None
     except SingularStep:
-        return X, np.zeros(nt, dtype=bool)
-    if owner is not None:
-        solver = solver.gather(owner)    # every iteration solves with the same anchors
+        return failed
+    del vals
+    # every chunk's anchors gathered once: every iteration solves with the same ones
+    local = (None if owner is None else
+             parallel_map(lambda ab: solver.gather(owner[ab[0]:ab[1]]), spans))
+
+    def residual(ab):
+        a, b = ab
+        return lengths(member_vectors(X[a:b], conn))[:, pattern.loaded_idx] - Lk[a:b]
+
     for _ in range(iterations):
-        d = member_vectors(X, conn)
-        r = lengths(d)[:, pattern.loaded_idx] - Lk
-        if np.abs(r).max() <= tolerance * scale:
+        parts = parallel_map(residual, spans)
+        if max(np.abs(r).max() for r in parts) <= tolerance * scale:
             break
-        if owner is not None:
-            dx = solver.solve(-r)
+        if local is None:
+            dxs = [solver.solve(-np.concatenate(parts), approximate=True)]
+            at = [(0, nt)]
         else:
-            dx = solver.solve(-r, approximate=True)
-        if not np.all(np.isfinite(dx)):
-            return X, np.zeros(nt, dtype=bool)
-        flat[:, pattern.free_cols] += dx
-    d = member_vectors(X, conn)
-    res = np.abs(lengths(d) - L).max(axis=1)
-    moved = np.abs(X - X0).reshape(nt, -1).max(axis=1)
-    return X, (res <= tolerance * scale) & (moved < 0.1 * scale)
+            dxs = parallel_map(lambda j: local[j].solve(-parts[j]), range(len(spans)))
+            at = spans
+        if not all(np.all(np.isfinite(dx)) for dx in dxs):
+            return failed
+        for (a, b), dx in zip(at, dxs):
+            flat[a:b, pattern.free_cols] += dx
+
+    def accept(ab):
+        a, b = ab
+        res = np.abs(lengths(member_vectors(X[a:b], conn)) - L[a:b]).max(axis=1)
+        moved = np.abs(X[a:b] - X0[a:b]).reshape(b - a, -1).max(axis=1)
+        return (res <= tolerance * scale) & (moved < 0.1 * scale)
+    return X, np.concatenate(parallel_map(accept, spans))
 
 
 class _Pattern:
