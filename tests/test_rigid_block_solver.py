@@ -6,7 +6,8 @@ import scipy.sparse as sp
 from numpy.testing import assert_allclose
 
 from trussfe.rigid.kinematics import _Pattern
-from trussfe.rigid.linalg import CompatSolver, SingularStep, block_triangular_form, cross, norm
+from trussfe.model.geometry import lengths
+from trussfe.rigid.linalg import CompatSolver, SingularStep, block_triangular_form, cross
 from trussfe.rigid.motion import third_order_motion
 from trussfe.studies.lacy_rigid import double_octahedral_chain, double_octahedron
 from trussfe.rigid.simulate import simulate
@@ -82,10 +83,17 @@ def test_chain_block_and_superlu_paths_agree(monkeypatch):
                     atol=1e-9 * np.abs(a.stresses.von_mises).max())
 
 
-def test_cross_and_norm_equal_numpy():
-    """The fast helpers against numpy.cross (bit for bit) and numpy.linalg.norm (1e-15)."""
+def test_cross_and_lengths_equal_numpy():
+    """The fast helpers against numpy.cross and numpy.linalg.norm, bit for bit: the cross
+    product (also written into a given array), and the lengths of 1-, 2- and 3-vectors that
+    the section shears' and moments' magnitudes are (summed column by column in place)."""
     rng = np.random.default_rng(2)
     a, b = rng.standard_normal((2, 50, 7, 3))
     assert np.array_equal(cross(a, b), np.cross(a, b))
     assert np.array_equal(cross(a, b[0, 0]), np.cross(a, b[0, 0]))
-    assert_allclose(norm(a), np.linalg.norm(a, axis=-1), rtol=1e-15)
+    out = np.empty_like(a)
+    assert cross(a, b, out=out) is out and np.array_equal(out, np.cross(a, b))
+    for width in (1, 2, 3):
+        v = a[..., :width] * 1e3
+        assert np.array_equal(lengths(v), np.linalg.norm(v, axis=-1))
+    assert np.array_equal(lengths(a[:, :, None]), np.linalg.norm(a[:, :, None], axis=-1))

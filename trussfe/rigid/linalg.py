@@ -213,18 +213,6 @@ def cross(a: np.ndarray, b: np.ndarray, out: np.ndarray | None = None) -> np.nda
     return out
 
 
-def norm(a: np.ndarray) -> np.ndarray:
-    """Euclidean norm over the last axis (``numpy.linalg.norm(a, axis=-1)`` to round-off, in
-    half its time).
-
-    Examples
-    --------
-    >>> norm(np.array([[3.0, 4.0, 0.0]])).tolist()
-    [5.0]
-    """
-    return np.sqrt(np.einsum("...i,...i->...", a, a))
-
-
 def block_triangular_form(rows: np.ndarray, cols: np.ndarray, n: int
                           ) -> BlockTriangularForm | None:
     """Block lower-triangular form of the n × n pattern ``(rows, cols)``, or ``None`` when the

@@ -38,6 +38,7 @@ import numpy as np
 from ..mechanics.geometry import frame_rotations, stations, transverse_frames
 from ..mechanics.mass import centroidal_inertia
 from ..mechanics.stress import SectionStresses, round_sections, von_mises
+from ..model.geometry import lengths
 from ..model.structure import Structure
 from .forces import MemberBodies, NodalForces
 from .kinematics import Kinematics, pad3
@@ -76,12 +77,12 @@ class SectionForces:
     @property
     def shear_magnitude(self) -> np.ndarray:
         """|V|, (nt, m, k)."""
-        return np.linalg.norm(self.shear, axis=-1)
+        return lengths(self.shear)
 
     @property
     def moment_magnitude(self) -> np.ndarray:
         """|M|, (nt, m, k)."""
-        return np.linalg.norm(self.moment, axis=-1)
+        return lengths(self.moment)
 
 
 def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
