@@ -39,7 +39,7 @@ from ..kinematics.assembly import solve_positions
 from ..mechanics.geometry import lengths, member_vectors
 from ..model.structure import Structure
 from ..threads import parallel_map, worker_count
-from .linalg import ANCHOR_SPACING, CompatSolver, SingularStep, cross
+from .linalg import ANCHOR_SPACING, CompatSolver, SingularStep, cross, is_direct
 from .motion import Motion
 
 log = logging.getLogger(__name__)
@@ -228,21 +228,31 @@ def _batched_newton(structure, pattern, L, X, tolerance=1e-12, iterations=30):
     chunks = min(worker_count(), nt // PARALLEL_NEWTON_MIN_STEPS)
     cuts = np.linspace(0, nt, max(chunks, 1) + 1).astype(np.int64)
     spans = list(zip(cuts[:-1], cuts[1:]))
-    d = member_vectors(X, conn)
-    vals = pattern.values(d / lengths(d)[..., None])
     anchors = np.unique(np.r_[np.arange(0, nt, ANCHOR_SPACING), nt - 1])
     owner = np.searchsorted((anchors[1:] + anchors[:-1]) / 2.0, np.arange(nt))
+
+    def values(steps):
+        """B's values at the guesses of ``steps`` (the unit vectors' components)."""
+        d = member_vectors(X[steps], conn)
+        return pattern.values(d / lengths(d)[..., None])
+
+    def chunk_solver(ab):
+        """The stacked inverses at the anchors of a chunk's steps, gathered once for every
+        step (each anchor's inverse is the same in any subset of the anchors)."""
+        a, b = ab
+        first, last = owner[a], owner[b - 1]
+        part = CompatSolver(pattern.rows, pattern.cols, values(anchors[first:last + 1]),
+                            pattern.m)
+        return part.gather(owner[a:b] - first)
     try:
-        solver = CompatSolver(pattern.rows, pattern.cols, vals[anchors], pattern.m)
-        if not solver.direct:
+        if is_direct(pattern.rows, pattern.cols, pattern.m):
+            local = parallel_map(chunk_solver, spans)
+        else:
             # anchored refinement (large systems) on every step, in the calling thread
-            solver, owner = CompatSolver(pattern.rows, pattern.cols, vals, pattern.m), None
+            solver = CompatSolver(pattern.rows, pattern.cols, values(slice(None)), pattern.m)
+            local = None
     except SingularStep:
         return failed
-    del vals
-    # every chunk's anchors gathered once: every iteration solves with the same ones
-    local = (None if owner is None else
-             parallel_map(lambda ab: solver.gather(owner[ab[0]:ab[1]]), spans))
 
     def residual(ab):
         a, b = ab
