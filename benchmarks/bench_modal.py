@@ -120,7 +120,6 @@ def main(argv=None) -> None:
     ap.add_argument("--modes", type=int, default=10)
     ap.add_argument("--no-opensees", action="store_true")
     a = ap.parse_args(argv)
-    rows = []
     cases = [(f"chain {b}", lambda b=b: octahedral_chain(b)) for b in a.bays]
     if a.grid:
         cases.append((f"grid {a.grid}", lambda: space_grid(a.grid)))

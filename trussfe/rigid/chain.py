@@ -213,7 +213,7 @@ def _batched_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, *,
     chord still contracts fast, for a fraction of the factorisations).  Returns the
     positions and a per-step flag: converged, and within a tenth of the bay's size of ``x0``.
     """
-    from .kinematics import _Pattern
+    from .kinematics import _Pattern, accepted_positions
     from .linalg import CompatSolver, SingularStep
 
     N = L.shape[0]
@@ -277,14 +277,8 @@ def _batched_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, *,
             return X, bad
         for (a, b), dx in zip(spans_dx, dxs):
             flat[a:b, pattern.free_cols] += dx
-    x0 = np.broadcast_to(x0, X.shape)
-
-    def accept(ab):
-        a, b = ab
-        res = np.abs(lengths(member_vectors(X[a:b], conn)) - L[a:b]).max(axis=1)
-        moved = np.abs(X[a:b] - x0[a:b]).reshape(b - a, -1).max(axis=1)
-        return (res <= tolerance * scale) & (moved < 0.1 * scale)
-    return X, np.concatenate(parallel_map(accept, spans))
+    return X, accepted_positions(X, np.broadcast_to(x0, X.shape), L, conn, scale, spans,
+                                 tolerance)
 
 
 #: Steps per worker thread below which the bay positions' Newton solve is not split.

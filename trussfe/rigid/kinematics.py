@@ -272,13 +272,27 @@ def _batched_newton(structure, pattern, L, X, tolerance=1e-12, iterations=30):
             return failed
         for (a, b), dx in zip(at, dxs):
             flat[a:b, pattern.free_cols] += dx
+    return X, accepted_positions(X, X0, L, conn, scale, spans, tolerance)
 
+
+def accepted_positions(X: np.ndarray, guess: np.ndarray, L: np.ndarray, conn: np.ndarray,
+                       scale: float, spans: list, tolerance: float = 1e-12) -> np.ndarray:
+    """Which steps of a batched position solve to accept: the bar lengths ``L`` (nt, m) met
+    to ``tolerance · scale`` by the positions ``X`` (nt, n, 3), and no coordinate moved a
+    tenth of ``scale`` or more from its ``guess`` (no jump to another assembly branch).  The
+    chunks of steps ``spans`` ((start, stop) pairs covering every step) are tested in
+    worker threads.
+
+    Returns
+    -------
+    ndarray of bool, shape (nt,)
+    """
     def accept(ab):
         a, b = ab
         res = np.abs(lengths(member_vectors(X[a:b], conn)) - L[a:b]).max(axis=1)
-        moved = np.abs(X[a:b] - X0[a:b]).reshape(b - a, -1).max(axis=1)
+        moved = np.abs(X[a:b] - guess[a:b]).reshape(b - a, -1).max(axis=1)
         return (res <= tolerance * scale) & (moved < 0.1 * scale)
-    return X, np.concatenate(parallel_map(accept, spans))
+    return np.concatenate(parallel_map(accept, spans))
 
 
 class _Pattern:
