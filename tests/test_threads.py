@@ -116,3 +116,30 @@ def _assert_same_outputs(a, b):
                  (a.stresses.von_mises, b.stresses.von_mises),
                  (a.actuator_force, b.actuator_force)):
         np.testing.assert_array_equal(x, y)
+
+
+def test_compute_threads_lends_its_threads_to_every_map_and_ends_them():
+    """Inside compute_threads the maps run on its threads (the same ones from map to map,
+    started once), a map nested in one of their calls starts its own instead of waiting for
+    them (two levels of two items on two threads: would deadlock on shared threads), and no
+    thread outlives the context."""
+    import threading
+
+    def ident(_):
+        return threading.get_ident(), threading.current_thread().name
+
+    def nested(x):
+        return threads.parallel_map(lambda y: x * 10 + y, range(2))
+
+    with threads.compute_threads(workers=2, blas=None):
+        first = set(threads.parallel_map(ident, range(8)))
+        second = set(threads.parallel_map(ident, range(8)))
+        # the context's two threads, named for trussfe, and no others in the second map
+        assert all(name.startswith("trussfe") for _, name in first | second)
+        assert len(first | second) <= 2
+        assert threading.get_ident() not in {i for i, _ in first}
+        assert threads.parallel_map(nested, range(2)) == [[0, 1], [10, 11]]
+        # an explicit, different count gets threads of its own
+        assert threads.parallel_map(lambda x: x + 1, range(3), workers=3) == [1, 2, 3]
+    alive = [t for t in threading.enumerate() if t.name.startswith("trussfe")]
+    assert alive == []
