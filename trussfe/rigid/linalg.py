@@ -298,12 +298,10 @@ PARALLEL_INVERSE_MIN = 20_000
 def _stacked_inverse(D: np.ndarray) -> np.ndarray:
     """``numpy.linalg.inv`` of a stack (blocks, steps, n, n), split over the steps between
     worker threads when large (LAPACK releases the GIL; results bit-identical)."""
-    nt = D.shape[1]
-    workers = worker_count()
-    if workers < 2 or D.shape[0] * nt < PARALLEL_INVERSE_MIN or nt < 2:
+    spans = _step_pieces(D.shape[1], D.shape[0])
+    if len(spans) == 1:
         return np.linalg.inv(D)
-    cuts = np.linspace(0, nt, min(workers, nt) + 1).astype(int)
-    parts = parallel_map(np.linalg.inv, [D[:, a:b] for a, b in zip(cuts[:-1], cuts[1:])])
+    parts = parallel_map(np.linalg.inv, [D[:, a:b] for a, b in spans])
     return np.concatenate(parts, axis=1)
 
 
@@ -372,19 +370,17 @@ class _BlockInverses:
         bad = np.flatnonzero(~(worst >= SINGULAR_RCOND))
         if bad.size:
             raise SingularStep(int(bad[0]))
-        for b, (ucols, lr, pos, e) in enumerate(form.coupling):
+        for b, (ucols, _, _, _) in enumerate(form.coupling):
             if ucols.size:
-                self.off[b] = np.zeros((nt, form.rows[b].size * ucols.size))
+                self.off[b] = np.zeros((nt, form.rows[b].size, ucols.size))
 
         def fill_off(span):
-            a, b_ = span
+            a, z = span
             for b, (ucols, lr, pos, e) in enumerate(form.coupling):
                 if ucols.size:
-                    self.off[b][a:b_][:, lr * ucols.size + pos] = vals[a:b_, e]
+                    # the block's entries by their flat index in its rows (a view)
+                    self.off[b].reshape(nt, -1)[a:z, lr * ucols.size + pos] = vals[a:z, e]
         parallel_map(fill_off, spans)
-        for b, (ucols, lr, pos, e) in enumerate(form.coupling):
-            if ucols.size:
-                self.off[b] = self.off[b].reshape(nt, form.rows[b].size, ucols.size)
 
     def solve(self, rhs: np.ndarray, transpose: bool, steps: np.ndarray | None,
               out: np.ndarray | None = None) -> np.ndarray:
@@ -536,18 +532,7 @@ class CompatSolver:
         SuperLU path, whose anchors belong to the whole motion."""
         if not self.direct:
             return None
-        out = object.__new__(CompatSolver)
-        out.__dict__.update(self.__dict__)
-        out.nt = len(range(k0, min(k1, self.nt)))
-        if self.inverse is not None:
-            out.inverse = self.inverse[k0:k1]
-        if self.block_inverses is not None:
-            bi = object.__new__(_BlockInverses)
-            bi.form = self.block_inverses.form
-            bi.inv = [a[k0:k1] for a in self.block_inverses.inv]
-            bi.off = [None if a is None else a[k0:k1] for a in self.block_inverses.off]
-            out.block_inverses = bi
-        return out
+        return self._select(slice(k0, k1), len(range(k0, min(k1, self.nt))), self.split)
 
     def gather(self, steps: np.ndarray) -> "CompatSolver":
         """The factorisations of the steps ``steps`` (one per right-hand side of the later
@@ -557,16 +542,20 @@ class CompatSolver:
         already split between threads)."""
         if not self.direct:
             raise ValueError("gather needs a direct (stacked-inverse) solver")
+        return self._select(steps, len(steps), False)
+
+    def _select(self, index, nt: int, split: bool) -> "CompatSolver":
+        """A direct solver holding the stacked factorisations ``[index]`` of ``nt`` steps."""
         out = object.__new__(CompatSolver)
         out.__dict__.update(self.__dict__)
-        out.nt, out.split = len(steps), False
+        out.nt, out.split = nt, split
         if self.inverse is not None:
-            out.inverse = self.inverse[steps]
+            out.inverse = self.inverse[index]
         if self.block_inverses is not None:
             bi = object.__new__(_BlockInverses)
             bi.form = self.block_inverses.form
-            bi.inv = [a[steps] for a in self.block_inverses.inv]
-            bi.off = [None if a is None else a[steps] for a in self.block_inverses.off]
+            bi.inv = [a[index] for a in self.block_inverses.inv]
+            bi.off = [None if a is None else a[index] for a in self.block_inverses.off]
             out.block_inverses = bi
         return out
 
