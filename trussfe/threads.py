@@ -30,6 +30,7 @@ from concurrent.futures import ThreadPoolExecutor
 from contextlib import contextmanager
 from typing import Callable, Iterable, TypeVar
 
+import numpy as np
 from threadpoolctl import ThreadpoolController
 
 T = TypeVar("T")
@@ -77,6 +78,20 @@ def worker_count(workers: int | None = None) -> int:
     if workers is None:
         workers = _WORKERS.get()
     return max(1, int(workers)) if workers is not None else default_worker_count()
+
+
+def contiguous_spans(n: int, parts: int) -> list[tuple[int, int]]:
+    """``parts`` contiguous ``(start, stop)`` ranges of nearly equal length covering
+    ``range(n)`` (one range when ``parts`` < 2): the pieces of independent steps that worker
+    threads take.
+
+    Examples
+    --------
+    >>> contiguous_spans(10, 3)
+    [(0, 3), (3, 6), (6, 10)]
+    """
+    cuts = np.linspace(0, n, max(parts, 1) + 1).astype(np.int64)
+    return [(int(a), int(b)) for a, b in zip(cuts[:-1], cuts[1:])]
 
 
 def parallel_map(fn: Callable[[T], R], items: Iterable[T],

@@ -43,7 +43,7 @@ from ..kinematics.assembly import solve_positions
 from ..mechanics.geometry import lengths, member_vectors, unit_vectors
 from ..model.structure import Structure, build_structure
 from .active import ActiveMember, active_members
-from ..threads import parallel_map, worker_count
+from ..threads import contiguous_spans, parallel_map, worker_count
 from .linalg import cross
 
 #: Bay template nodes: base N1–N3 (0–2), midplane N4–N6 (3–5), top N7–N9 (6–8).  The top
@@ -231,8 +231,7 @@ def _batched_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, *,
     # lockstep (one convergence test over all steps, one factorisation), so each step's
     # arithmetic is that of the whole run (the same numbers for any number of threads).
     chunks = min(worker_count(), N // PARALLEL_POSITION_MIN_STEPS)
-    cuts = np.linspace(0, N, max(chunks, 1) + 1).astype(np.int64)
-    spans = list(zip(cuts[:-1], cuts[1:]))
+    spans = contiguous_spans(N, chunks)
 
     def residual(ab):
         a, b = ab

@@ -38,7 +38,7 @@ from ..errors import AnalysisError
 from ..kinematics.assembly import solve_positions
 from ..mechanics.geometry import lengths, member_vectors
 from ..model.structure import Structure
-from ..threads import parallel_map, worker_count
+from ..threads import contiguous_spans, parallel_map, worker_count
 from .linalg import ANCHOR_SPACING, CompatSolver, SingularStep, cross, is_direct
 from .motion import Motion
 
@@ -226,8 +226,7 @@ def _batched_newton(structure, pattern, L, X, tolerance=1e-12, iterations=30):
     flat = X.reshape(nt, -1)
     failed = (X, np.zeros(nt, dtype=bool))
     chunks = min(worker_count(), nt // PARALLEL_NEWTON_MIN_STEPS)
-    cuts = np.linspace(0, nt, max(chunks, 1) + 1).astype(np.int64)
-    spans = list(zip(cuts[:-1], cuts[1:]))
+    spans = contiguous_spans(nt, chunks)
     anchors = np.unique(np.r_[np.arange(0, nt, ANCHOR_SPACING), nt - 1])
     owner = np.searchsorted((anchors[1:] + anchors[:-1]) / 2.0, np.arange(nt))
 

@@ -26,7 +26,7 @@ import scipy.sparse as sp
 from scipy.sparse.csgraph import connected_components, maximum_bipartite_matching
 
 from ..linalg.factor import Factor, factor
-from ..threads import parallel_map, worker_count
+from ..threads import contiguous_spans, parallel_map, worker_count
 
 #: Largest system solved as a dense stack.
 DENSE_LIMIT = 36
@@ -311,8 +311,7 @@ def _step_pieces(nt: int, count: int) -> list[tuple[int, int]]:
     workers = worker_count()
     if workers < 2 or nt < 2 or count * nt < PARALLEL_INVERSE_MIN:
         return [(0, nt)]
-    cuts = np.linspace(0, nt, min(workers, nt) + 1).astype(int)
-    return list(zip(cuts[:-1], cuts[1:]))
+    return contiguous_spans(nt, min(workers, nt))
 
 
 def _rcond(A: np.ndarray, inv: np.ndarray) -> np.ndarray:
@@ -585,12 +584,11 @@ class CompatSolver:
                 return self.block_inverses.solve(rhs, transpose, steps)
             # independent steps: contiguous chunks of them in worker threads, each writing
             # its rows of the solution
-            cuts = np.linspace(0, self.nt, workers + 1).astype(int)
             out = np.empty_like(rhs)
             parallel_map(
                 lambda ab: self.subset(ab[0], ab[1]).block_inverses.solve(
                     rhs[ab[0]:ab[1]], transpose, None, out[ab[0]:ab[1]]),
-                list(zip(cuts[:-1], cuts[1:])))
+                contiguous_spans(self.nt, workers))
             return out
         if self.n == 0:
             return np.zeros_like(rhs, dtype=float)
