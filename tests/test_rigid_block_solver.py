@@ -7,7 +7,8 @@ from numpy.testing import assert_allclose
 
 from trussfe.rigid.kinematics import _Pattern
 from trussfe.model.geometry import lengths
-from trussfe.rigid.linalg import CompatSolver, SingularStep, block_triangular_form, cross
+from trussfe.rigid.linalg import CompatSolver, SingularStep, block_triangular_form
+from trussfe.vectors import cross
 from trussfe.rigid.motion import third_order_motion
 from trussfe.studies.lacy_rigid import double_octahedral_chain, double_octahedron
 from trussfe.rigid.simulate import simulate

@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..vectors import take
+
 
 def member_vectors(x: np.ndarray, connectivity: np.ndarray) -> np.ndarray:
     """End-minus-start difference of a nodal field over every member.
@@ -27,9 +29,11 @@ def member_vectors(x: np.ndarray, connectivity: np.ndarray) -> np.ndarray:
         ``x[..., end] − x[..., start]``.
     """
     # np.take copies whole rows of the last axis: several times faster than fancy indexing
-    # with an ellipsis over many leading steps, and the same numbers.
-    out = np.take(x, connectivity[:, 1], axis=-2)
-    out -= np.take(x, connectivity[:, 0], axis=-2)
+    # with an ellipsis over many leading steps, and the same numbers; a field stored
+    # components first is gathered component by component, and so is the result
+    # (trussfe.vectors).
+    out = take(x, connectivity[:, 1], axis=-2)
+    out -= take(x, connectivity[:, 0], axis=-2)
     return out
 
 

@@ -44,7 +44,7 @@ from ..mechanics.geometry import lengths, member_vectors, unit_vectors
 from ..model.structure import Structure, build_structure
 from .active import ActiveMember, active_members
 from ..threads import contiguous_spans, parallel_map, worker_count
-from .linalg import cross
+from ..vectors import cross
 
 #: Bay template nodes: base N1–N3 (0–2), midplane N4–N6 (3–5), top N7–N9 (6–8).  The top
 #: plane is the mirror image of the base in the midplane, N7 over N1, N9 over N2, N8 over N3,

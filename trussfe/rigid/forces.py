@@ -39,7 +39,8 @@ from ..mechanics.mass import centroidal_inertia, gyration_squared, member_mass
 from ..model.structure import Structure
 from .active import active_members
 from .kinematics import Kinematics, _count_message, _Pattern, pad3
-from .linalg import SingularStep, batched_solve, cross
+from .linalg import SingularStep, batched_solve
+from ..vectors import components_first, cross, dot, take
 
 
 @dataclass
@@ -143,13 +144,13 @@ def _to_nodes(conn: np.ndarray, n: int, at_start: np.ndarray, at_end: np.ndarray
         if not pattern:
             acc = np.zeros((nt, rows.size, 3))
         else:
-            acc = np.take(sides[pattern[0]], members[:, 0], axis=1)
+            acc = take(sides[pattern[0]], members[:, 0], axis=1)
             for c in range(1, len(pattern)):
-                acc += np.take(sides[pattern[c]], members[:, c], axis=1)
+                acc += take(sides[pattern[c]], members[:, c], axis=1)
         if rows.size == size:
             return acc
         if out is None:
-            out = np.empty((nt, size, 3))
+            out = np.empty_like(acc, shape=(nt, size, 3))
         out[:, rows] = acc
     return out if out is not None else np.zeros((nt, size, 3))
 
@@ -196,7 +197,7 @@ def element_accelerations(kin: Kinematics, bodies: MemberBodies, conn: np.ndarra
     centre's distance s_t from the start node, (nt, m, 1); ``base_members``: the bases of
     these members only."""
     e, ed, edd = kin.unit, kin.unit_rate, kin.unit_acc
-    aa = np.take(kin.acceleration, conn[:, 0], axis=1)
+    aa = take(kin.acceleration, conn[:, 0], axis=1)
     L, Ld, Ldd = kin.length[..., None], kin.length_rate[..., None], kin.length_acc[..., None]
     s_t = L - bodies.tube_length[None, :, None] / 2.0
     # aa + L̈ e + 2 L̇ ė + s_t ë, added in that order, with one scratch array
@@ -208,9 +209,9 @@ def element_accelerations(kin: Kinematics, bodies: MemberBodies, conn: np.ndarra
     if base_members is None:
         a_base = aa + bodies.base_cg[None, :, None] * edd
     else:
-        a_base = (np.take(aa, base_members, axis=1)
+        a_base = (take(aa, base_members, axis=1)
                   + bodies.base_cg[None, base_members, None]
-                  * np.take(edd, base_members, axis=1))
+                  * take(edd, base_members, axis=1))
     return a_tube, s_t, a_base
 
 
@@ -301,25 +302,25 @@ def member_resultants(kin: Kinematics, bodies: MemberBodies, gravity: np.ndarray
     cg = bodies.base_cg[None, act, None]
     if rest:
         s_t = kin.length[..., None] - bodies.tube_length[None, :, None] / 2.0
-        f_tube = mt * -g                                         # a_tube = 0
-        f_base = mb * -g
+        f_tube = components_first(mt * -g)                      # a_tube = 0
+        f_base = components_first(mb * -g)
     else:
         a_tube, s_t, a_base = element_accelerations(kin, bodies, conn, act)
         f_tube = a_tube                  # m_t (a_tube − g), in the accelerations' place
         f_tube -= g
         f_tube *= mt                                             # (time, member, 3)
         f_base = mb * (a_base - g)
-    R = f_tube.copy()
+    R = f_tube.copy(order="K")
     _add_to_members(R, act, f_base)
     Ma = cross(s_t * e, f_tube)
-    _add_to_members(Ma, act, cross(cg * np.take(e, act, axis=1), f_base))
+    _add_to_members(Ma, act, cross(cg * take(e, act, axis=1), f_base))
     if not rest:
         inertia = (bodies.tube_inertia(bodies.tube_length, bodies.tube_mass)
                    + bodies.base_inertia_cg)[None, :, None]
         Ma += inertia * kin.alpha
     if not bases:
         return f_tube, None, R, Ma
-    full_base = np.zeros(R.shape)
+    full_base = np.zeros_like(R)
     full_base[:, act] = f_base
     return f_tube, full_base, R, Ma
 
@@ -328,7 +329,7 @@ def _add_to_members(a: np.ndarray, members: np.ndarray, b: np.ndarray) -> None:
     """``a[:, members] += b`` for distinct ``members``, through a gathered copy (numpy's
     fancy indexing with a leading slice is several times slower than ``np.take`` and a
     plain assignment on the (steps, members, 3) arrays of a motion)."""
-    part = np.take(a, members, axis=1)
+    part = take(a, members, axis=1)
     part += b
     a[:, members] = part
 
@@ -348,9 +349,9 @@ def _member_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies, r
     _, _, R, Ma = member_resultants(kin, bodies, g, conn, rest, bases=False)
     Fb_perp = cross(Ma, e)
     Fb_perp /= L
-    Re = np.einsum("tmi,tmi->tm", R, e)
+    Re = dot(R, e)
     axial = Re[..., None] * e
-    Fa_perp = R - axial
+    Fa_perp = np.subtract(R, axial, out=np.empty_like(axial))
     Fa_perp -= Fb_perp
     n = structure.n_nodes
     # Known (tension-free) parts of the end forces, summed at the nodes: the start ends'
@@ -432,10 +433,15 @@ def _solve_forces(structure: Structure, kins: list, bodies: MemberBodies | None,
     for j, (Re, Fa_perp, Fb_perp, ext, _) in enumerate(loads):
         t = 0.5 * Re                   # members between two fixed nodes: symmetric split
         t[:, pattern.loaded_idx] = tl[..., j]
-        Fb = t[..., None] * e + Fb_perp
-        Fa = (Re - t)[..., None] * e + Fa_perp
+        # F_a and F_b written into the (t, m, 2, 3) end forces, each component of each end
+        # stored contiguously (trussfe.vectors)
+        end_force = np.empty((3, 2) + t.shape).transpose(2, 3, 1, 0)
+        Fa, Fb = end_force[:, :, 0], end_force[:, :, 1]
+        np.multiply(t[..., None], e, out=Fb)
+        Fb += Fb_perp
+        np.multiply((Re - t)[..., None], e, out=Fa)
+        Fa += Fa_perp
         tot = _to_nodes(conn, n, Fa, Fb, held)
-        end_force = np.stack([Fa, Fb], axis=2)
         P, mg = (np.broadcast_to(x, (x.shape[0], n, 3))[:, held] for x in ext)
         react = np.zeros(t.shape[:1] + (n, dim))
         react[:, held] = np.where(structure.translation_supports[None, held],

@@ -39,7 +39,8 @@ from ..kinematics.assembly import solve_positions
 from ..mechanics.geometry import lengths, member_vectors
 from ..model.structure import Structure
 from ..threads import contiguous_spans, parallel_map, worker_count
-from .linalg import ANCHOR_SPACING, CompatSolver, SingularStep, cross, is_direct
+from .linalg import ANCHOR_SPACING, CompatSolver, SingularStep, is_direct
+from ..vectors import components_first, cross, dot, empty_vectors
 from .motion import Motion
 
 log = logging.getLogger(__name__)
@@ -423,10 +424,12 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     conn = structure.connectivity
     m = structure.n_members
     L = np.empty((nt, m))
-    e = np.empty((nt, m, X.shape[2]))
+    # the member vectors' histories with their components stored first (fast element-wise
+    # arithmetic over them here and in every force computation, trussfe.vectors)
+    e = empty_vectors((nt, m, X.shape[2]))
 
     def geometry(s):
-        d = member_vectors(X[s], conn)               # (time, member, dim)
+        d = member_vectors(components_first(X[s]), conn)      # (time, member, dim)
         L[s] = lengths(d)
         e[s] = d / L[s][..., None]
     _in_blocks(nt, m, geometry)
@@ -437,17 +440,17 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     Ldd[:, motion.members] = motion.acceleration
     e3 = pad3(e)
     if scheme == "exact":
-        V = _solve_compat(structure, pattern, solver, Ld)
+        V = components_first(_solve_compat(structure, pattern, solver, Ld))
         vrel = np.empty_like(e)
         rhs = np.empty_like(L)
 
         def relative_velocity(s):
             vrel[s] = member_vectors(V[s], conn)
-            quad = (np.einsum("tmi,tmi->tm", vrel[s], vrel[s]) - Ld[s] ** 2) / L[s]
+            quad = (dot(vrel[s], vrel[s]) - Ld[s] ** 2) / L[s]
             rhs[s] = Ldd[s] - quad
         _in_blocks(nt, m, relative_velocity)
-        A = _solve_compat(structure, pattern, solver, rhs)
-        ed, edd, omega, alpha = (np.empty((nt, m, 3)) for _ in range(4))
+        A = components_first(_solve_compat(structure, pattern, solver, rhs))
+        ed, edd, omega, alpha = (empty_vectors((nt, m, 3)) for _ in range(4))
 
         def rates(s):
             arel = member_vectors(A[s], conn)
@@ -461,15 +464,16 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
             cross(e3[s], ed[s], out=omega[s])
             cross(e3[s], edd[s], out=alpha[s])
         _in_blocks(nt, m, rates)
-        return Kinematics(motion.time, X, pad3(V), pad3(A), L, Ld, Ldd, e3, ed, edd, omega,
-                          alpha, "exact", solver)
+        return Kinematics(motion.time, X, components_first(pad3(V)),
+                          components_first(pad3(A)), L, Ld, Ldd, e3, ed, edd, omega, alpha,
+                          "exact", solver)
     # Lacy Appendix A: angle rates by backward differences.
     omega = np.zeros((nt, structure.n_members, 3))
     if nt > 1:
         dt = np.diff(motion.time)[:, None, None]
         cr = cross(e3[:-1], e3[1:])
-        sn = np.linalg.norm(cr, axis=2)
-        cs = np.einsum("tmi,tmi->tm", e3[:-1], e3[1:])
+        sn = lengths(cr)
+        cs = dot(e3[:-1], e3[1:])
         ang = np.arctan2(sn, cs)
         axis = np.divide(cr, sn[..., None], out=np.zeros_like(cr), where=sn[..., None] > 0)
         omega[1:] = axis * ang[..., None] / dt
@@ -479,8 +483,8 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     ed = cross(omega, e3)
     edd = cross(alpha, e3) + cross(omega, ed)
     V, A = _walk_nodes(structure, motion, e3, ed, edd, L, Ld, Ldd)
-    return Kinematics(motion.time, X, V, A, L, Ld, Ldd, e3, ed, edd, omega, alpha, "thesis",
-                      solver)
+    return Kinematics(motion.time, X, components_first(V), components_first(A), L, Ld, Ldd,
+                      e3, ed, edd, omega, alpha, "thesis", solver)
 
 
 def _rates_into(ed: np.ndarray, edd: np.ndarray, vrel: np.ndarray, arel: np.ndarray,

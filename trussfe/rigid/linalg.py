@@ -187,32 +187,6 @@ class BlockTriangularForm:
 _BTF_CACHE: dict = {}
 
 
-def cross(a: np.ndarray, b: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
-    """Cross product over the last axis of 3-vectors (broadcasting), as :func:`numpy.cross`.
-
-    The same arithmetic as ``numpy.cross`` (``a1 b2 − a2 b1``, …; equal to the last bit), in
-    about half its time on the (steps, members, 3) arrays of a motion.  ``out``: an array of
-    the broadcast shape to write into (it must not overlap ``a`` or ``b``).
-
-    Examples
-    --------
-    >>> cross(np.array([1.0, 0, 0]), np.array([0.0, 1, 0])).tolist()
-    [0.0, 0.0, 1.0]
-    """
-    a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
-    b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
-    if out is None:
-        out = np.empty(np.broadcast_shapes(a.shape, b.shape),
-                       dtype=np.result_type(a.dtype, b.dtype))
-    # each component written in place (one scratch array, no stacked copy)
-    scratch = np.empty(out.shape[:-1], dtype=out.dtype)
-    for c, (x, y, u, v) in enumerate(((a1, b2, a2, b1), (a2, b0, a0, b2), (a0, b1, a1, b0))):
-        np.multiply(x, y, out=out[..., c])
-        np.multiply(u, v, out=scratch)
-        out[..., c] -= scratch
-    return out
-
-
 def block_triangular_form(rows: np.ndarray, cols: np.ndarray, n: int
                           ) -> BlockTriangularForm | None:
     """Block lower-triangular form of the n × n pattern ``(rows, cols)``, or ``None`` when the

@@ -42,7 +42,7 @@ from ..model.geometry import lengths
 from ..model.structure import Structure
 from .forces import MemberBodies, NodalForces
 from .kinematics import Kinematics, pad3
-from .linalg import cross
+from ..vectors import components_first, cross, dot, empty_vectors
 
 
 @dataclass
@@ -127,52 +127,57 @@ def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
     u = positions[None, :, :]                                             # (1, m, k)
     g = pad3(np.asarray(structure.gravity, dtype=float))
     conn = structure.connectivity[sel]
-    e = kin.unit[:, sel]                                                  # (t, m, 3)
+    # every vector with its components stored first (trussfe.vectors): the shears and
+    # moments below, and every term of them, follow that order
+    e = components_first(kin.unit[:, sel])                                # (t, m, 3)
     L = kin.length[:, sel, None]                                          # (t, m, 1)
     if at_rest:
         p = np.broadcast_to(-g, e.shape)                                  # a_0 = 0
     else:
-        edd = kin.unit_acc[:, sel]
+        edd = components_first(kin.unit_acc[:, sel])
         p = _base_acceleration(kin, conn, sel, e, g)                      # a_0 − g
-    Fb = forces.end_force[:, sel, 1]
+    Fb = components_first(forces.end_force[:, sel, 1])
     mu = (bodies.tube_mass[sel] / tube_length)[None, :, None]
     mseg = mu * u                                                         # (1, m, k)
     ell = tube_length[:, None] if full_length_inertia else positions
     Iseg = centroidal_inertia(mu[0] * positions, ell,
                               bodies.tube_radius2[sel][:, None])[None]    # (1, m, k)
-    pe = np.einsum("tmi,tmi->tm", p, e)[..., None]
-    fe = np.einsum("tmi,tmi->tm", Fb, e)[..., None]
+    pe = dot(p, e)[..., None]
+    fe = dot(Fb, e)[..., None]
     p_perp = p - pe * e
     f_perp = Fb - fe * e
     c0 = cross(e, p)
     eF = cross(e, Fb)
     half = (mseg * u / 2.0)[..., None]
+    shape = e.shape[:2] + u.shape[2:] + e.shape[2:]                      # (t, m, k, 3)
     if at_rest:
         # ë = α = 0: the lever terms vanish (same arithmetic as below without the zeros).
         if tension is None:
             tension = _tension(mseg, pe, fe)
-        V = mseg[..., None] * p_perp[:, :, None, :]
+        V = np.multiply(mseg[..., None], p_perp[:, :, None, :], out=empty_vectors(shape))
         V -= f_perp[:, :, None, :]
-        M = half * c0[:, :, None, :]
-        M -= u[..., None] * eF[:, :, None, :]
+        M = np.multiply(half, c0[:, :, None, :], out=empty_vectors(shape))
+        M -= np.multiply(u[..., None], eF[:, :, None, :], out=empty_vectors(shape))
         return SectionForces(position=positions, tension=tension, shear=V, moment=M, unit=e)
     lever = L - u / 2.0                                                   # (t, m, k)
-    qe = np.einsum("tmi,tmi->tm", edd, e)[..., None]
+    qe = dot(edd, e)[..., None]
     if tension is None:
         tension = _tension(mseg, pe, fe, lever, qe)
     q_perp = edd - qe * e
     # V = m_s p⊥ + m_s (L − u/2) q⊥ − F_b⊥ and
     # M = (m_s u/2) (c0 + (L − u/2) c1) + I_s α − u e × F_b, added in that order in place
     # (every (t, m, k, 3) term once, no temporaries of the sums)
-    V = mseg[..., None] * p_perp[:, :, None, :]
-    term = np.multiply((mseg * lever)[..., None], q_perp[:, :, None, :])
+    V = np.multiply(mseg[..., None], p_perp[:, :, None, :], out=empty_vectors(shape))
+    term = np.multiply((mseg * lever)[..., None], q_perp[:, :, None, :],
+                       out=empty_vectors(shape))
     V += term
     V -= f_perp[:, :, None, :]
     c1 = cross(e, edd)
-    M = np.multiply(lever[..., None], c1[:, :, None, :])
+    M = np.multiply(lever[..., None], c1[:, :, None, :], out=empty_vectors(shape))
     M += c0[:, :, None, :]
     M *= half
-    M += np.multiply(Iseg[..., None], kin.alpha[:, sel, None, :], out=term)
+    M += np.multiply(Iseg[..., None], components_first(kin.alpha[:, sel])[:, :, None, :],
+                     out=term)
     M -= np.multiply(u[..., None], eF[:, :, None, :], out=term)
     return SectionForces(position=positions, tension=tension, shear=V, moment=M, unit=e)
 
@@ -181,7 +186,7 @@ def _base_acceleration(kin: Kinematics, conn: np.ndarray, sel, e: np.ndarray,
                        g: np.ndarray) -> np.ndarray:
     """a_0 − g = a_a + L̈ e + 2 L̇ ė − g of the members ``sel`` (start nodes ``conn``),
     (t, m, 3), the terms added in that order in place."""
-    p = np.take(kin.acceleration, conn[:, 0], axis=1)
+    p = components_first(np.take(kin.acceleration, conn[:, 0], axis=1))
     p += kin.length_acc[:, sel, None] * e
     term = np.multiply(2.0 * kin.length_rate[:, sel, None], kin.unit_rate[:, sel])
     p += term
@@ -215,14 +220,14 @@ def section_tension(structure: Structure, kin: Kinematics, forces: NodalForces,
     e = kin.unit[:, sel]
     mu = (bodies.tube_mass[sel] / tube_length)[None, :, None]
     mseg = mu * u
-    fe = np.einsum("tmi,tmi->tm", forces.end_force[:, sel, 1], e)[..., None]
+    fe = dot(forces.end_force[:, sel, 1], e)[..., None]
     if at_rest:
-        pe = np.einsum("tmi,tmi->tm", np.broadcast_to(-g, e.shape), e)[..., None]
+        pe = dot(np.broadcast_to(-g, e.shape), e)[..., None]
         return _tension(mseg, pe, fe)
     conn = structure.connectivity[sel]
     p = _base_acceleration(kin, conn, sel, e, g)
-    pe = np.einsum("tmi,tmi->tm", p, e)[..., None]
-    qe = np.einsum("tmi,tmi->tm", kin.unit_acc[:, sel], e)[..., None]
+    pe = dot(p, e)[..., None]
+    qe = dot(kin.unit_acc[:, sel], e)[..., None]
     return _tension(mseg, pe, fe, kin.length[:, sel, None] - u / 2.0, qe)
 
 
@@ -258,15 +263,14 @@ def section_stresses(structure: Structure, sf: SectionForces, *,
         dim = structure.dim
         R = frame_rotations(sf.unit[..., :dim], structure.orientation if dim == 3 else None)
         y = R[:, :, None, 1]                                            # (t, m, 1, dim)
-        Vy = np.einsum("tmkj,tmkj->tmk", np.broadcast_to(y, sf.shear.shape[:3] + (dim,)),
-                       sf.shear[..., :dim])
+        Vy = dot(np.broadcast_to(y, sf.shear.shape[:3] + (dim,)), sf.shear[..., :dim])
         if dim == 2:
             Vz, My, Mz = 0.0, 0.0, sf.moment[..., 2]
         else:
             z = np.broadcast_to(R[:, :, None, 2], sf.shear.shape)
-            Vz = np.einsum("tmkj,tmkj->tmk", z, sf.shear)
-            My = np.einsum("tmkj,tmkj->tmk", np.broadcast_to(y, sf.moment.shape), sf.moment)
-            Mz = np.einsum("tmkj,tmkj->tmk", z, sf.moment)
+            Vz = dot(z, sf.shear)
+            My = dot(np.broadcast_to(y, sf.moment.shape), sf.moment)
+            Mz = dot(z, sf.moment)
         vm = von_mises(sf.tension, Vy, Vz, My, Mz, col(structure.area), col(structure.Iy),
                        col(structure.Iz), col(structure.c), col(structure.c), col(rnd),
                        convention=convention, shear_weight=shear_factor)
@@ -282,10 +286,7 @@ def local_components(sf: SectionForces) -> tuple[np.ndarray, np.ndarray]:
         Components along / about Lacy's member frame (b1, b2) of
         :func:`trussfe.mechanics.geometry.transverse_frames`.
     """
-    b1, b2 = transverse_frames(sf.unit)
-    frames = np.stack([b1, b2], axis=-2)[:, :, None]               # (t, m, 1, 2, 3)
-    shear = np.einsum("tmkj,tmkcj->tmkc", sf.shear, np.broadcast_to(
-        frames, sf.shear.shape[:3] + (2, 3)))
-    moment = np.einsum("tmkj,tmkcj->tmkc", sf.moment, np.broadcast_to(
-        frames, sf.moment.shape[:3] + (2, 3)))
+    frames = [b[:, :, None] for b in transverse_frames(sf.unit)]     # (t, m, 1, 3) each
+    shear = np.stack([dot(sf.shear, b) for b in frames], axis=-1)
+    moment = np.stack([dot(sf.moment, b) for b in frames], axis=-1)
     return shear, moment

@@ -508,14 +508,15 @@ def _assemble(fn: Callable[[int], tuple], starts: list, nt: int, n_sections: int
 
 def _allocate(item, nt: int):
     """Empty whole-motion arrays shaped like one block's ``item`` (an array or a dataclass
-    of arrays indexed by time first; section positions and factorisations are not)."""
+    of arrays indexed by time first; section positions and factorisations are not), in its
+    memory order (components first, :mod:`trussfe.vectors`, where the block's are)."""
     if isinstance(item, np.ndarray):
-        return np.empty((nt,) + item.shape[1:], dtype=item.dtype)
+        return np.empty_like(item, shape=(nt,) + item.shape[1:])
     values = {}
     for name in item.__dataclass_fields__:
         v = getattr(item, name)
         if isinstance(v, np.ndarray) and name != "position":
-            values[name] = np.empty((nt,) + v.shape[1:], dtype=v.dtype)
+            values[name] = np.empty_like(v, shape=(nt,) + v.shape[1:])
         else:
             values[name] = None if name == "compat" else v
     return type(item)(**values)
