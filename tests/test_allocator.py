@@ -37,3 +37,41 @@ def test_library_import_leaves_the_allocator_alone():
             "from trussfe.models import double_octahedral_chain; "
             "trussfe.fem.solve_static(double_octahedral_chain(3)); print(a._state)")
     assert _run(code) == "None"
+
+
+_ARENAS = """
+import ctypes, ctypes.util, os, sys, tempfile, threading
+import numpy as np
+if sys.argv[1] == "tuned":
+    from trussfe.allocator import tune_allocator
+    tune_allocator()
+def work():
+    for _ in range(20):
+        a = np.ones(200_000); b = a * 2.0; del a, b
+threads = [threading.Thread(target=work) for _ in range(3)]
+for t in threads: t.start()
+for t in threads: t.join()
+libc = ctypes.CDLL(ctypes.util.find_library("c"))
+libc.fopen.restype = ctypes.c_void_p
+libc.fopen.argtypes = [ctypes.c_char_p, ctypes.c_char_p]
+libc.malloc_info.argtypes = [ctypes.c_int, ctypes.c_void_p]
+libc.fclose.argtypes = [ctypes.c_void_p]
+path = os.path.join(tempfile.mkdtemp(), "info.xml")
+f = libc.fopen(path.encode(), b"w"); libc.malloc_info(0, f); libc.fclose(f)
+print(open(path).read().count("<heap nr="))
+"""
+
+
+def test_worker_threads_allocate_from_the_main_heap():
+    """After the tuning, numpy arrays made in three threads come from one arena (glibc's
+    malloc_info lists one heap); without it every thread gets an arena of its own."""
+    import ctypes.util
+    if not ctypes.util.find_library("c") or not hasattr(ctypes.CDLL(None), "malloc_info"):
+        import pytest
+        pytest.skip("not glibc")
+
+    def heaps(mode):
+        return int(subprocess.run([sys.executable, "-c", _ARENAS, mode], capture_output=True,
+                                  text=True, check=True, cwd=str(ROOT)).stdout)
+    assert heaps("tuned") == 1
+    assert heaps("plain") > 1
