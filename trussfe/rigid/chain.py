@@ -348,7 +348,11 @@ def bay_positions(bay: Structure, L: np.ndarray, item: str = "bay",
             h = (t1 - t0)[None, :, None, None]
             s = ((time - t0) / (t1 - t0))[None, :, None, None]
             v = vel.reshape(nb, idx.size, n, 3)
-            guess = _hermite(coarse, v, seg, s, h)
+            guess = np.empty((nb, nt, n, 3))
+            # the bays' histories are independent: worker threads take contiguous bays
+            parallel_map(lambda ab: _hermite(coarse[ab[0]:ab[1]], v[ab[0]:ab[1]], seg, s, h,
+                                             guess[ab[0]:ab[1]]),
+                         contiguous_spans(nb, min(worker_count(), nb)))
         else:
             w = ((np.arange(nt) - idx[seg]) / (idx[seg + 1] - idx[seg]))[None, :, None, None]
             guess = coarse[:, seg] * (1.0 - w) + coarse[:, seg + 1] * w
@@ -368,16 +372,17 @@ def bay_positions(bay: Structure, L: np.ndarray, item: str = "bay",
     return X
 
 
-def _hermite(x: np.ndarray, v: np.ndarray, seg: np.ndarray, s: np.ndarray, h: np.ndarray
-             ) -> np.ndarray:
+def _hermite(x: np.ndarray, v: np.ndarray, seg: np.ndarray, s: np.ndarray, h: np.ndarray,
+             out: np.ndarray | None = None) -> np.ndarray:
     """Cubic Hermite interpolant of positions ``x`` and velocities ``v`` (nb, nc, n, 3) at
     the coarse steps: every step between coarse steps ``seg`` and ``seg + 1`` at the fraction
-    ``s`` of the interval ``h`` ((1, nt, 1, 1) each).
+    ``s`` of the interval ``h`` ((1, nt, 1, 1) each); ``out``: a contiguous (nb, nt, n, 3)
+    array to write it into.
 
     The four terms h00 x0 + h10 h v0 + h01 x1 + h11 h v1 are added in that order into the
     first one's gathered array, with one scratch array (the interpolant has the size of
     all the positions)."""
-    out = np.take(x, seg, axis=1)
+    out = np.take(x, seg, axis=1, out=out)
     out *= ((2 * s - 3) * s * s + 1)
     term = np.take(v, seg, axis=1)
     term *= ((s - 2) * s + 1) * s * h
@@ -433,14 +438,19 @@ def chain_positions(bay: Structure, lengths: np.ndarray,
     P = (P[:, :, 3:] - o_b) @ R_b                       # own nodes in the template's frame
     X = np.empty((nt, 3 + 6 * nb, 3))
     X[:, :3] = bay.coords[:3]
-    base = X[:, :3]
     nxt = np.asarray(next_base) - 3
-    for k in range(nb):
-        o, R = triangle_frame(base)                                   # eqs. 6.2, 6.6
-        own = X[:, 3 + 6 * k:9 + 6 * k]
-        np.matmul(P[k], R.transpose(0, 2, 1), out=own)                # R p, eq. 6.3
-        own += o[:, None, :]
-        base = own[:, nxt]
+
+    def carry(span):
+        """Up the chain for the steps ``a:b`` (every step is independent of the others)."""
+        a, b = span
+        base = X[a:b, :3]
+        for k in range(nb):
+            o, R = triangle_frame(base)                               # eqs. 6.2, 6.6
+            own = X[a:b, 3 + 6 * k:9 + 6 * k]
+            np.matmul(P[k, a:b], R.transpose(0, 2, 1), out=own)       # R p, eq. 6.3
+            own += o[:, None, :]
+            base = own[:, nxt]
+    parallel_map(carry, contiguous_spans(nt, min(worker_count(), max(1, nt // 100))))
     return X
 
 

@@ -363,16 +363,17 @@ def _solve_compat(structure: Structure, pattern: _Pattern, solver: CompatSolver,
 
 
 def _factorise(structure: Structure, pattern: _Pattern, X: np.ndarray, motion: Motion,
-               e: np.ndarray | None = None) -> CompatSolver:
+               values: np.ndarray | None = None) -> CompatSolver:
     """Factorise the compatibility matrix of every step, or raise at the first singular step
     (once: velocities, accelerations and member forces all use this matrix or its
-    transpose).  ``e``: the member unit vectors, if known."""
-    if e is None:
+    transpose).  ``values``: the matrix entries of every step (:meth:`_Pattern.values`), if
+    known."""
+    if values is None:
         conn = structure.connectivity
         d = member_vectors(X, conn)
-        e = d / lengths(d)[..., None]
+        values = pattern.values(d / lengths(d)[..., None])
     try:
-        return CompatSolver(pattern.rows, pattern.cols, pattern.values(e), pattern.m)
+        return CompatSolver(pattern.rows, pattern.cols, values, pattern.m)
     except SingularStep as s:
         raise AnalysisError(_step_item(motion, s.step), "the assembly is at a singular "
                             "position (its compatibility matrix is rank deficient): its "
@@ -428,12 +429,16 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     # arithmetic over them here and in every force computation, trussfe.vectors)
     e = empty_vectors((nt, m, X.shape[2]))
 
+    vals = np.empty((nt, pattern.rows.size))        # the entries of B, every step
+
     def geometry(s):
         d = member_vectors(components_first(X[s]), conn)      # (time, member, dim)
         L[s] = lengths(d)
         e[s] = d / L[s][..., None]
+        vals[s] = pattern.values(e[s])
     _in_blocks(nt, m, geometry)
-    solver = _factorise(structure, pattern, X, motion, e)
+    solver = _factorise(structure, pattern, X, motion, vals)
+    del vals
     Ld = np.zeros_like(L)
     Ldd = np.zeros_like(L)
     Ld[:, motion.members] = motion.velocity
