@@ -35,3 +35,20 @@ def test_nodal_sums_equal_the_incidence_product():
     nodes = np.array([n - 1, 0, 5, 2])
     np.testing.assert_array_equal(_to_nodes(conn, n, at_start, at_end, nodes), want[:, nodes])
     assert not want[:, n - 1].any()
+
+
+def test_nodal_sums_of_another_connectivity_of_the_same_size_and_components_first():
+    """The node grouping is kept by the connectivity's content: a second connectivity of the
+    same shape (members reversed, shuffled) sums by its own grouping, and member-end vectors
+    stored components first (trussfe.vectors) give the same sums to the last bit."""
+    from trussfe.vectors import components_first, is_components_first
+    rng = np.random.default_rng(5)
+    chain = double_octahedral_chain(3).connectivity
+    n = int(chain.max()) + 1
+    at_start, at_end = rng.standard_normal((2, 6) + chain.shape[:1] + (3,))
+    for conn in (chain, chain[rng.permutation(chain.shape[0])][:, ::-1].copy()):
+        want = _incidence_sum(conn, n, at_start, at_end)
+        np.testing.assert_array_equal(_to_nodes(conn, n, at_start, at_end), want)
+        got = _to_nodes(conn, n, components_first(at_start), components_first(at_end))
+        np.testing.assert_array_equal(got, want)
+        assert is_components_first(got)

@@ -6,8 +6,7 @@ import numpy as np
 import pytest
 
 from trussfe.model.geometry import lengths, member_vectors
-from trussfe.vectors import (components_first, cross, dot, empty_vectors,
-                             is_components_first, take)
+from trussfe.vectors import components_first, cross, dot, empty_vectors, is_components_first, take
 
 rng = np.random.default_rng(7)
 

@@ -40,7 +40,7 @@ from ..model.structure import Structure
 from .active import active_members
 from .kinematics import Kinematics, _count_message, _Pattern, pad3
 from .linalg import SingularStep, batched_solve
-from ..vectors import components_first, cross, dot, take
+from ..vectors import components_first, cross, dot, empty_vectors, is_components_first, take
 
 
 @dataclass
@@ -150,7 +150,8 @@ def _to_nodes(conn: np.ndarray, n: int, at_start: np.ndarray, at_end: np.ndarray
         if rows.size == size:
             return acc
         if out is None:
-            out = np.empty_like(acc, shape=(nt, size, 3))
+            out = (empty_vectors((nt, size, 3)) if is_components_first(acc)
+                   else np.empty((nt, size, 3)))
         out[:, rows] = acc
     return out if out is not None else np.zeros((nt, size, 3))
 
@@ -161,10 +162,30 @@ def _node_groups(conn: np.ndarray, n: int, nodes: np.ndarray | None) -> list:
     (rows, ends)).
 
     A node's ends come in the order of the stacked start and end ends (a stable sort of the
-    ends by node); equal sequences are found by a lexicographic sort of the rows (a few
-    milliseconds for the 6,003 joints of a 1,000-bay chain, so that every block of steps
-    groups afresh and nothing is kept between calls).
+    ends by node); equal sequences are found by a lexicographic sort of the rows.  The
+    grouping is kept by the connectivity's content (every block of steps of an analysis
+    asks for it several times; a changed connectivity is another key, so nothing kept can
+    go stale).
     """
+    key = (n, conn.shape, conn.tobytes(), None if nodes is None else np.asarray(nodes).tobytes())
+    groups = _NODE_GROUPS.get(key)
+    if groups is None:
+        groups = _group_nodes(conn, n, nodes)
+        for rows, _, members in groups:              # shared by every caller: read only
+            rows.setflags(write=False)
+            members.setflags(write=False)
+        if len(_NODE_GROUPS) > 64:
+            _NODE_GROUPS.clear()
+        _NODE_GROUPS[key] = groups
+    return groups
+
+
+#: Node groupings by connectivity (:func:`_node_groups`).
+_NODE_GROUPS: dict = {}
+
+
+def _group_nodes(conn: np.ndarray, n: int, nodes: np.ndarray | None) -> list:
+    """The grouping of :func:`_node_groups`, computed."""
     m = conn.shape[0]
     ends = conn.T.ravel()                        # stacked: start ends, then end ends
     order = np.argsort(ends, kind="stable")
