@@ -40,7 +40,7 @@ import numpy as np
 
 from ..errors import AnalysisError
 from ..kinematics.assembly import solve_positions
-from ..mechanics.geometry import lengths, member_vectors, unit_vectors
+from ..mechanics.geometry import member_vectors, unit_vectors
 from ..model.structure import Structure, build_structure
 from .active import ActiveMember, active_members
 from ..threads import contiguous_spans, parallel_map, worker_count
@@ -204,80 +204,25 @@ def _batched_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, *,
     """Newton's method on the bar-length equations of every step at once, from ``x0``
     (one guess (n, 3) for all steps, or one per step (N, n, 3)).
 
-    The compatibility matrix of every step is factorised (stacked inverses of its diagonal
-    blocks, :class:`~trussfe.rigid.linalg.CompatSolver`) at the guess and every
-    :data:`REFACTOR_EVERY` iterations, and ``B Δx = L − |d|`` is solved for all steps
-    together (a chord iteration).  With ``anchors`` (step indices) and ``owner`` (the
-    anchor of every step, indices into ``anchors``), only the anchors' matrices are
-    factorised and every step uses its anchor's (close guesses of a smooth motion: the
-    chord still contracts fast, for a fraction of the factorisations).  Returns the
-    positions and a per-step flag: converged, and within a tenth of the bay's size of ``x0``.
+    A chord iteration (:func:`~trussfe.rigid.kinematics.chord_newton`): the compatibility
+    matrix is factorised at the guess and every :data:`REFACTOR_EVERY` iterations, at every
+    step or, with ``anchors`` (step indices) and ``owner`` (the anchor of every step, indices
+    into ``anchors``), at the anchors only, every step using its anchor's (close guesses of a
+    smooth motion: the chord still contracts fast, for a fraction of the factorisations).
+    Returns the positions and a per-step flag: converged, and within a tenth of the bay's
+    size of ``x0``.
     """
-    from .kinematics import _Pattern, accepted_positions
-    from .linalg import CompatSolver, SingularStep
+    from .kinematics import _Pattern, chord_newton
 
     N = L.shape[0]
     pattern = _Pattern(bay)
-    conn = bay.connectivity
     X = np.broadcast_to(x0, (N,) + x0.shape[-2:]).copy()      # one guess, or one per step
-    flat = X.reshape(N, -1)
-    scale = float(L.max()) if N else 1.0
-    Lk = L[:, pattern.loaded_idx]
-    bad = np.zeros(N, dtype=bool)
     if pattern.m != pattern.nfree or N == 0:
-        return X, bad
-    solver = None
-    # Long runs: the steps in contiguous chunks in worker threads, every iteration in
-    # lockstep (one convergence test over all steps, one factorisation), so each step's
-    # arithmetic is that of the whole run (the same numbers for any number of threads).
-    chunks = min(worker_count(), N // PARALLEL_POSITION_MIN_STEPS)
-    spans = contiguous_spans(N, chunks)
-
-    def residual(ab):
-        a, b = ab
-        d = member_vectors(X[a:b], conn)
-        dn = lengths(d)
-        return d, dn, dn[:, pattern.loaded_idx] - Lk[a:b]
-
-    for it in range(iterations):
-        parts = parallel_map(residual, spans)
-        if np.max([np.abs(p[2]).max() for p in parts]) <= tolerance * scale:
-            break
-        # Chord iterations: the Jacobian is factorised at the guess and refreshed every
-        # REFACTOR_EVERY iterations; from a close guess the chord contracts to round-off in
-        # a few cheap sweeps, where full Newton would factorise every step every time.
-        if it % REFACTOR_EVERY == 0:
-            if anchors is None:
-                e = np.concatenate([d / dn[..., None] for d, dn, _ in parts])
-            else:
-                e = np.concatenate([d[k] / dn[k][..., None] for (d, dn, _), k in zip(
-                    parts, (anchors[(anchors >= a) & (anchors < b)] - a for a, b in spans))])
-            try:
-                solver = CompatSolver(pattern.rows, pattern.cols, pattern.values(e),
-                                      pattern.m)
-            except SingularStep:
-                return X, bad
-            if anchors is not None and not solver.direct:
-                anchors = owner = None              # anchored only with stacked inverses
-                e = np.concatenate([d / dn[..., None] for d, dn, _ in parts])
-                solver = CompatSolver(pattern.rows, pattern.cols, pattern.values(e),
-                                      pattern.m)
-            if owner is not None:
-                # every chunk's anchors gathered once for the iterations until the next
-                # factorisation
-                local = parallel_map(lambda ab: solver.gather(owner[ab[0]:ab[1]]), spans)
-        if owner is None:
-            dxs = [solver.solve(-np.concatenate([p[2] for p in parts]))]
-            spans_dx = [(0, N)]
-        else:
-            dxs = parallel_map(lambda j: local[j].solve(-parts[j][2]), range(len(spans)))
-            spans_dx = spans
-        if not all(np.all(np.isfinite(dx)) for dx in dxs):
-            return X, bad
-        for (a, b), dx in zip(spans_dx, dxs):
-            flat[a:b, pattern.free_cols] += dx
-    return X, accepted_positions(X, np.broadcast_to(x0, X.shape), L, conn, scale, spans,
-                                 tolerance)
+        return X, np.zeros(N, dtype=bool)
+    return chord_newton(bay.connectivity, pattern, L, X, np.broadcast_to(x0, X.shape),
+                        anchors, owner, refactor_every=REFACTOR_EVERY,
+                        min_chunk_steps=PARALLEL_POSITION_MIN_STEPS, tolerance=tolerance,
+                        iterations=iterations)
 
 
 #: Steps per worker thread below which the bay positions' Newton solve is not split.

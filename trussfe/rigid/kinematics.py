@@ -204,7 +204,8 @@ PARALLEL_NEWTON_MIN_STEPS = 200
 
 
 def _batched_newton(structure, pattern, L, X, tolerance=1e-12, iterations=30):
-    """Chord (modified) Newton on the bar-length equations of every step at once.
+    """Chord (modified) Newton on the bar-length equations of every step of the whole truss
+    at once, from the guesses ``X`` (:func:`chord_newton`).
 
     The Jacobian (the compatibility matrix) is factorised once at the interpolated guess and
     reused: the guess is close, so the iteration contracts fast, and one factorisation per
@@ -212,27 +213,58 @@ def _batched_newton(structure, pattern, L, X, tolerance=1e-12, iterations=30):
     anchor's (every :data:`ANCHOR_SPACING`-th step of the motion, and the last).  Returns
     the positions and a per-step flag: converged and within a tenth of the truss size of its
     guess (so that no step has jumped to another assembly branch).
-
-    Long motions are split into contiguous chunks of steps between worker threads, in
-    lockstep: one convergence test over all steps per iteration, the whole motion's anchors,
-    so that every step's arithmetic is that of the whole-motion iteration and the positions
-    do not depend on the number of threads (the same numbers, bit for bit).
     """
-    conn = structure.connectivity
-    X = X.copy()
-    X0 = X.copy()
     nt = X.shape[0]
-    scale = float(L.max())
+    anchors = np.unique(np.r_[np.arange(0, nt, ANCHOR_SPACING), nt - 1])
+    owner = np.searchsorted((anchors[1:] + anchors[:-1]) / 2.0, np.arange(nt))
+    # anchored refinement (approximate solves) where B has no direct factorisation
+    return chord_newton(structure.connectivity, pattern, L, X.copy(), X, anchors, owner,
+                        min_chunk_steps=PARALLEL_NEWTON_MIN_STEPS, approximate=True,
+                        tolerance=tolerance, iterations=iterations)
+
+
+def chord_newton(conn: np.ndarray, pattern: "_Pattern", L: np.ndarray, X: np.ndarray,
+                 guess: np.ndarray, anchors: np.ndarray | None = None,
+                 owner: np.ndarray | None = None, *, refactor_every: int = 0,
+                 min_chunk_steps: int = PARALLEL_NEWTON_MIN_STEPS, approximate: bool = False,
+                 tolerance: float = 1e-12, iterations: int = 30
+                 ) -> tuple[np.ndarray, np.ndarray]:
+    """Chord Newton iteration on the bar-length equations ``|x_b − x_a| = L`` of every step
+    at once (Hortobágyi eqs. 1–2), in place on the positions ``X`` (nt, n, dim).
+
+    ``B Δx = L − |d|`` is solved for all steps together with B factorised at the start (and,
+    with ``refactor_every`` = k > 0, at every k-th iteration) at the anchor steps:
+    ``anchors`` (step indices) with ``owner`` (the anchor of every step, indices into
+    ``anchors``), or every step its own anchor when ``anchors`` is None.  Stacked inverses
+    (:class:`~trussfe.rigid.linalg.CompatSolver`) are factorised at the anchors of each chunk
+    of steps and gathered once for its steps; a B without them is factorised at every step,
+    its solves anchored refinements when ``approximate``.
+
+    Long runs (``min_chunk_steps`` steps per worker thread and more) are split into
+    contiguous chunks of steps between worker threads, in lockstep: one convergence test over
+    all steps per iteration and the whole run's anchors, so that every step's arithmetic is
+    that of the whole-run iteration and the positions do not depend on the number of threads
+    (the same numbers, bit for bit).
+
+    Returns
+    -------
+    X : ndarray
+        The positions (the array passed in).
+    ok : ndarray of bool, shape (nt,)
+        Converged and within a tenth of the largest length of ``guess``
+        (:func:`accepted_positions`); all False when a factorisation is singular or a step
+        not finite.
+    """
+    nt = X.shape[0]
+    scale = float(L.max()) if nt else 1.0
     Lk = L[:, pattern.loaded_idx]
     flat = X.reshape(nt, -1)
     failed = (X, np.zeros(nt, dtype=bool))
-    chunks = min(worker_count(), nt // PARALLEL_NEWTON_MIN_STEPS)
-    spans = contiguous_spans(nt, chunks)
-    anchors = np.unique(np.r_[np.arange(0, nt, ANCHOR_SPACING), nt - 1])
-    owner = np.searchsorted((anchors[1:] + anchors[:-1]) / 2.0, np.arange(nt))
+    spans = contiguous_spans(nt, min(worker_count(), nt // min_chunk_steps))
+    direct = is_direct(pattern.rows, pattern.cols, pattern.m)
 
     def values(steps):
-        """B's values at the guesses of ``steps`` (the unit vectors' components)."""
+        """B's values at the current positions of ``steps`` (the unit vectors' components)."""
         d = member_vectors(X[steps], conn)
         return pattern.values(d / lengths(d)[..., None])
 
@@ -240,30 +272,33 @@ def _batched_newton(structure, pattern, L, X, tolerance=1e-12, iterations=30):
         """The stacked inverses at the anchors of a chunk's steps, gathered once for every
         step (each anchor's inverse is the same in any subset of the anchors)."""
         a, b = ab
+        if anchors is None:
+            return CompatSolver(pattern.rows, pattern.cols, values(slice(a, b)), pattern.m)
         first, last = owner[a], owner[b - 1]
         part = CompatSolver(pattern.rows, pattern.cols, values(anchors[first:last + 1]),
                             pattern.m)
         return part.gather(owner[a:b] - first)
-    try:
-        if is_direct(pattern.rows, pattern.cols, pattern.m):
-            local = parallel_map(chunk_solver, spans)
-        else:
-            # anchored refinement (large systems) on every step, in the calling thread
-            solver = CompatSolver(pattern.rows, pattern.cols, values(slice(None)), pattern.m)
-            local = None
-    except SingularStep:
-        return failed
 
     def residual(ab):
         a, b = ab
         return lengths(member_vectors(X[a:b], conn))[:, pattern.loaded_idx] - Lk[a:b]
 
-    for _ in range(iterations):
+    local = solver = None
+    for it in range(iterations):
         parts = parallel_map(residual, spans)
         if max(np.abs(r).max() for r in parts) <= tolerance * scale:
             break
+        if it == 0 or (refactor_every and it % refactor_every == 0):
+            try:
+                if direct:
+                    local = parallel_map(chunk_solver, spans)
+                else:
+                    solver = CompatSolver(pattern.rows, pattern.cols, values(slice(None)),
+                                          pattern.m)
+            except SingularStep:
+                return failed
         if local is None:
-            dxs = [solver.solve(-np.concatenate(parts), approximate=True)]
+            dxs = [solver.solve(-np.concatenate(parts), approximate=approximate)]
             at = [(0, nt)]
         else:
             dxs = parallel_map(lambda j: local[j].solve(-parts[j]), range(len(spans)))
@@ -272,7 +307,7 @@ def _batched_newton(structure, pattern, L, X, tolerance=1e-12, iterations=30):
             return failed
         for (a, b), dx in zip(at, dxs):
             flat[a:b, pattern.free_cols] += dx
-    return X, accepted_positions(X, X0, L, conn, scale, spans, tolerance)
+    return X, accepted_positions(X, guess, L, conn, scale, spans, tolerance)
 
 
 def accepted_positions(X: np.ndarray, guess: np.ndarray, L: np.ndarray, conn: np.ndarray,
@@ -438,7 +473,7 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
         vals[s] = pattern.values(e[s])
     _in_blocks(nt, m, geometry)
     solver = _factorise(structure, pattern, X, motion, vals)
-    del vals
+    vals = None                                      # not needed once factorised
     Ld = np.zeros_like(L)
     Ldd = np.zeros_like(L)
     Ld[:, motion.members] = motion.velocity
