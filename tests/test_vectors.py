@@ -63,3 +63,31 @@ def test_member_vectors_and_lengths_of_a_components_first_field():
     d = member_vectors(components_first(x), conn)
     assert np.array_equal(d, d_ref) and is_components_first(d)
     assert np.array_equal(lengths(d), np.linalg.norm(d_ref, axis=-1))
+
+
+@pytest.mark.parametrize("blocks", [False, True])
+def test_rigid_body_histories_are_stored_components_first(blocks, monkeypatch):
+    """docs/rigid-body.md: the vector histories of a simulation keep their shapes and store
+    each component contiguously (the whole motion at once, and in blocks of 100 steps), and
+    the numbers equal numpy's own products of the usual-order copies (e = d/|d|, ω = e × ė)."""
+    import trussfe.rigid.simulate as sim
+    from trussfe.rigid.motion import third_order_motion
+    from trussfe.rigid.simulate import simulate
+    from trussfe.studies.lacy_rigid import double_octahedron
+    if blocks:
+        monkeypatch.setattr(sim, "CHUNK_ENTRIES", 100 * 18)
+    s = double_octahedron((1.2289, 1.1079, 1.1079), gravity=-9.81, top_load=46.0)
+    m = third_order_motion(s, [1.2289, 1.1079, 1.1079], [1.1079, 1.2289, 1.2289], 2.0, 400)
+    r = simulate(s, m, n_sections=3)
+    k = r.kinematics
+    for a in (k.velocity, k.acceleration, k.unit, k.unit_rate, k.unit_acc, k.omega, k.alpha,
+              r.forces.end_force[:, :, 0], r.forces.end_force[:, :, 1], r.sections.shear,
+              r.sections.moment, r.static_sections.shear):
+        assert is_components_first(a), a.shape
+    assert k.unit.shape == (400, s.n_members, 3)
+    assert r.forces.end_force.shape == (400, s.n_members, 2, 3)
+    assert r.sections.shear.shape == (400, s.n_members, 3, 3)
+    d = member_vectors(np.ascontiguousarray(k.coords), s.connectivity)
+    np.testing.assert_array_equal(k.unit, d / np.linalg.norm(d, axis=-1)[..., None])
+    np.testing.assert_array_equal(k.omega, np.cross(np.ascontiguousarray(k.unit),
+                                                    np.ascontiguousarray(k.unit_rate)))
