@@ -280,14 +280,19 @@ def chord_newton(conn: np.ndarray, pattern: "_Pattern", L: np.ndarray, X: np.nda
         return part.gather(owner[a:b] - first)
 
     def residual(ab):
+        """The bar lengths of a chunk's steps and the misfit of the loaded bars."""
         a, b = ab
-        return lengths(member_vectors(X[a:b], conn))[:, pattern.loaded_idx] - Lk[a:b]
+        now = lengths(member_vectors(X[a:b], conn))
+        return now, now[:, pattern.loaded_idx] - Lk[a:b]
 
     local = solver = None
+    current = None                    # the bar lengths of the final positions, if known
     for it in range(iterations):
         parts = parallel_map(residual, spans)
-        if max(np.abs(r).max() for r in parts) <= tolerance * scale:
+        if max(np.abs(r).max() for _, r in parts) <= tolerance * scale:
+            current = [now for now, _ in parts]
             break
+        parts = [r for _, r in parts]
         if it == 0 or (refactor_every and it % refactor_every == 0):
             try:
                 if direct:
@@ -307,27 +312,29 @@ def chord_newton(conn: np.ndarray, pattern: "_Pattern", L: np.ndarray, X: np.nda
             return failed
         for (a, b), dx in zip(at, dxs):
             flat[a:b, pattern.free_cols] += dx
-    return X, accepted_positions(X, guess, L, conn, scale, spans, tolerance)
+    return X, accepted_positions(X, guess, L, conn, scale, spans, tolerance, current)
 
 
 def accepted_positions(X: np.ndarray, guess: np.ndarray, L: np.ndarray, conn: np.ndarray,
-                       scale: float, spans: list, tolerance: float = 1e-12) -> np.ndarray:
+                       scale: float, spans: list, tolerance: float = 1e-12,
+                       current: list | None = None) -> np.ndarray:
     """Which steps of a batched position solve to accept: the bar lengths ``L`` (nt, m) met
     to ``tolerance · scale`` by the positions ``X`` (nt, n, 3), and no coordinate moved a
     tenth of ``scale`` or more from its ``guess`` (no jump to another assembly branch).  The
     chunks of steps ``spans`` ((start, stop) pairs covering every step) are tested in
-    worker threads.
+    worker threads; ``current``: the bar lengths of ``X``, one array per chunk, if known.
 
     Returns
     -------
     ndarray of bool, shape (nt,)
     """
-    def accept(ab):
-        a, b = ab
-        res = np.abs(lengths(member_vectors(X[a:b], conn)) - L[a:b]).max(axis=1)
+    def accept(j):
+        a, b = spans[j]
+        now = lengths(member_vectors(X[a:b], conn)) if current is None else current[j]
+        res = np.abs(now - L[a:b]).max(axis=1)
         moved = np.abs(X[a:b] - guess[a:b]).reshape(b - a, -1).max(axis=1)
         return (res <= tolerance * scale) & (moved < 0.1 * scale)
-    return np.concatenate(parallel_map(accept, spans))
+    return np.concatenate(parallel_map(accept, range(len(spans))))
 
 
 class _Pattern:
