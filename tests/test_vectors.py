@@ -54,6 +54,9 @@ def test_take_equals_numpy_take_in_either_layout(axis):
     got = take(components_first(a), idx, axis=axis)
     assert np.array_equal(got, ref) and is_components_first(got)
     assert np.array_equal(take(a, idx, axis=axis), ref)
+    two = idx[:54].reshape(6, 9)                       # indices of any shape, as numpy's
+    assert np.array_equal(take(components_first(a), two, axis=axis),
+                          np.take(a, two, axis=axis))
 
 
 def test_member_vectors_and_lengths_of_a_components_first_field():

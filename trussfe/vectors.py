@@ -44,10 +44,8 @@ def take(a: np.ndarray, indices: np.ndarray, axis: int) -> np.ndarray:
     """``numpy.take(a, indices, axis)`` of a vector array (..., c), component by component
     when its components are stored first (the result's are too): numpy's ``take`` copies a
     strided array whole before gathering from it."""
-    if not is_components_first(a):
-        return np.take(a, indices, axis=axis)
     axis = axis % a.ndim
-    if axis == a.ndim - 1:
+    if not is_components_first(a) or axis == a.ndim - 1 or np.ndim(indices) != 1:
         return np.take(a, indices, axis=axis)
     shape = list(a.shape)
     shape[axis] = np.size(indices)
