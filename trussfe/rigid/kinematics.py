@@ -40,7 +40,7 @@ from ..mechanics.geometry import lengths, member_vectors
 from ..model.structure import Structure
 from ..threads import contiguous_spans, parallel_map, worker_count
 from .linalg import ANCHOR_SPACING, CompatSolver, SingularStep, is_direct
-from ..vectors import components_first, cross, dot, empty_vectors
+from ..vectors import components_first, cross, dot, empty_vectors, is_components_first
 from .motion import Motion
 
 log = logging.getLogger(__name__)
@@ -100,9 +100,15 @@ class Kinematics:
 
 
 def pad3(x: np.ndarray) -> np.ndarray:
-    """Pad the last axis of a 2-D vector array to 3 components."""
+    """Pad the last axis of a 2-D vector array to 3 components (stored components first
+    when ``x``'s are, :mod:`trussfe.vectors`)."""
     if x.shape[-1] == 3:
         return x
+    if is_components_first(x):
+        out = empty_vectors(x.shape[:-1] + (3,))
+        out[..., :x.shape[-1]] = x
+        out[..., x.shape[-1]:] = 0.0
+        return out
     return np.concatenate([x, np.zeros(x.shape[:-1] + (3 - x.shape[-1],))], axis=-1)
 
 
