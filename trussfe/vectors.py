@@ -15,9 +15,10 @@ terms in one fixed order whatever the memory order.
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 
-def empty_vectors(shape: tuple[int, ...], dtype=float) -> np.ndarray:
+def empty_vectors(shape: tuple[int, ...], dtype: npt.DTypeLike = float) -> np.ndarray:
     """An uninitialised array of ``shape`` (..., c) whose components are contiguous (a view
     of a (c, ...) array)."""
     return np.moveaxis(np.empty((shape[-1],) + tuple(shape[:-1]), dtype=dtype), 0, -1)
@@ -85,7 +86,7 @@ def cross(a: np.ndarray, b: np.ndarray, out: np.ndarray | None = None) -> np.nda
     The same arithmetic as ``numpy.cross`` (``a1 b2 − a2 b1``, …; equal to the last bit), in
     about half its time on the (steps, members, 3) arrays of a motion.  ``out``: an array of
     the broadcast shape to write into (it must not overlap ``a`` or ``b``); by default the
-    result's components are stored first when ``a``'s are.
+    result's components are stored first when ``a``'s or ``b``'s are.
 
     Examples
     --------
