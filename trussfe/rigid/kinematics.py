@@ -38,7 +38,7 @@ from ..errors import AnalysisError
 from ..kinematics.assembly import solve_positions
 from ..mechanics.geometry import lengths, member_vectors
 from ..model.structure import Structure
-from ..threads import contiguous_spans, parallel_map, worker_count
+from ..threads import block_steps, contiguous_spans, parallel_map, worker_count
 from .linalg import ANCHOR_SPACING, CompatSolver, SingularStep, is_direct
 from ..vectors import components_first, cross, dot, empty_vectors, is_components_first
 from .motion import Motion
@@ -561,10 +561,11 @@ BLOCK_ENTRIES = 1 << 17
 
 
 def _in_blocks(nt: int, m: int, fn: Callable[[slice], None]) -> None:
-    """``fn(steps)`` over blocks of about :data:`BLOCK_ENTRIES` members × steps, in worker
-    threads: element-wise work on the motion's arrays, each block written into whole-motion
-    arrays while it is in the processor cache (every step computed as in any block)."""
-    step = max(1, BLOCK_ENTRIES // max(m, 1))
+    """``fn(steps)`` over blocks of at most :data:`BLOCK_ENTRIES` members × steps, of equal
+    size for the worker threads (:func:`~trussfe.threads.block_steps`): element-wise work on
+    the motion's arrays, each block written into whole-motion arrays while it is in the
+    processor cache (every step computed as in any block)."""
+    step = block_steps(nt, BLOCK_ENTRIES // max(m, 1))
     parallel_map(lambda k0: fn(slice(k0, min(nt, k0 + step))), range(0, nt, step))
 
 

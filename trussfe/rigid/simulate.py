@@ -31,7 +31,7 @@ from .linalg import SingularStep, is_direct
 from .motion import Motion, check_stroke, rest_motion
 from .sections import (SectionForces, SectionStresses, section_forces, section_stresses,
                        section_tension)
-from ..threads import parallel_map, worker_count
+from ..threads import block_steps, parallel_map
 
 log = logging.getLogger(__name__)
 
@@ -248,15 +248,9 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
     require(along_motion_bytes(nt, structure.n_nodes, m), "motion",
             f"an analysis of {nt:,} time steps", "use fewer steps (--steps) or a longer "
             "time step")
-    step = max(1, CHUNK_ENTRIES // max(m, 1))
-    workers = worker_count()
-    if workers > 1 and nt > step:
-        # as many blocks as a multiple of the worker threads, of equal size, so that no
-        # thread is left with the long tail (the slew's 10,000 steps: 2 × 5,000, not
-        # 7,281 + 2,719); every step is computed the same in any block
-        blocks = -(-nt // step)
-        blocks = -(-blocks // workers) * workers
-        step = -(-nt // blocks)
+    # blocks of equal size, as many as a multiple of the worker threads; every step is
+    # computed the same in any block
+    step = block_steps(nt, CHUNK_ENTRIES // max(m, 1))
     if method == "bay-by-bay":
         X = bay_by_bay_positions(structure, motion, layout or chain_layout(structure))
     elif nt > 1:
