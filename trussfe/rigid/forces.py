@@ -212,21 +212,32 @@ def _group_nodes(conn: np.ndarray, n: int, nodes: np.ndarray | None) -> list:
     return groups
 
 
+def axis_acceleration(start_acc: np.ndarray, e: np.ndarray, ed: np.ndarray, Ld: np.ndarray,
+                      Ldd: np.ndarray) -> np.ndarray:
+    """a_0 = a_a + L̈ e + 2 L̇ ė of members (t, m, 3) whose start nodes accelerate by
+    ``start_acc``; ``Ld``, ``Ldd`` (t, m, 1).
+
+    A member's point at a distance x from its start node accelerates by a_0 + x ë (Lacy eqs.
+    2.3–2.5): the tube's and a section piece's centres of gravity take their accelerations
+    from this one sum (the terms added in the order written)."""
+    a0 = Ldd * e
+    a0 += start_acc
+    a0 += np.multiply(2.0 * Ld, ed)
+    return a0
+
+
 def element_accelerations(kin: Kinematics, bodies: MemberBodies, conn: np.ndarray,
                           base_members: np.ndarray | None = None):
     """Accelerations of the tube and base centres of gravity, each (nt, m, 3), and the tube
     centre's distance s_t from the start node, (nt, m, 1); ``base_members``: the bases of
     these members only."""
-    e, ed, edd = kin.unit, kin.unit_rate, kin.unit_acc
+    edd = kin.unit_acc
     aa = take(kin.acceleration, conn[:, 0], axis=1)
-    L, Ld, Ldd = kin.length[..., None], kin.length_rate[..., None], kin.length_acc[..., None]
-    s_t = L - bodies.tube_length[None, :, None] / 2.0
-    # aa + L̈ e + 2 L̇ ė + s_t ë, added in that order, with one scratch array
-    a_tube = Ldd * e
-    a_tube += aa
-    term = np.multiply(2.0 * Ld, ed)
-    a_tube += term
-    a_tube += np.multiply(s_t, edd, out=term)
+    s_t = kin.length[..., None] - bodies.tube_length[None, :, None] / 2.0
+    # a_0 + s_t ë at the tube's centre (eqs. 2.3–2.5)
+    a_tube = axis_acceleration(aa, kin.unit, kin.unit_rate, kin.length_rate[..., None],
+                               kin.length_acc[..., None])
+    a_tube += s_t * edd
     if base_members is None:
         a_base = aa + bodies.base_cg[None, :, None] * edd
     else:

@@ -36,7 +36,7 @@ import numpy as np
 
 from ..errors import AnalysisError
 from ..kinematics.assembly import solve_positions
-from ..mechanics.geometry import lengths, member_vectors
+from ..mechanics.geometry import lengths, member_vectors, unit_vectors
 from ..model.structure import Structure
 from ..threads import block_steps, contiguous_spans, parallel_map, worker_count
 from .linalg import ANCHOR_SPACING, CompatSolver, SingularStep, is_direct
@@ -271,8 +271,7 @@ def chord_newton(conn: np.ndarray, pattern: "_Pattern", L: np.ndarray, X: np.nda
 
     def values(steps):
         """B's values at the current positions of ``steps`` (the unit vectors' components)."""
-        d = member_vectors(X[steps], conn)
-        return pattern.values(d / lengths(d)[..., None])
+        return pattern.values(unit_vectors(member_vectors(X[steps], conn))[0])
 
     def chunk_solver(ab):
         """The stacked inverses at the anchors of a chunk's steps, gathered once for every
@@ -410,16 +409,10 @@ def _solve_compat(structure: Structure, pattern: _Pattern, solver: CompatSolver,
     return out.reshape(nt, structure.n_nodes, structure.dim)
 
 
-def _factorise(structure: Structure, pattern: _Pattern, X: np.ndarray, motion: Motion,
-               values: np.ndarray | None = None) -> CompatSolver:
-    """Factorise the compatibility matrix of every step, or raise at the first singular step
-    (once: velocities, accelerations and member forces all use this matrix or its
-    transpose).  ``values``: the matrix entries of every step (:meth:`_Pattern.values`), if
-    known."""
-    if values is None:
-        conn = structure.connectivity
-        d = member_vectors(X, conn)
-        values = pattern.values(d / lengths(d)[..., None])
+def _factorise(pattern: _Pattern, values: np.ndarray, motion: Motion) -> CompatSolver:
+    """Factorise the compatibility matrix of every step from its entries ``values``
+    (:meth:`_Pattern.values`), or raise at the first singular step (once: velocities,
+    accelerations and member forces all use this matrix or its transpose)."""
     try:
         return CompatSolver(pattern.rows, pattern.cols, values, pattern.m)
     except SingularStep as s:
@@ -480,12 +473,10 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     vals = np.empty((nt, pattern.rows.size))        # the entries of B, every step
 
     def geometry(s):
-        d = member_vectors(components_first(X[s]), conn)      # (time, member, dim)
-        L[s] = lengths(d)
-        e[s] = d / L[s][..., None]
+        e[s], L[s] = unit_vectors(member_vectors(components_first(X[s]), conn))
         vals[s] = pattern.values(e[s])
     _in_blocks(nt, m, geometry)
-    solver = _factorise(structure, pattern, X, motion, vals)
+    solver = _factorise(pattern, vals, motion)
     vals = None                                      # not needed once factorised
     Ld = np.zeros_like(L)
     Ldd = np.zeros_like(L)

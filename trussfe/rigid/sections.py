@@ -40,9 +40,9 @@ from ..mechanics.mass import centroidal_inertia
 from ..mechanics.stress import SectionStresses, round_sections, von_mises
 from ..model.geometry import lengths
 from ..model.structure import Structure
-from .forces import MemberBodies, NodalForces
+from .forces import MemberBodies, NodalForces, axis_acceleration
 from .kinematics import Kinematics, pad3
-from ..vectors import components_first, cross, dot, empty_vectors
+from ..vectors import components_first, cross, dot, empty_vectors, take
 
 
 @dataclass
@@ -184,12 +184,11 @@ def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
 
 def _base_acceleration(kin: Kinematics, conn: np.ndarray, sel, e: np.ndarray,
                        g: np.ndarray) -> np.ndarray:
-    """a_0 − g = a_a + L̈ e + 2 L̇ ė − g of the members ``sel`` (start nodes ``conn``),
-    (t, m, 3), the terms added in that order in place."""
-    p = components_first(np.take(kin.acceleration, conn[:, 0], axis=1))
-    p += kin.length_acc[:, sel, None] * e
-    term = np.multiply(2.0 * kin.length_rate[:, sel, None], kin.unit_rate[:, sel])
-    p += term
+    """a_0 − g of the members ``sel`` (start nodes ``conn``), (t, m, 3)
+    (:func:`~trussfe.rigid.forces.axis_acceleration`)."""
+    p = axis_acceleration(take(kin.acceleration, conn[:, 0], axis=1), e,
+                          kin.unit_rate[:, sel], kin.length_rate[:, sel, None],
+                          kin.length_acc[:, sel, None])
     p -= g
     return p
 
