@@ -54,13 +54,26 @@ def test_block_solves_equal_dense_solves():
     assert_allclose(sub.solve(b[2:4, :, 0]), x1[2:4], rtol=0, atol=1e-14 * np.abs(x).max())
 
 
-def test_singular_block_names_the_step():
-    """A step with a zero (singular) diagonal block is reported by its index."""
+@pytest.mark.parametrize("workers", [1, 3])
+def test_singular_block_names_the_step(monkeypatch, workers):
+    """A step with a zero (singular) diagonal block is reported by its index, also when
+    worker threads invert groups of the blocks (three threads, every stack split)."""
+    import trussfe.rigid.linalg as la
+    from trussfe.threads import compute_threads
+    monkeypatch.setattr(la, "PARALLEL_INVERSE_MIN", 1)
     s = double_octahedral_chain(2)
     p, vals = _perturbed_values(s, 4)
     f = block_triangular_form(p.rows, p.cols, p.m)
     vals[2, f.diag[1][2]] = 0.0
-    with pytest.raises(SingularStep) as err:
+    with compute_threads(workers=workers), pytest.raises(SingularStep) as err:
+        CompatSolver(p.rows, p.cols, vals, p.m)
+    assert err.value.step == 2
+    # invertible but nearly singular (one row scaled by 1e-9): the condition number finds it
+    _, pert = _perturbed_values(s, 4)
+    r, _, d = f.diag[1]
+    pert[2, d[r == 0]] *= 1e-9
+    vals = pert
+    with compute_threads(workers=workers), pytest.raises(SingularStep) as err:
         CompatSolver(p.rows, p.cols, vals, p.m)
     assert err.value.step == 2
 

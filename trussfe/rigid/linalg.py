@@ -325,13 +325,30 @@ class _BlockInverses:
                     D[g, a:b][:, r * size + c] = vals[a:b, e]
             parallel_map(fill, spans)
             D = D.reshape(ids.size, nt, size, size)
+            # Many blocks of one size (a chain's): each worker thread inverts a contiguous
+            # group of whole blocks and takes their condition numbers while they are in its
+            # cache; the groups' inverses are kept as they are (no copy into one stack).
+            groups = contiguous_spans(ids.size, len(spans)) if 1 < len(spans) <= ids.size \
+                else None
+
+            def invert(group, D=D):
+                a, b = group
+                inv = np.linalg.inv(D[a:b])
+                return inv, np.nan_to_num(_rcond(D[a:b], inv), nan=0.0).min(axis=0)
             try:
-                inv = _stacked_inverse(D)
+                parts = (None if groups is None else parallel_map(invert, groups))
+                inv = _stacked_inverse(D) if groups is None else None
             except np.linalg.LinAlgError:
                 lam = np.linalg.eigvalsh(np.einsum("btji,btjk->btik", D, D))
                 rc = np.sqrt(np.clip(lam[..., 0], 0.0, None) / np.maximum(lam[..., -1], 1e-300))
                 raise SingularStep(int(np.flatnonzero((~(rc >= SINGULAR_RCOND)).any(axis=0))[0])
                                    ) from None
+            if groups is not None:
+                for (a, _), (part, rc) in zip(groups, parts):
+                    np.fmin(worst, rc, out=worst)
+                    for g, blk in enumerate(ids[a:a + part.shape[0]]):
+                        self.inv[blk] = part[g]
+                continue
 
             def condition(span, D=D, inv=inv):
                 a, b = span
