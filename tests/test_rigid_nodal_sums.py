@@ -2,7 +2,8 @@
 """Member-end vectors summed at the nodes (trussfe.rigid.forces._to_nodes, the nodal sums of
 the Newton-Euler equations, Lacy eq. 4.20) equal the product with the node-member incidence
 matrix (scipy.sparse, summing each node's ends in the same order) to the last bit, for all
-nodes and for a subset, on a model with nodes of different degrees and an isolated node."""
+nodes and for a subset, on a model with nodes of different degrees and an isolated node; and
+to each node's left-to-right sum of its ends, signed zeros included."""
 from __future__ import annotations
 
 import numpy as np
@@ -52,3 +53,32 @@ def test_nodal_sums_of_another_connectivity_of_the_same_size_and_components_firs
         got = _to_nodes(conn, n, components_first(at_start), components_first(at_end))
         np.testing.assert_array_equal(got, want)
         assert is_components_first(got)
+
+
+def test_nodal_sums_are_left_to_right_sums_with_signed_zeros():
+    """Each node's sum is its ends added left to right (start ends by member, then end ends
+    by member), the sign of a zero included: ends that are all −0 sum to −0 (the static
+    loads' components across gravity are −0 exactly), a node without ends to +0."""
+    rng = np.random.default_rng(7)
+    conn = double_octahedral_chain(2).connectivity
+    n = int(conn.max()) + 2                                   # the last node has no member
+    nt, m = 5, conn.shape[0]
+    at_start, at_end = rng.standard_normal((2, nt, m, 3))
+    zero = rng.random((2, nt, m, 3)) < 0.6                    # many exact zeros, both signs
+    sign = np.where(rng.random((2, nt, m, 3)) < 0.5, -0.0, 0.0)
+    at_start = np.where(zero[0], sign[0], at_start)
+    at_end = np.where(zero[1], sign[1], at_end)
+    at_start[:, :, 0] = -0.0                                  # x components all −0
+    at_end[:, :, 0] = -0.0
+    want = np.zeros((nt, n, 3))
+    for k in range(n - 1):
+        ends = ([at_start[:, j] for j in np.flatnonzero(conn[:, 0] == k)]
+                + [at_end[:, j] for j in np.flatnonzero(conn[:, 1] == k)])
+        acc = ends[0].copy()
+        for x in ends[1:]:
+            acc = acc + x
+        want[:, k] = acc
+    got = _to_nodes(conn, n, at_start, at_end)
+    np.testing.assert_array_equal(got, want)
+    np.testing.assert_array_equal(np.signbit(got), np.signbit(want))
+    assert np.all(np.signbit(got[:, :n - 1, 0])) and not np.any(np.signbit(got[:, n - 1]))

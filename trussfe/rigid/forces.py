@@ -40,7 +40,7 @@ from ..model.structure import Structure
 from .active import active_members
 from .kinematics import Kinematics, _count_message, _Pattern, pad3
 from .linalg import SingularStep, batched_solve
-from ..vectors import components_first, cross, dot, empty_vectors, is_components_first, take
+from ..vectors import components_first, cross, dot, take
 
 
 @dataclass
@@ -129,87 +129,131 @@ class NodalForces:
 def _to_nodes(conn: np.ndarray, n: int, at_start: np.ndarray, at_end: np.ndarray,
               nodes: np.ndarray | None = None) -> np.ndarray:
     """Sum member-end vectors (t, m, 3) into their nodes, (t, n, 3), or (t, len(nodes), 3)
-    for the given nodes only.
+    for the given nodes only; the result's components are stored first
+    (:mod:`trussfe.vectors`).
 
     Each node's sum runs over its member ends in one fixed order — its members' start ends
-    by member, then their end ends — one gathered column of ends per pass for all nodes
-    with the same sequence of start and end ends: a few passes of the node degree instead
-    of a sparse product with transposed copies.
+    by member, then their end ends — from −0 (the exact identity of addition, so that the
+    sum is the ends' own left-to-right sum to the last bit, signed zeros included): one
+    gathered column of start ends per pass for all nodes that have that many, then one of
+    end ends, a few passes of the node degree in all (:class:`_NodeSums`).
     """
+    plan = _node_sums(conn, n, nodes)
     nt = at_start.shape[0]
-    sides = (at_start, at_end)
-    size = n if nodes is None else len(nodes)
-    out = None
-    for rows, pattern, members in _node_groups(conn, n, nodes):
-        if not pattern:
-            acc = np.zeros((nt, rows.size, 3))
-        else:
-            acc = take(sides[pattern[0]], members[:, 0], axis=1)
-            for c in range(1, len(pattern)):
-                acc += take(sides[pattern[c]], members[:, c], axis=1)
-        if rows.size == size:
-            return acc
-        if out is None:
-            out = (empty_vectors((nt, size, 3)) if is_components_first(acc)
-                   else np.empty((nt, size, 3)))
-        out[:, rows] = acc
-    return out if out is not None else np.zeros((nt, size, 3))
+    # components first: (c, t, m) arrays whose components are each contiguous
+    starts, ends = (np.moveaxis(components_first(a), -1, 0) for a in (at_start, at_end))
+    acc = np.full((at_start.shape[-1], nt, plan.size), -0.0)
+    for sides, cols, counts, reorder in ((starts, plan.start_cols, plan.start_counts, None),
+                                         (ends, plan.end_cols, plan.end_counts,
+                                          plan.to_end_order)):
+        if reorder is not None:
+            acc = np.take(acc, reorder, axis=2)
+        for col, c in zip(cols, counts):
+            acc[:, :, :c] += _gather(sides, col)
+    acc = np.take(acc, plan.to_nodes, axis=2)
+    if plan.isolated.size:
+        acc[:, :, plan.isolated] = 0.0               # no end: an empty sum
+    return np.moveaxis(acc, 0, -1)
 
 
-def _node_groups(conn: np.ndarray, n: int, nodes: np.ndarray | None) -> list:
-    """The nodes grouped by the sequence of their member ends (:func:`_to_nodes`): a list of
-    (rows among ``nodes``, sides as a tuple of 0 = start end and 1 = end end, members
-    (rows, ends)).
+def _gather(a: np.ndarray, cols: np.ndarray) -> np.ndarray:
+    """``a[:, :, cols]`` of a (c, t, m) array: one gather when ``a`` is contiguous, else one
+    per component (numpy's take would first copy a strided array whole)."""
+    if a.flags.c_contiguous:
+        return np.take(a, cols, axis=2)
+    out = np.empty(a.shape[:2] + (cols.size,))
+    for c in range(a.shape[0]):
+        np.take(a[c], cols, axis=1, out=out[c])
+    return out
 
-    A node's ends come in the order of the stacked start and end ends (a stable sort of the
-    ends by node); equal sequences are found by a lexicographic sort of the rows.  The
-    grouping is kept by the connectivity's content (every block of steps of an analysis
-    asks for it several times; a changed connectivity is another key, so nothing kept can
-    go stale).
+
+@dataclass(frozen=True)
+class _NodeSums:
+    """How :func:`_to_nodes` sums the member ends of the nodes of one connectivity.
+
+    The nodes are ordered by their number of start ends, most first, so that the nodes with
+    a d-th start end are the first ``start_counts[d]``; ``start_cols[d]`` are those ends'
+    members.  ``to_end_order`` reorders them by their number of end ends, with
+    ``end_cols``, ``end_counts`` likewise; ``to_nodes`` puts them back in the order asked
+    for; ``isolated``: the positions of nodes with no end at all.
     """
+
+    size: int
+    start_cols: tuple
+    start_counts: tuple
+    to_end_order: np.ndarray
+    end_cols: tuple
+    end_counts: tuple
+    to_nodes: np.ndarray
+    isolated: np.ndarray
+
+
+def _node_sums(conn: np.ndarray, n: int, nodes: np.ndarray | None) -> _NodeSums:
+    """The :class:`_NodeSums` of a connectivity, kept by its content (every block of steps
+    of an analysis asks for it several times; a changed connectivity is another key, so
+    nothing kept can go stale)."""
     key = (n, conn.shape, conn.tobytes(), None if nodes is None else np.asarray(nodes).tobytes())
-    groups = _NODE_GROUPS.get(key)
-    if groups is None:
-        groups = _group_nodes(conn, n, nodes)
-        for rows, _, members in groups:              # shared by every caller: read only
-            rows.setflags(write=False)
-            members.setflags(write=False)
-        if len(_NODE_GROUPS) > 64:
-            _NODE_GROUPS.clear()
-        _NODE_GROUPS[key] = groups
-    return groups
+    plan = _NODE_SUMS.get(key)
+    if plan is None:
+        plan = _plan_node_sums(conn, n, nodes)
+        for value in vars(plan).values():         # shared by every caller: read only
+            for a in (value if isinstance(value, tuple) else (value,)):
+                if isinstance(a, np.ndarray):
+                    a.setflags(write=False)
+        if len(_NODE_SUMS) > 64:
+            _NODE_SUMS.clear()
+        _NODE_SUMS[key] = plan
+    return plan
 
 
-#: Node groupings by connectivity (:func:`_node_groups`).
-_NODE_GROUPS: dict = {}
+#: Nodal-sum plans by connectivity (:func:`_node_sums`).
+_NODE_SUMS: dict = {}
 
 
-def _group_nodes(conn: np.ndarray, n: int, nodes: np.ndarray | None) -> list:
-    """The grouping of :func:`_node_groups`, computed."""
-    m = conn.shape[0]
-    ends = conn.T.ravel()                        # stacked: start ends, then end ends
-    order = np.argsort(ends, kind="stable")
-    counts = np.bincount(ends, minlength=n)
-    first = np.concatenate([[0], np.cumsum(counts)[:-1]])
-    width = max(int(counts.max(initial=0)), 1)
-    member = np.zeros((n, width), dtype=np.int64)
-    side = np.full((n, width), -1, dtype=np.int64)       # -1: no end (shorter rows)
-    col = np.arange(2 * m) - np.repeat(first, counts)
-    member[ends[order], col] = order % m
-    side[ends[order], col] = order // m
-    if nodes is not None:
-        member, side = member[nodes], side[nodes]
-    rows_sorted = np.lexsort(side.T[::-1])               # first end's side the primary key
-    ordered = side[rows_sorted]
-    starts = np.ones(len(ordered), dtype=bool)
-    starts[1:] = np.any(ordered[1:] != ordered[:-1], axis=1)
-    bounds = np.append(np.flatnonzero(starts), len(ordered))
-    groups = []
-    for a, b in zip(bounds[:-1], bounds[1:]):            # one pass per distinct sequence
-        rows = np.sort(rows_sorted[a:b])
-        pattern = tuple(int(k) for k in ordered[a] if k >= 0)
-        groups.append((rows, pattern, member[rows][:, :len(pattern)]))
-    return groups
+def _side_columns(node_of_end: np.ndarray, size: int):
+    """For the ends of one side of the members (in member order) at the nodes
+    ``node_of_end`` (positions among the ``size`` summed nodes, -1: not summed): the nodes
+    ordered by their number of such ends (most first, stably), for each d the members of
+    the d-th end of the first nodes that have one, and the nodes' numbers of ends."""
+    keep = node_of_end >= 0
+    members = np.flatnonzero(keep)
+    at = node_of_end[keep]
+    counts = np.bincount(at, minlength=size)
+    order = np.argsort(-counts, kind="stable")      # nodes with most ends first
+    pos = np.empty(size, dtype=np.int64)
+    pos[order] = np.arange(size)
+    # the ends by node in the new order, each node's in member order
+    by = np.lexsort((members, pos[at]))
+    node_sorted, member_sorted = pos[at][by], members[by]
+    first = np.searchsorted(node_sorted, np.arange(size))
+    d = np.arange(node_sorted.size) - first[node_sorted]
+    depth = int(counts.max(initial=0))
+    cols, cnts = [], []
+    for k in range(depth):
+        sel = d == k                               # ascending node positions: a prefix
+        cols.append(member_sorted[sel])
+        cnts.append(int(sel.sum()))
+    return order, tuple(cols), tuple(cnts), counts
+
+
+def _plan_node_sums(conn: np.ndarray, n: int, nodes: np.ndarray | None) -> _NodeSums:
+    """The :class:`_NodeSums` of :func:`_node_sums`, computed."""
+    wanted = np.arange(n) if nodes is None else np.asarray(nodes, dtype=np.int64)
+    size = wanted.size
+    where = np.full(n, -1, dtype=np.int64)
+    where[wanted] = np.arange(size)
+    start_order, start_cols, start_counts, s_counts = _side_columns(where[conn[:, 0]], size)
+    # after the start ends the nodes stand in start_order; the end ends by their own order
+    position = np.empty(size, dtype=np.int64)       # each node's place in start_order
+    position[start_order] = np.arange(size)
+    end_order, end_cols, end_counts, e_counts = _side_columns(where[conn[:, 1]], size)
+    # acc (in start order) reordered to end order: take the start-order place of each node
+    to_end_order = position[end_order]
+    back = np.empty(size, dtype=np.int64)
+    back[end_order] = np.arange(size)
+    return _NodeSums(size=size, start_cols=start_cols, start_counts=start_counts,
+                     to_end_order=to_end_order, end_cols=end_cols, end_counts=end_counts,
+                     to_nodes=back, isolated=np.flatnonzero((s_counts + e_counts) == 0))
 
 
 def axis_acceleration(start_acc: np.ndarray, e: np.ndarray, ed: np.ndarray, Ld: np.ndarray,
