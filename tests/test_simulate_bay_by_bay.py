@@ -154,3 +154,35 @@ def test_a_chain_with_a_different_bay_is_refused():
     x[s.node_index("N10")] += [0.0, 0.0, 0.01]
     with pytest.raises(InputError, match="bay 2 is not a copy of bay 1"):
         chain_layout(s.with_coords(x))
+
+
+def test_bay_lengths_take_each_bay_active_member_from_its_motion_column():
+    """Every bay's active lengths, rates and accelerations are those of its members in the
+    motion (an active member the motion does not drive keeps its model length and zero
+    rates; a member listed twice takes its last column), checked against the model's member
+    lengths and the motion's columns member by member."""
+    from trussfe.rigid.bays import bay_lengths
+    from trussfe.rigid.motion import Motion
+    from trussfe.studies.lacy_rigid import double_octahedral_chain
+    chain = double_octahedral_chain(4)
+    layout = chain_layout(chain)
+    acts = np.array([a.member for a in chain.extensions["active_members"]])
+    members = np.concatenate([acts[1:], acts[2:3]])          # acts[0] undriven, one twice
+    rng = np.random.default_rng(2)
+    nt = 6
+    length, rate, acc = (rng.random((nt, members.size)) for _ in range(3))
+    motion = Motion(time=np.arange(nt) * 0.1, members=members, length=length, velocity=rate,
+                    acceleration=acc, source="test", first_step=0)
+    L, Ld, Ldd = bay_lengths(chain, layout, motion)
+    cols = layout.members[:, layout.active]
+    model = chain.lengths()
+    for (b, a), k in np.ndenumerate(cols):
+        hits = np.flatnonzero(members == k)
+        if hits.size:
+            j = hits[-1]
+            for got, want in ((L, length), (Ld, rate), (Ldd, acc)):
+                np.testing.assert_array_equal(got[:, b, a], want[:, j])
+        else:
+            np.testing.assert_array_equal(L[:, b, a], model[k])
+            assert not Ld[:, b, a].any() and not Ldd[:, b, a].any()
+    assert np.isin(acts[0], cols) and not np.isin(acts[0], members)

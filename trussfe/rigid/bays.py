@@ -242,15 +242,23 @@ def bay_lengths(structure: Structure, layout: ChainLayout, motion: Motion
     """Active lengths, rates and accelerations of every bay, each (nt, n_bays, n_active)
     in the template's active order (an active member the motion does not drive keeps its
     model length)."""
-    nt, m = motion.n_steps, structure.n_members
-    L = np.broadcast_to(structure.lengths(), (nt, m)).copy()
-    Ld = np.zeros((nt, m))
-    Ldd = np.zeros((nt, m))
-    L[:, motion.members] = motion.length
-    Ld[:, motion.members] = motion.velocity
-    Ldd[:, motion.members] = motion.acceleration
+    nt = motion.n_steps
     cols = layout.members[:, layout.active]                 # (nb, na)
-    return L[:, cols], Ld[:, cols], Ldd[:, cols]
+    L = np.broadcast_to(structure.lengths()[cols], (nt,) + cols.shape).copy()
+    Ld = np.zeros_like(L)
+    Ldd = np.zeros_like(L)
+    if motion.members.size:
+        # the bays' active members the motion drives, and their columns in the motion (a
+        # member listed twice: its last column, as an assignment by member would leave it)
+        order = np.argsort(motion.members, kind="stable")
+        at = np.maximum(np.searchsorted(motion.members, cols, side="right", sorter=order) - 1,
+                        0)
+        driven = motion.members[order[at]] == cols
+        src = order[at[driven]]
+        L[:, driven] = motion.length[:, src]
+        Ld[:, driven] = motion.velocity[:, src]
+        Ldd[:, driven] = motion.acceleration[:, src]
+    return L, Ld, Ldd
 
 
 def bay_by_bay_positions(structure: Structure, motion: Motion, layout: ChainLayout
