@@ -380,7 +380,6 @@ def chain_positions(bay: Structure, lengths: np.ndarray,
     P = bay_positions(bay, Lall.transpose(1, 0, 2), item="bay", rates=Ldall,
                       time=time)                                       # (nb, nt, 9, 3)
     o_b, R_b = triangle_frame(bay.coords[:3])
-    P = (P[:, :, 3:] - o_b) @ R_b                       # own nodes in the template's frame
     X = np.empty((nt, 3 + 6 * nb, 3))
     X[:, :3] = bay.coords[:3]
     nxt = np.asarray(next_base) - 3
@@ -392,7 +391,8 @@ def chain_positions(bay: Structure, lengths: np.ndarray,
         for k in range(nb):
             o, R = triangle_frame(base)                               # eqs. 6.2, 6.6
             own = X[a:b, 3 + 6 * k:9 + 6 * k]
-            np.matmul(P[k, a:b], R.transpose(0, 2, 1), out=own)       # R p, eq. 6.3
+            p = (P[k, a:b, 3:] - o_b) @ R_b           # own nodes in the template's frame
+            np.matmul(p, R.transpose(0, 2, 1), out=own)               # R p, eq. 6.3
             own += o[:, None, :]
             base = own[:, nxt]
     parallel_map(carry, contiguous_spans(nt, min(worker_count(), max(1, nt // 100))))
