@@ -396,17 +396,25 @@ class _Pattern:
 
 def _solve_compat(structure: Structure, pattern: _Pattern, solver: CompatSolver,
                   rhs: np.ndarray) -> np.ndarray:
-    """Solve B x = rhs (nt, m) for the free node coordinates; returns (nt, n, dim)."""
-    nt = rhs.shape[0]
-    out = np.zeros((nt, structure.n_nodes * structure.dim))
+    """Solve B x = rhs (nt, m) for the free node coordinates; returns (nt, n, dim), its
+    components stored first (:mod:`trussfe.vectors`)."""
+    nt, n, dim = rhs.shape[0], structure.n_nodes, structure.dim
     try:
-        out[:, pattern.free_cols] = solver.solve(rhs[:, pattern.loaded_idx])
+        free = solver.solve(rhs[:, pattern.loaded_idx])
     except SingularStep as s:
         raise AnalysisError(f"motion: step {s.step}", "the assembly is at a singular position "
                             "(its compatibility matrix is rank deficient): its velocities and "
                             "accelerations are not determined there; choose a motion that "
                             "avoids it") from None
-    return out.reshape(nt, structure.n_nodes, structure.dim)
+    out = empty_vectors((nt, n, dim))
+
+    def place(s):
+        """The free coordinates of steps ``s`` in their places, the fixed ones zero."""
+        flat = np.zeros((s.stop - s.start, n * dim))
+        flat[:, pattern.free_cols] = free[s]
+        out[s] = flat.reshape(-1, n, dim)
+    _in_blocks(nt, n * dim, place)
+    return out
 
 
 def _factorise(pattern: _Pattern, values: np.ndarray, motion: Motion) -> CompatSolver:
@@ -484,7 +492,7 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     Ldd[:, motion.members] = motion.acceleration
     e3 = pad3(e)
     if scheme == "exact":
-        V = components_first(_solve_compat(structure, pattern, solver, Ld))
+        V = _solve_compat(structure, pattern, solver, Ld)
         vrel = np.empty_like(e)
         rhs = np.empty_like(L)
 
@@ -493,7 +501,7 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
             quad = (dot(vrel[s], vrel[s]) - Ld[s] ** 2) / L[s]
             rhs[s] = Ldd[s] - quad
         _in_blocks(nt, m, relative_velocity)
-        A = components_first(_solve_compat(structure, pattern, solver, rhs))
+        A = _solve_compat(structure, pattern, solver, rhs)
         ed, edd, omega, alpha = (empty_vectors((nt, m, 3)) for _ in range(4))
 
         def rates(s):
