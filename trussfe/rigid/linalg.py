@@ -316,10 +316,11 @@ class _BlockInverses:
         spans = _step_pieces(nt, form.n_blocks)
         for size in np.unique(sizes):
             ids = np.flatnonzero(sizes == size)
-            D = np.zeros((ids.size, nt, size * size))
+            D = np.empty((ids.size, nt, size * size))
 
             def fill(span, ids=ids, D=D, size=size):
                 a, b = span
+                D[:, a:b] = 0.0                     # zeroed here, in the worker threads
                 for g, blk in enumerate(ids):
                     r, c, e = form.diag[blk]
                     D[g, a:b][:, r * size + c] = vals[a:b, e]
@@ -362,12 +363,13 @@ class _BlockInverses:
             raise SingularStep(int(bad[0]))
         for b, (ucols, _, _, _) in enumerate(form.coupling):
             if ucols.size:
-                self.off[b] = np.zeros((nt, form.rows[b].size, ucols.size))
+                self.off[b] = np.empty((nt, form.rows[b].size, ucols.size))
 
         def fill_off(span):
             a, z = span
             for b, (ucols, lr, pos, e) in enumerate(form.coupling):
                 if ucols.size:
+                    self.off[b][a:z] = 0.0
                     # the block's entries by their flat index in its rows (a view)
                     self.off[b].reshape(nt, -1)[a:z, lr * ucols.size + pos] = vals[a:z, e]
         parallel_map(fill_off, spans)
