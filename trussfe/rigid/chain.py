@@ -268,23 +268,23 @@ def bay_positions(bay: Structure, L: np.ndarray, item: str = "bay",
     ok = np.ones(nb, dtype=bool)
     x = x0
     hermite = rates is not None and time is not None and idx.size > 1
-    if hermite:
-        from .kinematics import _Pattern
-        from .linalg import CompatSolver, SingularStep
-        pattern = _Pattern(bay)
-        vel = np.zeros((nb, idx.size, n * 3))
     for j, k in enumerate(idx):
         x, good = _batched_positions(bay, L[:, k], x)
         ok &= good
         coarse[:, j] = x
-        if hermite:
-            e, _ = unit_vectors(member_vectors(x, bay.connectivity))
-            try:
-                solver = CompatSolver(pattern.rows, pattern.cols, pattern.values(e),
-                                      pattern.m)
-                vel[:, j, pattern.free_flat] = solver.solve(rates[:, k, pattern.loaded_idx])
-            except SingularStep:
-                hermite = False
+    if hermite:
+        # the node velocities B ṗ = L̇ at every coarse step of every history, in one solve
+        from .kinematics import _Pattern
+        from .linalg import CompatSolver, SingularStep
+        pattern = _Pattern(bay)
+        vel = np.zeros((nb * idx.size, n * 3))
+        e, _ = unit_vectors(member_vectors(coarse.reshape(-1, n, 3), bay.connectivity))
+        try:
+            solver = CompatSolver(pattern.rows, pattern.cols, pattern.values(e), pattern.m)
+            vel[:, pattern.free_flat] = solver.solve(
+                rates[:, idx][..., pattern.loaded_idx].reshape(nb * idx.size, -1))
+        except SingularStep:
+            hermite = False
     if idx.size > 1:
         # interpolation between the coarse steps
         seg = np.clip(np.searchsorted(idx, np.arange(nt), side="right") - 1, 0, idx.size - 2)
