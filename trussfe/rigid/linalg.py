@@ -298,9 +298,11 @@ def _rcond(A: np.ndarray, inv: np.ndarray) -> np.ndarray:
 class _BlockInverses:
     """Stacked inverses of the diagonal blocks of a :class:`BlockTriangularForm`, every step.
 
-    Blocks of one size are inverted in one batched LAPACK call; a step is singular when any of
-    its diagonal blocks has a reciprocal condition number (Frobenius norms) below
-    :data:`SINGULAR_RCOND` — B is singular exactly when one of its diagonal blocks is.
+    Blocks of one size are inverted by batched LAPACK calls (a large stack split between
+    worker threads: a contiguous group of whole blocks each, or a piece of the steps each when
+    the blocks are fewer than the threads); a step is singular when any of its diagonal blocks has a reciprocal
+    condition number (Frobenius norms) below :data:`SINGULAR_RCOND` — B is singular exactly
+    when one of its diagonal blocks is.
     """
 
     def __init__(self, form: BlockTriangularForm, vals: np.ndarray):
@@ -337,8 +339,10 @@ class _BlockInverses:
                 inv = np.linalg.inv(D[a:b])
                 return inv, np.nan_to_num(_rcond(D[a:b], inv), nan=0.0).min(axis=0)
             try:
-                parts = (None if groups is None else parallel_map(invert, groups))
-                inv = _stacked_inverse(D) if groups is None else None
+                if groups is not None:
+                    parts = parallel_map(invert, groups)
+                else:
+                    inv = _stacked_inverse(D)
             except np.linalg.LinAlgError:
                 lam = np.linalg.eigvalsh(np.einsum("btji,btjk->btik", D, D))
                 rc = np.sqrt(np.clip(lam[..., 0], 0.0, None) / np.maximum(lam[..., -1], 1e-300))
@@ -349,15 +353,14 @@ class _BlockInverses:
                     np.fmin(worst, rc, out=worst)
                     for g, blk in enumerate(ids[a:a + part.shape[0]]):
                         self.inv[blk] = part[g]
-                continue
-
-            def condition(span, D=D, inv=inv):
-                a, b = span
-                worst[a:b] = np.fmin(worst[a:b], np.nan_to_num(
-                    _rcond(D[:, a:b], inv[:, a:b]), nan=0.0).min(axis=0))
-            parallel_map(condition, spans)
-            for g, b in enumerate(ids):
-                self.inv[b] = inv[g]
+            else:
+                def condition(span, D=D, inv=inv):
+                    a, b = span
+                    worst[a:b] = np.fmin(worst[a:b], np.nan_to_num(
+                        _rcond(D[:, a:b], inv[:, a:b]), nan=0.0).min(axis=0))
+                parallel_map(condition, spans)
+                for g, b in enumerate(ids):
+                    self.inv[b] = inv[g]
         bad = np.flatnonzero(~(worst >= SINGULAR_RCOND))
         if bad.size:
             raise SingularStep(int(bad[0]))
