@@ -129,14 +129,14 @@ def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
     conn = structure.connectivity[sel]
     # every vector with its components stored first (trussfe.vectors): the shears and
     # moments below, and every term of them, follow that order
-    e = components_first(kin.unit[:, sel])                                # (t, m, 3)
-    L = kin.length[:, sel, None]                                          # (t, m, 1)
+    e = components_first(_members(kin.unit, sel))                         # (t, m, 3)
+    L = _members(kin.length, sel)[..., None]                              # (t, m, 1)
     if at_rest:
         p = np.broadcast_to(-g, e.shape)                                  # a_0 = 0
     else:
-        edd = components_first(kin.unit_acc[:, sel])
+        edd = components_first(_members(kin.unit_acc, sel))
         p = _base_acceleration(kin, conn, sel, e, g)                      # a_0 − g
-    Fb = components_first(forces.end_force[:, sel, 1])
+    Fb = components_first(_members(forces.end_force[:, :, 1], sel))
     mu = (bodies.tube_mass[sel] / tube_length)[None, :, None]
     mseg = mu * u                                                         # (1, m, k)
     ell = tube_length[:, None] if full_length_inertia else positions
@@ -176,7 +176,7 @@ def section_forces(structure: Structure, kin: Kinematics, forces: NodalForces,
     M = np.multiply(lever[..., None], c1[:, :, None, :], out=empty_vectors(shape))
     M += c0[:, :, None, :]
     M *= half
-    M += np.multiply(Iseg[..., None], components_first(kin.alpha[:, sel])[:, :, None, :],
+    M += np.multiply(Iseg[..., None], components_first(_members(kin.alpha, sel))[:, :, None, :],
                      out=term)
     M -= np.multiply(u[..., None], eF[:, :, None, :], out=term)
     return SectionForces(position=positions, tension=tension, shear=V, moment=M, unit=e)
@@ -187,10 +187,17 @@ def _base_acceleration(kin: Kinematics, conn: np.ndarray, sel, e: np.ndarray,
     """a_0 − g of the members ``sel`` (start nodes ``conn``), (t, m, 3)
     (:func:`~trussfe.rigid.forces.axis_acceleration`)."""
     p = axis_acceleration(take(kin.acceleration, conn[:, 0], axis=1), e,
-                          kin.unit_rate[:, sel], kin.length_rate[:, sel, None],
-                          kin.length_acc[:, sel, None])
+                          _members(kin.unit_rate, sel), _members(kin.length_rate, sel)[..., None],
+                          _members(kin.length_acc, sel)[..., None])
     p -= g
     return p
+
+
+def _members(a: np.ndarray, sel) -> np.ndarray:
+    """``a[:, sel]`` of a history per member (t, m[, 3]): a view for a slice, else a gather
+    along the member axis, component by component for vectors stored components first
+    (:func:`trussfe.vectors.take`; the result is stored so too)."""
+    return a[:, sel] if isinstance(sel, slice) else take(a, sel, axis=1)
 
 
 def _tension(mseg, pe, fe, lever=None, qe=None):
@@ -216,18 +223,18 @@ def section_tension(structure: Structure, kin: Kinematics, forces: NodalForces,
         positions = stations(tube_length, n_sections)
     u = positions[None, :, :]
     g = pad3(np.asarray(structure.gravity, dtype=float))
-    e = kin.unit[:, sel]
+    e = _members(kin.unit, sel)
     mu = (bodies.tube_mass[sel] / tube_length)[None, :, None]
     mseg = mu * u
-    fe = dot(forces.end_force[:, sel, 1], e)[..., None]
+    fe = dot(_members(forces.end_force[:, :, 1], sel), e)[..., None]
     if at_rest:
         pe = dot(np.broadcast_to(-g, e.shape), e)[..., None]
         return _tension(mseg, pe, fe)
     conn = structure.connectivity[sel]
     p = _base_acceleration(kin, conn, sel, e, g)
     pe = dot(p, e)[..., None]
-    qe = dot(kin.unit_acc[:, sel], e)[..., None]
-    return _tension(mseg, pe, fe, kin.length[:, sel, None] - u / 2.0, qe)
+    qe = dot(_members(kin.unit_acc, sel), e)[..., None]
+    return _tension(mseg, pe, fe, _members(kin.length, sel)[..., None] - u / 2.0, qe)
 
 
 def section_stresses(structure: Structure, sf: SectionForces, *,
