@@ -119,13 +119,16 @@ def _assert_same_outputs(a, b):
 
 
 def test_compute_threads_lends_its_threads_to_every_map_and_ends_them():
-    """Inside compute_threads the maps run on its threads (the same ones from map to map,
-    started once), a map nested in one of their calls starts its own instead of waiting for
+    """Inside compute_threads the maps run on the calling thread and the context's one other
+    thread (the same from map to map, started once; two workers, never more threads
+    computing), a map nested in one of their calls starts its own instead of waiting for
     them (two levels of two items on two threads: would deadlock on shared threads), and no
     thread outlives the context."""
     import threading
+    import time
 
     def ident(_):
+        time.sleep(0.002)                # long enough for both threads to take items
         return threading.get_ident(), threading.current_thread().name
 
     def nested(x):
@@ -134,12 +137,35 @@ def test_compute_threads_lends_its_threads_to_every_map_and_ends_them():
     with threads.compute_threads(workers=2, blas=None):
         first = set(threads.parallel_map(ident, range(8)))
         second = set(threads.parallel_map(ident, range(8)))
-        # the context's two threads, named for trussfe, and no others in the second map
-        assert all(name.startswith("trussfe") for _, name in first | second)
-        assert len(first | second) <= 2
-        assert threading.get_ident() not in {i for i, _ in first}
+        caller = (threading.get_ident(), threading.current_thread().name)
+        # the caller and the context's thread, named for trussfe, and no others
+        helpers = (first | second) - {caller}
+        assert caller in first and len(helpers) == 1
+        assert all(name.startswith("trussfe") for _, name in helpers)
         assert threads.parallel_map(nested, range(2)) == [[0, 1], [10, 11]]
         # an explicit, different count gets threads of its own
         assert threads.parallel_map(lambda x: x + 1, range(3), workers=3) == [1, 2, 3]
     alive = [t for t in threading.enumerate() if t.name.startswith("trussfe")]
     assert alive == []
+
+
+def test_shared_map_keeps_order_and_raises_the_first_failure():
+    """On the context's threads the results come back in the order of the items, every item
+    runs once, and the exception of the first failing item is raised after all have run."""
+    import threading
+
+    seen = []
+    lock = threading.Lock()
+
+    def work(x):
+        with lock:
+            seen.append(x)
+        if x in (3, 5):
+            raise ValueError(f"item {x}")
+        return x * x
+
+    with threads.compute_threads(workers=2, blas=None):
+        assert threads.parallel_map(lambda x: x * x, range(20)) == [x * x for x in range(20)]
+        with pytest.raises(ValueError, match="item 3"):
+            threads.parallel_map(work, range(8))
+    assert sorted(seen) == list(range(8))

@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import contextvars
 import os
+import threading
 from collections.abc import Iterator
 from concurrent.futures import ThreadPoolExecutor
 from contextlib import contextmanager
@@ -119,9 +120,10 @@ def parallel_map(fn: Callable[[T], R], items: Iterable[T],
     """``[fn(x) for x in items]`` on :func:`worker_count` threads, results in order.
 
     Each call runs in a copy of the caller's context, so a nested :func:`parallel_map` sees
-    the same worker count.  Inside :func:`compute_threads` the calls run on its threads,
-    started once for the whole computation (starting threads for every map cost a quarter of a
-    millisecond each time, a few per cent of an analysis that maps many small blocks); a
+    the same worker count.  Inside :func:`compute_threads` the calls run on the calling
+    thread and the context's threads, started once for the whole computation (starting
+    threads for every map cost a quarter of a millisecond each time, a few per cent of an
+    analysis that maps many small blocks), all taking the items from one queue; a
     :func:`parallel_map` nested in one of those calls starts threads of its own, so that it
     never waits for the threads it runs on.
 
@@ -138,10 +140,41 @@ def parallel_map(fn: Callable[[T], R], items: Iterable[T],
     contexts = [contextvars.copy_context() for _ in items]   # one per call: not shared
     shared = _POOL.get()
     if shared is not None and shared[1] == count:
-        return list(shared[0].map(lambda cx: cx[0].run(_in_pool, fn, cx[1]),
-                                  zip(contexts, items)))
+        return _shared_map(shared[0], n, fn, items, contexts)
     with ThreadPoolExecutor(max_workers=n) as pool:
         return list(pool.map(lambda cx: cx[0].run(fn, cx[1]), zip(contexts, items)))
+
+
+def _shared_map(pool: ThreadPoolExecutor, n: int, fn: Callable[[T], R], items: list,
+                contexts: list) -> list[R]:
+    """:func:`parallel_map` on the threads of :func:`compute_threads`: the calling thread and
+    ``n − 1`` of the pool's take the items one after another from one queue (the caller
+    works instead of waiting: one thread fewer to wake for every map, and never more
+    threads computing than the workers); results in order, the first item's exception
+    raised after all have run."""
+    results: list = [None] * len(items)
+    errors: list = [None] * len(items)
+    queue = iter(range(len(items)))
+    lock = threading.Lock()
+
+    def run() -> None:
+        while True:
+            with lock:
+                i = next(queue, None)
+            if i is None:
+                return
+            try:
+                results[i] = contexts[i].run(_in_pool, fn, items[i])
+            except BaseException as exc:                # re-raised in the caller below
+                errors[i] = exc
+    helpers = [pool.submit(run) for _ in range(n - 1)]
+    run()
+    for h in helpers:
+        h.result()
+    for exc in errors:
+        if exc is not None:
+            raise exc
+    return results
 
 
 def _in_pool(fn: Callable[[T], R], x: T) -> R:
@@ -175,7 +208,8 @@ def compute_threads(workers: int | None = None, blas: int | None = 1) -> Iterato
     count = worker_count(workers)
     # the workers of every parallel_map inside, started on first use and ended with the
     # context (nothing outlives it)
-    pool = ThreadPoolExecutor(max_workers=count, thread_name_prefix="trussfe") \
+    # (the thread that calls a map works too: count − 1 threads beside it)
+    pool = ThreadPoolExecutor(max_workers=count - 1, thread_name_prefix="trussfe") \
         if count > 1 else None
     pool_token = _POOL.set(None if pool is None else (pool, count))
     try:
