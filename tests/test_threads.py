@@ -151,7 +151,8 @@ def test_compute_threads_lends_its_threads_to_every_map_and_ends_them():
 
 def test_shared_map_keeps_order_and_raises_the_first_failure():
     """On the context's threads the results come back in the order of the items, every item
-    runs once, and the exception of the first failing item is raised after all have run."""
+    runs once, and the exception of the first failing item is raised; after a failure no
+    further item is started (items 3 and 5 fail: 6 and 7 never run, or not both)."""
     import threading
 
     seen = []
@@ -166,6 +167,9 @@ def test_shared_map_keeps_order_and_raises_the_first_failure():
 
     with threads.compute_threads(workers=2, blas=None):
         assert threads.parallel_map(lambda x: x * x, range(20)) == [x * x for x in range(20)]
-        with pytest.raises(ValueError, match="item 3"):
-            threads.parallel_map(work, range(8))
-    assert sorted(seen) == list(range(8))
+        for _ in range(20):                              # whatever the timing
+            seen.clear()
+            with pytest.raises(ValueError, match="item 3"):
+                threads.parallel_map(work, range(8))
+            assert set(range(4)) <= set(seen) and len(seen) == len(set(seen))
+            assert not {6, 7} <= set(seen)

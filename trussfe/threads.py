@@ -150,23 +150,28 @@ def _shared_map(pool: ThreadPoolExecutor, n: int, fn: Callable[[T], R], items: l
     """:func:`parallel_map` on the threads of :func:`compute_threads`: the calling thread and
     ``n − 1`` of the pool's take the items one after another from one queue (the caller
     works instead of waiting: one thread fewer to wake for every map, and never more
-    threads computing than the workers); results in order, the first item's exception
-    raised after all have run."""
+    threads computing than the workers); results in order.
+
+    After a failure no further item is taken; the items taken before it finish, and the
+    exception of the first failing item in the items' order is raised (every item before it
+    was taken before it, so that is the same item whatever the timing)."""
     results: list = [None] * len(items)
     errors: list = [None] * len(items)
     queue = iter(range(len(items)))
     lock = threading.Lock()
+    failed = threading.Event()
 
     def run() -> None:
         while True:
             with lock:
-                i = next(queue, None)
+                i = None if failed.is_set() else next(queue, None)
             if i is None:
                 return
             try:
                 results[i] = contexts[i].run(_in_pool, fn, items[i])
             except BaseException as exc:                # re-raised in the caller below
                 errors[i] = exc
+                failed.set()
     helpers = [pool.submit(run) for _ in range(n - 1)]
     run()
     for h in helpers:
