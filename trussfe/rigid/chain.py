@@ -282,7 +282,7 @@ def bay_positions(bay: Structure, L: np.ndarray, item: str = "bay",
         try:
             solver = CompatSolver(pattern.rows, pattern.cols, pattern.values(e), pattern.m)
             vel[:, pattern.free_flat] = solver.solve(
-                rates[:, idx][..., pattern.loaded_idx].reshape(nb * idx.size, -1))
+                rates[:, idx][..., pattern.loaded_cols].reshape(nb * idx.size, -1))
         except SingularStep:
             hermite = False
     if idx.size > 1:

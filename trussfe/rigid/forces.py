@@ -508,7 +508,7 @@ def _solve_forces(structure: Structure, kins: list, bodies: MemberBodies | None,
     out = []
     for j, (Re, Fa_perp, Fb_perp, ext, _) in enumerate(loads):
         t = 0.5 * Re                   # members between two fixed nodes: symmetric split
-        t[:, pattern.loaded_idx] = tl[..., j]
+        t[:, pattern.loaded_cols] = tl[..., j]
         # F_a and F_b written into the (t, m, 2, 3) end forces, each component of each end
         # stored contiguously (trussfe.vectors)
         end_force = np.empty((3, 2) + t.shape).transpose(2, 3, 1, 0)

@@ -263,7 +263,7 @@ def chord_newton(conn: np.ndarray, pattern: "_Pattern", L: np.ndarray, X: np.nda
     """
     nt = X.shape[0]
     scale = float(L.max()) if nt else 1.0
-    Lk = L[:, pattern.loaded_idx]
+    Lk = L[:, pattern.loaded_cols]
     flat = X.reshape(nt, -1)
     failed = (X, np.zeros(nt, dtype=bool))
     spans = contiguous_spans(nt, min(worker_count(), nt // min_chunk_steps))
@@ -288,7 +288,7 @@ def chord_newton(conn: np.ndarray, pattern: "_Pattern", L: np.ndarray, X: np.nda
         """The bar lengths of a chunk's steps and the misfit of the loaded bars."""
         a, b = ab
         now = lengths(member_vectors(X[a:b], conn))
-        return now, now[:, pattern.loaded_idx] - Lk[a:b]
+        return now, now[:, pattern.loaded_cols] - Lk[a:b]
 
     local = solver = None
     current = None                    # the bar lengths of the final positions, if known
@@ -364,6 +364,11 @@ class _Pattern:
         # fixed nodes takes no part in the kinematics or in the global equilibrium.
         self.loaded = np.any(cols >= 0, axis=1)
         self.loaded_idx = np.flatnonzero(self.loaded)
+        # the loaded members as a slice when they are contiguous (every member, in a model
+        # without bars between supports): their columns are then views, not copies
+        li = self.loaded_idx
+        self.loaded_cols = (slice(int(li[0]), int(li[-1]) + 1)
+                            if li.size and li[-1] - li[0] + 1 == li.size else li)
         cols = cols[self.loaded]
         self.m, self.dim, self.nfree = self.loaded_idx.size, dim, self.free_flat.size
         keep = cols.ravel() >= 0
@@ -400,7 +405,7 @@ def _solve_compat(structure: Structure, pattern: _Pattern, solver: CompatSolver,
     components stored first (:mod:`trussfe.vectors`)."""
     nt, n, dim = rhs.shape[0], structure.n_nodes, structure.dim
     try:
-        free = solver.solve(rhs[:, pattern.loaded_idx])
+        free = solver.solve(rhs[:, pattern.loaded_cols])
     except SingularStep as s:
         raise AnalysisError(f"motion: step {s.step}", "the assembly is at a singular position "
                             "(its compatibility matrix is rank deficient): its velocities and "
