@@ -173,3 +173,26 @@ def test_shared_map_keeps_order_and_raises_the_first_failure():
                 threads.parallel_map(work, range(8))
             assert set(range(4)) <= set(seen) and len(seen) == len(set(seen))
             assert not {6, 7} <= set(seen)
+
+
+def test_shared_map_raises_an_interrupt_before_an_error():
+    """An interrupt that ends one item is what the map raises, also when an earlier item
+    failed with an ordinary error."""
+    import threading
+
+    def work(x):
+        if x == 0:
+            both.wait(5.0)                   # item 1 runs too before item 0 fails
+            raise ValueError("item 0")
+        both.set()
+        raise KeyboardInterrupt
+
+    with threads.compute_threads(workers=2, blas=None):
+        for _ in range(10):
+            both = threading.Event()
+            try:
+                threads.parallel_map(work, range(2))
+            except KeyboardInterrupt:
+                pass
+            else:                                      # pragma: no cover
+                raise AssertionError("no interrupt raised")

@@ -154,7 +154,8 @@ def _shared_map(pool: ThreadPoolExecutor, n: int, fn: Callable[[T], R], items: l
 
     After a failure no further item is taken; the items taken before it finish, and the
     exception of the first failing item in the items' order is raised (every item before it
-    was taken before it, so that is the same item whatever the timing)."""
+    was taken before it, so that is the same item whatever the timing) — or an interrupt
+    (``KeyboardInterrupt``, ``SystemExit``) if one ended an item."""
     results: list = [None] * len(items)
     errors: list = [None] * len(items)
     queue = iter(range(len(items)))
@@ -176,9 +177,10 @@ def _shared_map(pool: ThreadPoolExecutor, n: int, fn: Callable[[T], R], items: l
     run()
     for h in helpers:
         h.result()
-    for exc in errors:
-        if exc is not None:
-            raise exc
+    raised = [exc for exc in errors if exc is not None]
+    if raised:
+        # an interrupt or exit first, else the first failing item's error
+        raise next((exc for exc in raised if not isinstance(exc, Exception)), raised[0])
     return results
 
 

@@ -129,7 +129,7 @@ class NodalForces:
 def _to_nodes(conn: np.ndarray, n: int, at_start: np.ndarray, at_end: np.ndarray,
               nodes: np.ndarray | None = None) -> np.ndarray:
     """Sum member-end vectors (t, m, 3) into their nodes, (t, n, 3), or (t, len(nodes), 3)
-    for the given nodes only; the result's components are stored first
+    for the given (distinct) nodes only; the result's components are stored first
     (:mod:`trussfe.vectors`).
 
     Each node's sum runs over its member ends in one fixed order — its members' start ends
