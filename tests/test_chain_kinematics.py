@@ -170,3 +170,16 @@ def test_steps_not_reached_from_the_template_fall_back_to_continuation(bay, moti
     assert_allclose(ck.coords, ref.coords, rtol=0, atol=1e-12 * np.abs(ref.coords).max())
     assert_allclose(ck.acceleration, ref.acceleration, rtol=0,
                     atol=1e-10 * np.abs(ref.acceleration).max())
+
+
+def test_triangle_frame_origin_is_numpy_mean_to_the_last_bit():
+    """The frame's origin (Lacy eq. 6.2, the centroid) equals numpy's mean of the three nodes
+    bit for bit, on triangles of widely different scales and signs."""
+    import numpy as np
+    from trussfe.rigid.chain import triangle_frame
+    rng = np.random.default_rng(4)
+    x = rng.standard_normal((400, 3, 3)) * 10.0 ** rng.integers(-6, 6, size=(400, 3, 3))
+    o, R = triangle_frame(x)
+    np.testing.assert_array_equal(o, x.mean(axis=-2))
+    np.testing.assert_allclose(np.einsum("tji,tjk->tik", R, R), np.broadcast_to(np.eye(3),
+                               R.shape), atol=1e-12)

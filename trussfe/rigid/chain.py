@@ -102,7 +102,9 @@ def triangle_frame(x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     >>> np.round(o, 4).tolist(), np.allclose(R, np.eye(3))
     ([0.3333, 0.3333, 0.0], True)
     """
-    o = x.mean(axis=-2)
+    # the centroid as numpy's mean adds it, (x0 + x1) + x2 over 3, without its reduction
+    # machinery (a third of this function's time on a few hundred steps)
+    o = (x[..., 0, :] + x[..., 1, :] + x[..., 2, :]) / 3.0
     u = x[..., 1, :] - x[..., 0, :]
     w = cross(u, x[..., 2, :] - x[..., 0, :])
     e1 = u / np.linalg.norm(u, axis=-1, keepdims=True)
