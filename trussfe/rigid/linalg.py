@@ -300,9 +300,9 @@ class _BlockInverses:
 
     Blocks of one size are inverted by batched LAPACK calls (a large stack split between
     worker threads: a contiguous group of whole blocks each, or a piece of the steps each when
-    the blocks are fewer than the threads); a step is singular when any of its diagonal blocks has a reciprocal
-    condition number (Frobenius norms) below :data:`SINGULAR_RCOND` — B is singular exactly
-    when one of its diagonal blocks is.
+    the blocks are fewer than the threads); a step is singular when any of its diagonal
+    blocks has a reciprocal condition number (Frobenius norms) below :data:`SINGULAR_RCOND` —
+    B is singular exactly when one of its diagonal blocks is.
     """
 
     def __init__(self, form: BlockTriangularForm, vals: np.ndarray):
