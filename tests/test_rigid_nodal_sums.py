@@ -39,7 +39,7 @@ def test_nodal_sums_equal_the_incidence_product():
 
 
 def test_nodal_sums_of_another_connectivity_of_the_same_size_and_components_first():
-    """The node grouping is kept by the connectivity's content: a second connectivity of the
+    """The nodal-sum plan is kept by the connectivity's content: a second connectivity of the
     same shape (members reversed, shuffled) sums by its own grouping, and member-end vectors
     stored components first (trussfe.vectors) give the same sums to the last bit."""
     from trussfe.vectors import components_first, is_components_first
