@@ -111,3 +111,22 @@ def test_cross_and_lengths_equal_numpy():
         v = a[..., :width] * 1e3
         assert np.array_equal(lengths(v), np.linalg.norm(v, axis=-1))
     assert np.array_equal(lengths(a[:, :, None]), np.linalg.norm(a[:, :, None], axis=-1))
+
+
+def test_pattern_is_kept_with_the_model():
+    """The compatibility pattern of a model is made once (read-only arrays) and kept while
+    the model exists; a model with other supports gets its own."""
+    import gc
+    import weakref
+    s = double_octahedral_chain(2)
+    p = _Pattern.of(s)
+    assert _Pattern.of(s) is p and not p.rows.flags.writeable
+    sup = s.supports.copy()
+    sup[3] = True                                   # one more supported node
+    other = s.variant(supports=sup)
+    q = _Pattern.of(other)
+    assert q is not p and q.nfree == p.nfree - 3
+    ref = weakref.ref(other)
+    del other, q
+    gc.collect()
+    assert ref() is None

@@ -186,3 +186,27 @@ def test_bay_lengths_take_each_bay_active_member_from_its_motion_column():
             np.testing.assert_array_equal(L[:, b, a], model[k])
             assert not Ld[:, b, a].any() and not Ldd[:, b, a].any()
     assert np.isin(acts[0], cols) and not np.isin(acts[0], members)
+
+
+def test_chain_layout_is_kept_with_the_model():
+    """A model's layout is found once and kept while the model exists (read-only arrays); a
+    changed model (another object) gets its own, and a non-chain is still refused."""
+    import gc
+    import weakref
+    from trussfe.rigid import bays
+    from trussfe.studies.lacy_rigid import double_octahedral_chain
+    chain = double_octahedral_chain(3)
+    first = chain_layout(chain)
+    assert chain_layout(chain) is first
+    assert not first.nodes.flags.writeable and not first.members.flags.writeable
+    moved = chain.variant(coords=chain.coords * 2.0)
+    other = chain_layout(moved)
+    assert other is not first and np.array_equal(other.nodes, first.nodes)
+    ref = weakref.ref(moved)
+    del moved, other
+    gc.collect()
+    assert ref() is None                                   # the kept layout does not hold it
+    bent = chain.coords.copy()
+    bent[-1] += [0.1, 0.0, 0.0]                            # the last bay no longer a copy
+    with pytest.raises(InputError, match="not a copy"):
+        chain_layout(chain.variant(coords=bent))

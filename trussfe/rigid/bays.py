@@ -36,6 +36,8 @@ nodes belongs to the first bay's force analysis.
 """
 from __future__ import annotations
 
+import threading
+import weakref
 from dataclasses import dataclass
 from itertools import permutations
 
@@ -115,11 +117,33 @@ def _distances(structure: Structure, ground: np.ndarray) -> np.ndarray:
 def chain_layout(structure: Structure) -> ChainLayout:
     """Find the bays of a chain model (module docstring: which models are chains).
 
+    The layout is kept with the model (a :class:`~trussfe.model.structure.Structure` never
+    changes, so it cannot go stale) for its later analyses: finding it searches the bays one
+    after another, about 0.12 ms per bay.
+
     Raises
     ------
     InputError
         The model is not a chain of identical bays, saying why.
     """
+    with _LAYOUTS_LOCK:
+        layout = _LAYOUTS.get(structure)
+    if layout is None:
+        layout = _find_layout(structure)
+        for a in (layout.nodes, layout.members, layout.ground_members):
+            a.setflags(write=False)              # shared by every later analysis
+        with _LAYOUTS_LOCK:
+            _LAYOUTS[structure] = layout
+    return layout
+
+
+#: The layouts of the chain models analysed, while the models exist (:func:`chain_layout`).
+_LAYOUTS: weakref.WeakKeyDictionary[Structure, ChainLayout] = weakref.WeakKeyDictionary()
+_LAYOUTS_LOCK = threading.Lock()
+
+
+def _find_layout(structure: Structure) -> ChainLayout:
+    """:func:`chain_layout`, searched."""
     if structure.dim != 3:
         raise _not_a_chain(structure, "the model is planar")
     sup = structure.translation_supports

@@ -217,7 +217,7 @@ def _batched_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, *,
     from .kinematics import _Pattern, chord_newton
 
     N = L.shape[0]
-    pattern = _Pattern(bay)
+    pattern = _Pattern.of(bay)
     X = np.broadcast_to(x0, (N,) + x0.shape[-2:]).copy()      # one guess, or one per step
     if pattern.m != pattern.nfree or N == 0:
         return X, np.zeros(N, dtype=bool)
@@ -278,7 +278,7 @@ def bay_positions(bay: Structure, L: np.ndarray, item: str = "bay",
         # the node velocities B ṗ = L̇ at every coarse step of every history, in one solve
         from .kinematics import _Pattern
         from .linalg import CompatSolver, SingularStep
-        pattern = _Pattern(bay)
+        pattern = _Pattern.of(bay)
         vel = np.zeros((nb * idx.size, n * 3))
         e, _ = unit_vectors(member_vectors(coarse.reshape(-1, n, 3), bay.connectivity))
         try:

@@ -339,7 +339,7 @@ def _check_model(structure: Structure) -> _Pattern:
                             "pin-jointed bars only; member "
                             f"'{structure.member_ids[int(np.flatnonzero(structure.is_beam)[0])]}'"
                             " is a beam")
-    pattern = _Pattern(structure)
+    pattern = _Pattern.of(structure)
     if pattern.m != pattern.nfree:
         raise AnalysisError(structure.source or structure.name, _count_message(pattern))
     return pattern

@@ -27,6 +27,8 @@ All vectors are stored in 3-D (the z component is zero for planar trusses), arra
 from __future__ import annotations
 
 import logging
+import threading
+import weakref
 from collections import deque
 from dataclasses import dataclass
 
@@ -151,7 +153,7 @@ def solve_motion_positions(structure: Structure, motion: Motion,
     L = _member_lengths(structure, motion)
     x0 = np.array(structure.coords if coords0 is None else coords0, dtype=float)
     nt = motion.n_steps
-    pattern = _Pattern(structure)
+    pattern = _Pattern.of(structure)
     if nt > BATCH_MIN_STEPS and pattern.m == pattern.nfree:
         # Follow the branch on a coarse subset of steps, then polish every step at once.
         idx = np.unique(np.linspace(0, nt - 1, COARSE_STEPS).round().astype(int))
@@ -183,7 +185,7 @@ def _sequential_positions(structure, motion, L, x0, steps, progress) -> np.ndarr
     fixed = structure.translation_supports
     # Members between two fixed nodes neither move nor constrain: leaving them out keeps the
     # Newton system square (sparse LU instead of least squares).
-    keep = _Pattern(structure).loaded_idx
+    keep = _Pattern.of(structure).loaded_idx
     conn = structure.connectivity[keep]
     ids = [structure.member_ids[i] for i in keep]
     x = x0
@@ -343,7 +345,26 @@ def accepted_positions(X: np.ndarray, guess: np.ndarray, L: np.ndarray, conn: np
 
 
 class _Pattern:
-    """Sparsity pattern of B restricted to the free coordinates (same at every step)."""
+    """Sparsity pattern of B restricted to the free coordinates (same at every step).
+
+    :meth:`of` keeps one per model while the model exists (a
+    :class:`~trussfe.model.structure.Structure` never changes): every block of steps of an
+    analysis asks for it.
+    """
+
+    @classmethod
+    def of(cls, structure: Structure) -> _Pattern:
+        """The pattern of ``structure``, made once (read-only arrays, shared)."""
+        with _PATTERNS_LOCK:
+            pattern = _PATTERNS.get(structure)
+        if pattern is None:
+            pattern = cls(structure)
+            for value in vars(pattern).values():
+                if isinstance(value, np.ndarray):
+                    value.setflags(write=False)
+            with _PATTERNS_LOCK:
+                _PATTERNS[structure] = pattern
+        return pattern
 
     def __init__(self, structure: Structure):
         dim = structure.dim
@@ -397,6 +418,11 @@ class _Pattern:
                                    (self.m, 2, self.dim)).ravel()[self.keep]
             cache[du] = (src, sign)
         return cache[du]
+
+
+#: The patterns of the models analysed, while the models exist (:meth:`_Pattern.of`).
+_PATTERNS: weakref.WeakKeyDictionary[Structure, _Pattern] = weakref.WeakKeyDictionary()
+_PATTERNS_LOCK = threading.Lock()
 
 
 def _solve_compat(structure: Structure, pattern: _Pattern, solver: CompatSolver,
@@ -470,7 +496,7 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     if scheme not in ("exact", "thesis"):
         raise AnalysisError("scheme", f"unknown kinematics scheme {scheme!r}; use 'exact' or "
                             "'thesis'")
-    pattern = _Pattern(structure)
+    pattern = _Pattern.of(structure)
     if pattern.m != pattern.nfree:
         raise AnalysisError(structure.source or structure.name, _count_message(pattern))
     X = (solve_motion_positions(structure, motion, progress=progress) if coords is None

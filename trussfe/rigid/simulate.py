@@ -267,7 +267,7 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
         # and the blocks use slices of it.
         starts = range(0, nt, step)
         bar = _Counter(progress, len(starts)) if progress is not None else None
-        pattern = _Pattern(structure)
+        pattern = _Pattern.of(structure)
         # A direct (stacked-inverse) pattern is cheapest with the kinematics of the whole
         # motion at once (its stacked inverses and block substitutions are split over the
         # steps between the worker threads inside), the rest in blocks of steps in the
