@@ -59,6 +59,18 @@ def test_take_equals_numpy_take_in_either_layout(axis):
                           np.take(a, two, axis=axis))
 
 
+def test_take_of_a_block_of_steps_gathers_component_by_component():
+    """A block of steps of a components-first array (its components no longer one
+    contiguous block) is gathered component by component, with the same numbers as numpy's
+    take, and the result's components stored first."""
+    a = components_first(rng.standard_normal((30, 40, 3)))[5:20]
+    assert not np.moveaxis(a, -1, 0).flags.c_contiguous
+    idx = rng.integers(0, 40, 25)
+    got = take(a, idx, axis=1)
+    assert np.array_equal(got, np.take(np.ascontiguousarray(a), idx, axis=1))
+    assert is_components_first(got)
+
+
 def test_member_vectors_and_lengths_of_a_components_first_field():
     x = rng.standard_normal((20, 12, 3))
     conn = rng.integers(0, 12, (30, 2))

@@ -42,11 +42,19 @@ def is_components_first(a: np.ndarray) -> bool:
 
 
 def take(a: np.ndarray, indices: np.ndarray, axis: int) -> np.ndarray:
-    """``numpy.take(a, indices, axis)`` of a vector array (..., c), component by component
-    when its components are stored first (the result's are too): numpy's ``take`` copies a
-    strided array whole before gathering from it."""
-    axis = axis % a.ndim
-    if not is_components_first(a) or axis == a.ndim - 1 or np.ndim(indices) != 1:
+    """``numpy.take(a, indices, axis)`` of a vector array (..., c), its result's components
+    stored first when ``a``'s are: one gather when they form one contiguous block, else
+    component by component (numpy's ``take`` copies a strided array whole before gathering
+    from it)."""
+    nd = a.ndim
+    axis = axis % nd
+    if nd >= 2 and axis != nd - 1 and a.shape[-1] > 1 and np.ndim(indices) == 1:
+        first = a.transpose((nd - 1,) + tuple(range(nd - 1)))     # (c, ...), a view
+        if first.flags.c_contiguous:
+            # all the components in one contiguous block: one gather, stored so too
+            return np.take(first, indices, axis=axis + 1).transpose(tuple(range(1, nd))
+                                                                    + (0,))
+    if not is_components_first(a) or axis == nd - 1 or np.ndim(indices) != 1:
         return np.take(a, indices, axis=axis)
     shape = list(a.shape)
     shape[axis] = np.size(indices)

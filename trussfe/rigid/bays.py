@@ -36,8 +36,6 @@ nodes belongs to the first bay's force analysis.
 """
 from __future__ import annotations
 
-import threading
-import weakref
 from dataclasses import dataclass
 from itertools import permutations
 
@@ -46,6 +44,7 @@ import scipy.sparse as sp
 import scipy.sparse.csgraph as csg
 
 from ..errors import InputError
+from ..model.derived import kept
 from ..model.structure import Structure
 from .active import active_members
 from .chain import chain_positions, triangle_frame
@@ -117,29 +116,16 @@ def _distances(structure: Structure, ground: np.ndarray) -> np.ndarray:
 def chain_layout(structure: Structure) -> ChainLayout:
     """Find the bays of a chain model (module docstring: which models are chains).
 
-    The layout is kept with the model (a :class:`~trussfe.model.structure.Structure` never
-    changes, so it cannot go stale) for its later analyses: finding it searches the bays one
-    after another, about 0.12 ms per bay.
+    The layout is kept with the model for its later analyses
+    (:func:`~trussfe.model.derived.kept`): finding it searches the bays one after another,
+    about 0.12 ms per bay.
 
     Raises
     ------
     InputError
         The model is not a chain of identical bays, saying why.
     """
-    with _LAYOUTS_LOCK:
-        layout = _LAYOUTS.get(structure)
-    if layout is None:
-        layout = _find_layout(structure)
-        for a in (layout.nodes, layout.members, layout.ground_members):
-            a.setflags(write=False)              # shared by every later analysis
-        with _LAYOUTS_LOCK:
-            _LAYOUTS[structure] = layout
-    return layout
-
-
-#: The layouts of the chain models analysed, while the models exist (:func:`chain_layout`).
-_LAYOUTS: weakref.WeakKeyDictionary[Structure, ChainLayout] = weakref.WeakKeyDictionary()
-_LAYOUTS_LOCK = threading.Lock()
+    return kept(structure, "chain layout", _find_layout)
 
 
 def _find_layout(structure: Structure) -> ChainLayout:

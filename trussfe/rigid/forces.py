@@ -40,7 +40,7 @@ from ..model.structure import Structure
 from .active import active_members
 from .kinematics import Kinematics, _count_message, _Pattern, pad3
 from .linalg import SingularStep, batched_solve
-from ..vectors import components_first, cross, dot, take
+from ..vectors import components_first, cross, dot, empty_vectors, take
 
 
 @dataclass
@@ -139,32 +139,20 @@ def _to_nodes(conn: np.ndarray, n: int, at_start: np.ndarray, at_end: np.ndarray
     end ends, a few passes of the node degree in all (:class:`_NodeSums`).
     """
     plan = _node_sums(conn, n, nodes)
-    nt = at_start.shape[0]
-    # components first: (c, t, m) arrays whose components are each contiguous
-    starts, ends = (np.moveaxis(components_first(a), -1, 0) for a in (at_start, at_end))
-    acc = np.full((at_start.shape[-1], nt, plan.size), -0.0)
+    starts, ends = components_first(at_start), components_first(at_end)
+    acc = empty_vectors((at_start.shape[0], plan.size, at_start.shape[-1]))
+    acc[...] = -0.0
     for sides, cols, counts, reorder in ((starts, plan.start_cols, plan.start_counts, None),
                                          (ends, plan.end_cols, plan.end_counts,
                                           plan.to_end_order)):
         if reorder is not None:
-            acc = np.take(acc, reorder, axis=2)
+            acc = take(acc, reorder, axis=1)
         for col, c in zip(cols, counts):
-            acc[:, :, :c] += _gather(sides, col)
-    acc = np.take(acc, plan.to_nodes, axis=2)
+            acc[:, :c] += take(sides, col, axis=1)
+    acc = take(acc, plan.to_nodes, axis=1)
     if plan.isolated.size:
-        acc[:, :, plan.isolated] = 0.0               # no end: an empty sum
-    return np.moveaxis(acc, 0, -1)
-
-
-def _gather(a: np.ndarray, cols: np.ndarray) -> np.ndarray:
-    """``a[:, :, cols]`` of a (c, t, m) array: one gather when ``a`` is contiguous, else one
-    per component (numpy's take would first copy a strided array whole)."""
-    if a.flags.c_contiguous:
-        return np.take(a, cols, axis=2)
-    out = np.empty(a.shape[:2] + (cols.size,))
-    for c in range(a.shape[0]):
-        np.take(a[c], cols, axis=1, out=out[c])
-    return out
+        acc[:, plan.isolated] = 0.0                  # no end: an empty sum
+    return acc
 
 
 @dataclass(frozen=True)

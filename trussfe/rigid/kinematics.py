@@ -27,8 +27,6 @@ All vectors are stored in 3-D (the z component is zero for planar trusses), arra
 from __future__ import annotations
 
 import logging
-import threading
-import weakref
 from collections import deque
 from dataclasses import dataclass
 
@@ -39,6 +37,7 @@ import numpy as np
 from ..errors import AnalysisError
 from ..kinematics.assembly import solve_positions
 from ..mechanics.geometry import lengths, member_vectors, unit_vectors
+from ..model.derived import kept
 from ..model.structure import Structure
 from ..threads import block_steps, contiguous_spans, parallel_map, worker_count
 from .linalg import ANCHOR_SPACING, CompatSolver, SingularStep, is_direct
@@ -347,24 +346,14 @@ def accepted_positions(X: np.ndarray, guess: np.ndarray, L: np.ndarray, conn: np
 class _Pattern:
     """Sparsity pattern of B restricted to the free coordinates (same at every step).
 
-    :meth:`of` keeps one per model while the model exists (a
-    :class:`~trussfe.model.structure.Structure` never changes): every block of steps of an
-    analysis asks for it.
+    :meth:`of` keeps one with each model (every block of steps of an analysis asks for it).
     """
 
     @classmethod
     def of(cls, structure: Structure) -> _Pattern:
-        """The pattern of ``structure``, made once (read-only arrays, shared)."""
-        with _PATTERNS_LOCK:
-            pattern = _PATTERNS.get(structure)
-        if pattern is None:
-            pattern = cls(structure)
-            for value in vars(pattern).values():
-                if isinstance(value, np.ndarray):
-                    value.setflags(write=False)
-            with _PATTERNS_LOCK:
-                _PATTERNS[structure] = pattern
-        return pattern
+        """The pattern of ``structure``, made once and kept with it
+        (:func:`~trussfe.model.derived.kept`; read-only arrays, shared)."""
+        return kept(structure, "rigid compatibility pattern", cls)
 
     def __init__(self, structure: Structure):
         dim = structure.dim
@@ -418,11 +407,6 @@ class _Pattern:
                                    (self.m, 2, self.dim)).ravel()[self.keep]
             cache[du] = (src, sign)
         return cache[du]
-
-
-#: The patterns of the models analysed, while the models exist (:meth:`_Pattern.of`).
-_PATTERNS: weakref.WeakKeyDictionary[Structure, _Pattern] = weakref.WeakKeyDictionary()
-_PATTERNS_LOCK = threading.Lock()
 
 
 def _solve_compat(structure: Structure, pattern: _Pattern, solver: CompatSolver,
