@@ -15,7 +15,7 @@ The halves are cut on the points, the separators are chosen on the unknowns: of 
 unknown pair coupled across a cut, one unknown joins the separator, and only the
 components a member couples do (a bar along x couples the x translations of its ends
 only).  For each cut the separator is the side with fewer such unknowns.  On a
-square-on-square space grid of 180 × 180 cells (195,471 unknowns) this takes 0.06 s and
+square-on-square space grid of 180 × 180 cells (195,471 unknowns) this takes 0.046 s and
 gives PARDISO a factor of 21.8 million entries (7.8 GFlop) where MKL's nested dissection
 of the same matrix, ~0.4 s, gives 22.6 million (8.0 GFlop); at 410 × 410 (10⁶ unknowns),
 0.4 s and 137 million entries (91 GFlop) against ~3 s and 145 million (106 GFlop).  A
@@ -80,13 +80,15 @@ def _region_bits(coords: np.ndarray, depth: int) -> np.ndarray:
     points are kept in one order per axis, sorted by region and, within a region, by that
     coordinate: a region's extent is read at its ends, and each cut is a stable partition
     of the orders (no sort after the first: 0.22 s instead of 0.45 s for the 337,000 joints
-    of a 410 × 410 space grid).
+    of a 410 × 410 space grid), and a region's values reach its points by repetition
+    (``numpy.repeat``), not by a gather (0.14 s instead of 0.20 s).
     """
     g, d = coords.shape
     it = np.int32 if g < 2**31 else np.int64
     orders = np.empty((d, g), dtype=it)
     for a in range(d):
         orders[a] = np.argsort(coords[:, a], kind="stable")
+    flat = orders.reshape(-1)
     bits = np.zeros(g, dtype=np.int64)
     pos = np.arange(g, dtype=it)
     side = np.empty(g, dtype=np.int8)
@@ -94,15 +96,18 @@ def _region_bits(coords: np.ndarray, depth: int) -> np.ndarray:
     for level in range(depth):
         nr = 1 << level
         bounds = (np.arange(nr + 1) * g) // nr
-        region = np.repeat(np.arange(nr, dtype=it), np.diff(bounds))
+        counts = np.diff(bounds)
         first, last = bounds[:-1], np.maximum(bounds[1:] - 1, bounds[:-1])
         extent = np.stack([coords[orders[a, last], a] - coords[orders[a, first], a]
                            for a in range(d)], axis=1)
         axis = np.argmax(extent, axis=1)
         middle = ((2 * np.arange(nr) + 1) * g) // (2 * nr)
-        first_at = first.astype(it)[region]
-        middle_at = middle.astype(it)[region]
-        side[orders[axis[region], pos]] = pos >= middle_at
+        # a region's values spread over its positions by repetition, not a gather: the
+        # regions are contiguous runs of the orders
+        middle_at = np.repeat(middle.astype(it), counts)
+        at = np.repeat((axis * g).astype(it), counts)       # the cut axis's order, flat
+        at += pos
+        side[flat[at]] = pos >= middle_at
         bits <<= 1
         bits |= side
         for a in range(d):
@@ -110,7 +115,7 @@ def _region_bits(coords: np.ndarray, depth: int) -> np.ndarray:
             s = side[orders[a]]
             ones = np.cumsum(s, dtype=it)
             ones -= s                                  # upper points before, in the order
-            ones -= ones[first_at]                     # ... within the region
+            ones -= np.repeat(ones[first], counts)     # ... within the region
             new = np.where(s.astype(bool), middle_at + ones, pos - ones)
             scratch[new] = orders[a]
             orders[a] = scratch
@@ -164,9 +169,10 @@ def nested_dissection(indptr: np.ndarray, indices: np.ndarray, points: Points,
     # int32 where it fits: the pass over the matrix's entries moves half the memory
     it = np.int32 if max(n, 1 << depth) < 2**31 else np.int64
     region = _region_bits(coords, depth).astype(it)[point]           # (n,)
-    rows = np.repeat(np.arange(n, dtype=it), np.diff(indptr))
+    counts = np.diff(indptr)
+    rows = np.repeat(np.arange(n, dtype=it), counts)
     cols = np.asarray(indices).astype(it, copy=False)
-    differ = region[rows]
+    differ = np.repeat(region, counts)               # region[rows], by repetition
     differ ^= region[cols]
     cut = np.flatnonzero(differ)                                     # pairs across a cut
     r, c = rows[cut].astype(np.int64), cols[cut].astype(np.int64)
@@ -204,4 +210,5 @@ def nested_dissection(indptr: np.ndarray, indices: np.ndarray, points: Points,
     # last region below it, and after its descendants with the same last region
     shift = depth - sep_level
     last = (((region >> shift) + 1) << shift) - 1
-    return np.lexsort((shift, last))
+    # one stable sort of (last, shift) packed in one integer: a third faster than lexsort
+    return np.argsort((last << int(depth).bit_length()) | shift, kind="stable")
