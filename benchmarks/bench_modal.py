@@ -16,6 +16,7 @@ Target (docs/performance.md): 10,000 bays (180,000 DOFs) in ≤ 1.0 s for the ei
 from __future__ import annotations
 
 import argparse
+import json
 import os
 import sys
 import time
@@ -119,7 +120,10 @@ def main(argv=None) -> None:
     ap.add_argument("--grid", type=int, default=180)
     ap.add_argument("--modes", type=int, default=10)
     ap.add_argument("--no-opensees", action="store_true")
+    ap.add_argument("--json", metavar="PATH",
+                    help="also write the table's rows to PATH as JSON (bench_targets.py)")
     a = ap.parse_args(argv)
+    rows = []
     cases = [(f"chain {b}", lambda b=b: octahedral_chain(b)) for b in a.bays]
     if a.grid:
         cases.append((f"grid {a.grid}", lambda: space_grid(a.grid)))
@@ -140,10 +144,23 @@ def main(argv=None) -> None:
               f"{ops[1]['eigen'] if ops else float('nan'):>14.3f}s "
               f"{ops[1]['residual'] if ops else float('nan'):>14.1e} {diff:>11.2e} "
               f"{f[0]:>12.6g} {f[-1]:>12.6g}{flag}", flush=True)
+        total = t["discretise"] + t["assemble+eigen"]
+        rows.append({"model": name, "dof": int(r.fe.free.size), "modes": a.modes,
+                     "discretise": t["discretise"], "assemble_eigen": t["assemble+eigen"],
+                     "total": total, "cpu": t["cpu"], "residual": res,
+                     "resolved": res <= RESOLVED_RESIDUAL,
+                     "reference": "OpenSeesPy -genBandArpack" if ops else None,
+                     "reference_s": ops[1]["eigen"] if ops else None,
+                     "reference_residual": ops[1]["residual"] if ops else None,
+                     "speed_up": ops[1]["eigen"] / total if ops else None,
+                     "max_frequency_difference": diff if ops else None})
     print(f"\nresidual: max over the modes of ‖Kφ − ω²Mφ‖ / (ω²‖Mφ‖) with trussfe's K and M; "
           f"above {RESOLVED_RESIDUAL} a mode is not resolved in double precision "
           "(trussfe modes refuses it).")
     print(blas_note())
+    if a.json:
+        Path(a.json).write_text(json.dumps(
+            {"rows": rows, "blas": None if a.no_opensees else blas_note()}, indent=1))
 
 
 if __name__ == "__main__":

@@ -28,6 +28,7 @@ Run from the source tree: ``PYTHONPATH=$PWD python benchmarks/bench_rigid.py [--
 from __future__ import annotations
 
 import argparse
+import json
 import os
 import time
 
@@ -154,6 +155,8 @@ def main() -> None:
                     help="turn off numpy's transparent-huge-page advice for its arrays (the "
                          "trussfe command keeps it); shows what it costs repeated runs in "
                          "one process")
+    ap.add_argument("--json", metavar="PATH",
+                    help="also write the table's rows to PATH as JSON (bench_targets.py)")
     args = ap.parse_args()
     if args.no_numpy_hugepages:
         np._core.multiarray._set_madvise_hugepage(False)
@@ -236,9 +239,16 @@ def main() -> None:
           f"{'cpu s':>8s} {'target s':>9s} {'us/(bay*step)':>14s} {'dense-117 loop s':>17s} "
           f"{'speed-up':>9s} {'all-out wall s':>15s} {'cpu s':>8s} {'speed-up':>9s} "
           f"{'result GB':>10s}")
+    table = []
     for name, meth, mm, nb, n, tt, cpu, tt_all, cpu_all, ratio, solves, size in rows:
         r = dense.per_solve * solves
         target = r / ratio
+        table.append({"case": name, "method": meth, "members": mm, "bays": nb, "steps": n,
+                      "wall": tt, "cpu": cpu, "target_s": target,
+                      "us_per_bay_step": 1e6 * tt / (n * nb), "reference": "dense-117 loop",
+                      "reference_s": r, "speed_up": r / tt, "all_out_wall": tt_all,
+                      "all_out_speed_up": r / tt_all, "target_ratio": ratio,
+                      "result_gb": size / 1e9})
         print(f"{name:30s} {meth:>10s} {mm:8d} {n:7d} {tt:8.3f} {cpu:8.3f} {target:9.3f} "
               f"{1e6 * tt / (n * nb):14.2f} {r:17.3f} {r / tt:9.1f} {tt_all:15.3f} "
               f"{cpu_all:8.3f} {r / tt_all:9.1f} {size / 1e9:10.2f}")
@@ -260,6 +270,13 @@ def main() -> None:
     if agreement is not None:
         print(f"member forces of the {agreement[0]}-bay chain, bay-by-bay against direct: "
               f"largest difference {agreement[1]:.1e} of the largest force")
+    if args.json:
+        with open(args.json, "w") as fh:
+            json.dump({"rows": table, "workers": worker_count(),
+                       "dense_per_solve_us": [float(t) for t in times],
+                       "agreement": None if agreement is None else
+                       {"bays": agreement[0], "relative_difference": agreement[1]}},
+                      fh, indent=1)
 
 
 if __name__ == "__main__":

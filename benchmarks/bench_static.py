@@ -36,6 +36,7 @@ from __future__ import annotations
 import argparse
 import ctypes
 import gc
+import json
 import os
 import resource
 import sys
@@ -183,6 +184,8 @@ def main() -> None:
     ap.add_argument("--only", nargs="+", metavar="TEXT",
                     help="run only the models whose name contains one of these, e.g. "
                          "--only 10000 180x180")
+    ap.add_argument("--json", metavar="PATH",
+                    help="also write the table's rows to PATH as JSON (bench_targets.py)")
     args = ap.parse_args()
     repeat = max(1, args.repeat)
     chains = [10, 100, 1000, 10_000] + ([100_000] if args.large else [])
@@ -196,6 +199,7 @@ def main() -> None:
             f"{'speed-up':>9}{'max |dN| N':>12}{'peak MiB':>10}")
     print(head)
     print("-" * len(head))
+    rows = []
     for name, build in cases:
         s = runs = r = o = None          # the previous model's memory goes before the next
         gc.collect()
@@ -221,6 +225,17 @@ def main() -> None:
         print(f"{name:<20}{r['dof']:>9}{r['read']:9.3f}{r['assemble']:11.3f}{r['solve']:9.3f}"
               f"{r['total']:9.3f}{r['cpu']:8.2f}{r['residual']:10.1e}{r['backend']:>10}{ops_t}"
               f"{ratio}{dn}{peak:10.0f}", flush=True)
+        ok = bool(o and o["ok"])
+        rows.append({"model": name, "dof": r["dof"],
+                     **{k: r[k] for k in ("read", "assemble", "solve", "total", "cpu",
+                                          "residual", "backend")},
+                     "reference": "OpenSeesPy" if ok else None,
+                     "reference_s": o["total"] if ok else None,
+                     "speed_up": o["total"] / r["total"] if ok else None,
+                     "max_force_difference": (float(np.max(np.abs(o["forces"] - r["forces"])))
+                                              if ok else None),
+                     "max_force": float(np.max(np.abs(r["forces"]))),
+                     "peak_mib": peak})
     print(f"\nmachine: {os.cpu_count()} cores; OpenSeesPy timed as model build + analyze(1); "
           "cpu = process time of read + assemble + solve; backend = the solver 'auto' picks; "
           "speed-up = OpenSees s / total s; peak MiB = resident high-water mark of trussfe's "
@@ -228,6 +243,10 @@ def main() -> None:
           f"fastest of {repeat} run(s) of each program.")
     if not args.no_opensees:
         print(blas_note())
+    if args.json:
+        Path(args.json).write_text(json.dumps(
+            {"rows": rows, "repeat": repeat, "cores": os.cpu_count(),
+             "blas": None if args.no_opensees else blas_note()}, indent=1))
 
 
 if __name__ == "__main__":
