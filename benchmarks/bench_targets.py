@@ -63,7 +63,7 @@ def ratio_target(label, r, need, check):
         return (label, "–", "–", "–", f"≥ {need:g}×", "not measured", check)
     took = r.get("total", r.get("wall"))
     met = r["speed_up"] >= need
-    return (label, f"{took:.3f} s", f"{r['reference_s']:.3f} s", f"{r['speed_up']:.1f}×",
+    return (label, f"{took:.3f} s", f"{r['reference_s']:.3f} s", f"{r['speed_up']:.2f}×",
             f"≥ {need:g}×", "met" if met else "not met", check)
 
 
