@@ -248,3 +248,21 @@ def test_3d_frame_with_releases_bars_and_self_weight_is_in_equilibrium():
         mom_r = np.cross(x[:4], R[:, :3]).sum(axis=0) + R[:, 3:].sum(axis=0)
         assert_allclose(mom + mom_r, 0.0, atol=1e-8 * np.abs(mom).max())
         assert abs(r.end_forces[4, 1, 4]) < 1e-9 and abs(r.end_forces[4, 1, 5]) < 1e-9
+
+
+def test_largest_per_row_is_the_nan_skipping_maximum():
+    """The members' largest von Mises stress over their stations (NaN padding past a
+    member's own stations skipped): the same values as numpy's ``fmax`` reduction over the
+    row, and ``nanmax`` where a row has a number."""
+    from trussfe.fem.static import _largest_per_row
+    rng = np.random.default_rng(7)
+    a = rng.random((200, 5))
+    a[rng.random(a.shape) < 0.3] = np.nan
+    a[3] = np.nan                                          # a row without a number
+    a[4] = 0.0                                             # ties
+    got = _largest_per_row(a)
+    assert np.array_equal(got, np.fmax.reduce(a, axis=1), equal_nan=True)
+    has = ~np.isnan(a).all(axis=1)
+    assert np.array_equal(got[has], np.nanmax(a[has], axis=1))
+    assert np.isnan(got[3])
+    assert np.array_equal(_largest_per_row(a[:, :1]), a[:, 0], equal_nan=True)

@@ -43,6 +43,7 @@ global X axis for a vertical member) made orthogonal to x; z = x × y.
 from __future__ import annotations
 
 import logging
+import weakref
 from dataclasses import dataclass
 from dataclasses import field as dc_field
 from typing import Callable
@@ -412,6 +413,11 @@ class FEModel:
         ends = [(first, conn[emem, 0], start_pt), (last, conn[emem, 1], end_pt)]
 
         self.groups: list[_Group] = []
+        # the groups build their parts through a weak reference to the model: a strong one
+        # would close a reference cycle (model → group → build → model) that only Python's
+        # cyclic collector frees, keeping the model's arrays (hundreds of MB for a large
+        # grid) alive after its last use, and the next analysis in fresh, unmapped memory
+        model = weakref.ref(self)
         for kind, sel in (("bar", ~is_frame[emem]), ("frame", is_frame[emem])):
             els = np.flatnonzero(sel)
             if els.size:
@@ -420,8 +426,8 @@ class FEModel:
                     kind=kind, elements=els, ncomp=ncomp,
                     # bars: dim P1 fields, two points per element on the exploded mesh
                     size=2 * dim * els.size if kind == "bar" else None,
-                    build=lambda kind=kind, els=els: self._group(kind, els, h[els], ends, emem,
-                                                                 released)))
+                    build=lambda kind=kind, els=els: model()._group(
+                        kind, els, h[els], ends, emem, released)))
         self.n_elements = n_el
         log.info("discretised %d members into %d elements, %d DOFs (%s model)",
                  m, n_el, self.n_dof, self.bar_model)
@@ -1047,14 +1053,17 @@ class FEModel:
         dim = self.ndim
         s = self.structure
         for g, fl in zip(self.groups, f_local):
+            # a group of every element holds them in order (increasing numbers): its rows
+            # are a slice, written without an index array
+            rows = slice(None) if g.elements.size == self.n_elements else g.elements
             if g.kind == "bar" and not np.any(fl):
                 # axial field only: end forces ∓EA/L e·(u_b − u_a) (reference_bar stiffness)
                 if g._elongation is not None:
                     # made for a truss solved from its bars (trussfe.fem.truss_band): N = k·Bu
                     B, kb = g._elongation
                     N = kb * (B @ u_global)
-                    out[g.elements, 0, 0] = -N
-                    out[g.elements, 1, 0] = N
+                    out[rows, 0, 0] = -N
+                    out[rows, 1, 0] = N
                     continue
                 mem, ends, ex, L = self._bar_geometry(g)
                 # node translations are the first n·dim global DOFs (see _build)
@@ -1063,16 +1072,16 @@ class FEModel:
                 ua = np.stack([np.einsum("ed,ed->e", ex, U[ends[:, 0]]),
                                np.einsum("ed,ed->e", ex, U[ends[:, 1]])], axis=1)
                 axial = ((s.E * s.area)[mem] / L)[:, None] * (ua @ k.T)     # (bar, end)
-                out[g.elements, :, 0] = axial
+                out[rows, :, 0] = axial
                 continue
             fe = self.local_stiffness(g) @ (g.T @ u_global) - fl
             comp = (g.S.T @ fe).reshape(g.elements.size, 2, g.ncomp)
-            out[g.elements, :, :dim] = comp[:, :, :dim]
+            out[rows, :, :dim] = comp[:, :, :dim]
             if g.kind == "frame":
                 if dim == 2:
-                    out[g.elements, :, 5] = comp[:, :, 2]
+                    out[rows, :, 5] = comp[:, :, 2]
                 else:
-                    out[g.elements, :, 3:] = comp[:, :, 3:]
+                    out[rows, :, 3:] = comp[:, :, 3:]
         return out
 
     def station_displacements(self, u_global: np.ndarray) -> np.ndarray:

