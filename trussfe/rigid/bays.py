@@ -279,8 +279,11 @@ def bay_by_bay_positions(structure: Structure, motion: Motion, layout: ChainLayo
     L, Ld, _ = bay_lengths(structure, layout, motion)
     Xc = chain_positions(layout.template, L, next_base=layout.next_base, rates=Ld,
                          time=motion.time)
+    nodes = layout.stacked_nodes()
+    if nodes.size == structure.n_nodes and np.array_equal(nodes, np.arange(nodes.size)):
+        return Xc                  # the model numbers its nodes as the stacked chain does
     X = np.zeros((motion.n_steps, structure.n_nodes, 3))
-    X[:, layout.stacked_nodes()] = Xc
+    X[:, nodes] = Xc
     return X
 
 

@@ -285,20 +285,37 @@ def chord_newton(conn: np.ndarray, pattern: "_Pattern", L: np.ndarray, X: np.nda
                             pattern.m)
         return part.gather(owner[a:b] - first)
 
-    def residual(ab):
-        """The bar lengths of a chunk's steps and the misfit of the loaded bars."""
-        a, b = ab
+    pending: list | None = None       # the last corrections, one per chunk, not yet added
+
+    def advance(j):
+        """A chunk's pending correction added to its positions (in its worker thread)."""
+        a, b = spans[j]
+        flat[a:b, pattern.free_cols] += pending[j]
+
+    def residual(j):
+        """The chunk's pending correction added, then the bar lengths of its steps, the
+        misfit of the loaded bars and its largest magnitude."""
+        a, b = spans[j]
+        if pending is not None:
+            advance(j)
         now = lengths(member_vectors(X[a:b], conn))
-        return now, now[:, pattern.loaded_cols] - Lk[a:b]
+        r = now[:, pattern.loaded_cols] - Lk[a:b]
+        return now, r, np.abs(r).max()
+
+    def correction(j):
+        """The chunk's chord-Newton correction and whether it is finite."""
+        dx = local[j].solve(-parts[j])
+        return dx, bool(np.all(np.isfinite(dx)))
 
     local = solver = None
     current = None                    # the bar lengths of the final positions, if known
     for it in range(iterations):
-        parts = parallel_map(residual, spans)
-        if max(np.abs(r).max() for _, r in parts) <= tolerance * scale:
-            current = [now for now, _ in parts]
+        parts = parallel_map(residual, range(len(spans)))
+        pending = None
+        if max(worst for _, _, worst in parts) <= tolerance * scale:
+            current = [now for now, _, _ in parts]
             break
-        parts = [r for _, r in parts]
+        parts = [r for _, r, _ in parts]
         if it == 0 or (refactor_every and it % refactor_every == 0):
             try:
                 if direct:
@@ -309,15 +326,18 @@ def chord_newton(conn: np.ndarray, pattern: "_Pattern", L: np.ndarray, X: np.nda
             except SingularStep:
                 return failed
         if local is None:
-            dxs = [solver.solve(-np.concatenate(parts), approximate=approximate)]
-            at = [(0, nt)]
+            dx = solver.solve(-np.concatenate(parts), approximate=approximate)
+            if not np.all(np.isfinite(dx)):
+                return failed
+            pending = [dx[a:b] for a, b in spans]
         else:
-            dxs = parallel_map(lambda j: local[j].solve(-parts[j]), range(len(spans)))
-            at = spans
-        if not all(np.all(np.isfinite(dx)) for dx in dxs):
-            return failed
-        for (a, b), dx in zip(at, dxs):
-            flat[a:b, pattern.free_cols] += dx
+            solved = parallel_map(correction, range(len(spans)))
+            if not all(finite for _, finite in solved):
+                return failed
+            pending = [dx for dx, _ in solved]
+        # the corrections are added by the chunks' next residual pass, in the worker threads
+    if pending is not None:           # the iterations ran out: the last corrections still count
+        parallel_map(advance, range(len(spans)))
     return X, accepted_positions(X, guess, L, conn, scale, spans, tolerance, current)
 
 
