@@ -373,13 +373,15 @@ def chain_positions(bay: Structure, lengths: np.ndarray,
         In the numbering of :func:`stack_bays`.
     """
     nt, nb, _ = lengths.shape
-    Lall = _all_lengths(bay, lengths.reshape(nt * nb, -1)).reshape(nt, nb, -1)
+    # every bay's history contiguous, (nb, nt, m): the position solve takes all bays' steps
+    # as one run of nb·nt steps without a copy
+    Lall = _all_lengths(bay, lengths.transpose(1, 0, 2).reshape(nb * nt, -1))
     Ldall = None
     if rates is not None:
         acts = np.array([a.member for a in active_members(bay)], dtype=np.int64)
         Ldall = np.zeros((nb, nt, bay.n_members))
         Ldall[:, :, acts] = rates.transpose(1, 0, 2)
-    P = bay_positions(bay, Lall.transpose(1, 0, 2), item="bay", rates=Ldall,
+    P = bay_positions(bay, Lall.reshape(nb, nt, -1), item="bay", rates=Ldall,
                       time=time)                                       # (nb, nt, 9, 3)
     o_b, R_b = triangle_frame(bay.coords[:3])
     X = np.empty((nt, 3 + 6 * nb, 3))

@@ -514,17 +514,19 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     e = empty_vectors((nt, m, X.shape[2]))
 
     vals = np.empty((nt, pattern.rows.size))        # the entries of B, every step
+    # the length rates and accelerations (the active members' from the motion, zero for
+    # the others), filled with the geometry in the worker threads
+    Ld, Ldd = np.empty_like(L), np.empty_like(L)
 
     def geometry(s):
         e[s], L[s] = unit_vectors(member_vectors(components_first(X[s]), conn))
         vals[s] = pattern.values(e[s])
+        for rate, given in ((Ld, motion.velocity), (Ldd, motion.acceleration)):
+            rate[s] = 0.0
+            rate[s, motion.members] = given[s]
     _in_blocks(nt, m, geometry)
     solver = _factorise(pattern, vals, motion)
     vals = None                                      # not needed once factorised
-    Ld = np.zeros_like(L)
-    Ldd = np.zeros_like(L)
-    Ld[:, motion.members] = motion.velocity
-    Ldd[:, motion.members] = motion.acceleration
     e3 = pad3(e)
     if scheme == "exact":
         V = _solve_compat(structure, pattern, solver, Ld)
