@@ -57,8 +57,9 @@ def row(rows: list[dict], key: str, value: str) -> dict | None:
     return next((r for r in rows if r.get(key) == value), None)
 
 
-def ratio_target(label, r, need, check):
-    """A target ratio: the row ``r`` (speed_up, total or wall, reference_s) against ``need``."""
+def ratio_target(label: str, r: dict | None, need: float, check: str) -> tuple:
+    """A target ratio: the row ``r`` (speed_up, total or wall, reference_s) against ``need``;
+    a row of the targets' table."""
     if r is None or r.get("speed_up") is None:
         return (label, "–", "–", "–", f"≥ {need:g}×", "not measured", check)
     took = r.get("total", r.get("wall"))
@@ -85,7 +86,7 @@ def main() -> None:
     grid = row(st["rows"], "model", "grid 180x180")
     big = row(st["rows"], "model", "grid 410x410")
 
-    def static_check(r):
+    def static_check(r: dict | None) -> str:
         if r is None or r.get("max_force_difference") is None:
             return f"residual {r['residual']:.1e}" if r else ""
         return (f"residual {r['residual']:.1e}; max |dN| {r['max_force_difference']:.1e} N "
@@ -97,7 +98,8 @@ def main() -> None:
                         "–", "≤ 8 s", "met" if big["total"] <= 8.0 else "not met",
                         f"residual {big['residual']:.1e}; peak {big['peak_mib']:.0f} MiB"))
     modes = row(mo["rows"], "model", "chain 10000")
-    def modal_check(r):
+
+    def modal_check(r: dict | None) -> str:
         if r is None:
             return ""
         text = f"eigen-residual {r['residual']:.1e}"
