@@ -180,10 +180,10 @@ def bay_kinematics(bay: Structure, lengths: np.ndarray, rates: np.ndarray, accs:
 
 def _all_lengths(bay: Structure, lengths: np.ndarray) -> np.ndarray:
     """Member lengths (nt, m): the bay's passive lengths and the given active ones."""
+    from .kinematics import member_histories
     acts = np.array([a.member for a in active_members(bay)], dtype=np.int64)
-    L = np.broadcast_to(bay.lengths(), (lengths.shape[0], bay.n_members)).copy()
-    L[:, acts] = lengths
-    return L
+    return member_histories(lengths, acts, bay.lengths(),
+                            np.empty((lengths.shape[0], bay.n_members)))
 
 
 def _sequential_positions(bay: Structure, L: np.ndarray, x0: np.ndarray, item: str

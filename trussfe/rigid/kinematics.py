@@ -117,11 +117,20 @@ def _step_item(motion: Motion, k: int) -> str:
     return f"motion: step {motion.first_step + k} (t = {motion.time[k]:.6g} s)"
 
 
+def member_histories(driven: np.ndarray, members: np.ndarray, rest: np.ndarray | float,
+                     out: np.ndarray) -> np.ndarray:
+    """Every member's value at some steps written into ``out`` (steps, m) and returned: the
+    driven ``members``' from ``driven`` (steps, len(members)), every other member's
+    ``rest`` (its model length, or 0 for a length rate or acceleration)."""
+    out[...] = rest
+    out[:, members] = driven
+    return out
+
+
 def _member_lengths(structure: Structure, motion: Motion) -> np.ndarray:
     """Member lengths at every step: passive members keep their model length, (nt, m)."""
-    L = np.broadcast_to(structure.lengths(), (motion.n_steps, structure.n_members)).copy()
-    L[:, motion.members] = motion.length
-    return L
+    return member_histories(motion.length, motion.members, structure.lengths(),
+                            np.empty((motion.n_steps, structure.n_members)))
 
 
 def solve_motion_positions(structure: Structure, motion: Motion,
@@ -521,9 +530,8 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     def geometry(s):
         e[s], L[s] = unit_vectors(member_vectors(components_first(X[s]), conn))
         vals[s] = pattern.values(e[s])
-        for rate, given in ((Ld, motion.velocity), (Ldd, motion.acceleration)):
-            rate[s] = 0.0
-            rate[s, motion.members] = given[s]
+        member_histories(motion.velocity[s], motion.members, 0.0, Ld[s])
+        member_histories(motion.acceleration[s], motion.members, 0.0, Ldd[s])
     _in_blocks(nt, m, geometry)
     solver = _factorise(pattern, vals, motion)
     vals = None                                      # not needed once factorised
