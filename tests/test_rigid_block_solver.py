@@ -130,3 +130,27 @@ def test_pattern_is_kept_with_the_model():
     del other, q
     gc.collect()
     assert ref() is None
+
+
+def test_block_form_and_nodal_sums_are_kept_with_the_model():
+    """The pattern's block-triangular form and the plans of the nodal sums are made once per
+    model (read-only, shared by every later analysis of it), another model gets its own,
+    and nothing of them outlives the model: no table outside it holds them."""
+    import gc
+    import weakref
+
+    from trussfe.rigid.forces import _kept_sums
+    s = double_octahedral_chain(2)
+    form = _Pattern.of(s).form
+    assert _Pattern.of(s).form is form and not form.rows[0].flags.writeable
+    plan, held = _kept_sums(s, False), _kept_sums(s, True)
+    assert _kept_sums(s, False) is plan and _kept_sums(s, True) is held
+    assert plan.size == s.n_nodes and held.size == 3                # the three base nodes
+    assert not plan.to_nodes.flags.writeable and not plan.start_cols[0].flags.writeable
+    other = double_octahedral_chain(3)
+    other_form, other_held = _Pattern.of(other).form, _kept_sums(other, True)
+    assert other_form.n_blocks == 6 and form.n_blocks == 4 and other_held.size == 3
+    refs = [weakref.ref(x) for x in (other, other_form, other_held)]
+    del other, other_form, other_held
+    gc.collect()
+    assert all(r() is None for r in refs)

@@ -1,15 +1,16 @@
 # SPDX-License-Identifier: MIT
-"""Member-end vectors summed at the nodes (trussfe.rigid.forces._to_nodes, the nodal sums of
-the Newton-Euler equations, Lacy eq. 4.20) equal the product with the node-member incidence
-matrix (scipy.sparse, summing each node's ends in the same order) to the last bit, for all
-nodes and for a subset, on a model with nodes of different degrees and an isolated node; and
-to each node's left-to-right sum of its ends, signed zeros included."""
+"""Member-end vectors summed at the nodes (trussfe.rigid.forces._to_nodes with a plan of
+node_sums: the nodal sums of the Newton-Euler equations, Lacy eq. 4.20) equal the product
+with the node-member incidence matrix (scipy.sparse, summing each node's ends in the same
+order) to the last bit, for all nodes and for a subset, on a model with nodes of different
+degrees and an isolated node; and to each node's left-to-right sum of its ends, signed zeros
+included."""
 from __future__ import annotations
 
 import numpy as np
 import scipy.sparse as sp
 
-from trussfe.rigid.forces import _to_nodes
+from trussfe.rigid.forces import _to_nodes, node_sums
 from trussfe.studies.lacy_rigid import double_octahedral_chain
 
 
@@ -32,16 +33,16 @@ def test_nodal_sums_equal_the_incidence_product():
     at_start, at_end = rng.standard_normal((2, 7) + conn.shape[:1] + (3,)) * 10.0 ** \
         rng.integers(-8, 8, size=(2, 7, conn.shape[0], 1))
     want = _incidence_sum(conn, n, at_start, at_end)
-    np.testing.assert_array_equal(_to_nodes(conn, n, at_start, at_end), want)
+    np.testing.assert_array_equal(_to_nodes(node_sums(conn, n), at_start, at_end), want)
     nodes = np.array([n - 1, 0, 5, 2])
-    np.testing.assert_array_equal(_to_nodes(conn, n, at_start, at_end, nodes), want[:, nodes])
+    np.testing.assert_array_equal(_to_nodes(node_sums(conn, n, nodes), at_start, at_end), want[:, nodes])
     assert not want[:, n - 1].any()
 
 
 def test_nodal_sums_of_another_connectivity_of_the_same_size_and_components_first():
-    """The nodal-sum plan is kept by the connectivity's content: a second connectivity of the
-    same shape (members reversed, shuffled) sums by its own grouping, and member-end vectors
-    stored components first (trussfe.vectors) give the same sums to the last bit."""
+    """A second connectivity of the same shape (members reversed, shuffled) sums by its own
+    grouping, and member-end vectors stored components first (trussfe.vectors) give the same
+    sums to the last bit."""
     from trussfe.vectors import components_first, is_components_first
     rng = np.random.default_rng(5)
     chain = double_octahedral_chain(3).connectivity
@@ -49,8 +50,9 @@ def test_nodal_sums_of_another_connectivity_of_the_same_size_and_components_firs
     at_start, at_end = rng.standard_normal((2, 6) + chain.shape[:1] + (3,))
     for conn in (chain, chain[rng.permutation(chain.shape[0])][:, ::-1].copy()):
         want = _incidence_sum(conn, n, at_start, at_end)
-        np.testing.assert_array_equal(_to_nodes(conn, n, at_start, at_end), want)
-        got = _to_nodes(conn, n, components_first(at_start), components_first(at_end))
+        np.testing.assert_array_equal(_to_nodes(node_sums(conn, n), at_start, at_end), want)
+        got = _to_nodes(node_sums(conn, n), components_first(at_start),
+                        components_first(at_end))
         np.testing.assert_array_equal(got, want)
         assert is_components_first(got)
 
@@ -78,7 +80,7 @@ def test_nodal_sums_are_left_to_right_sums_with_signed_zeros():
         for x in ends[1:]:
             acc = acc + x
         want[:, k] = acc
-    got = _to_nodes(conn, n, at_start, at_end)
+    got = _to_nodes(node_sums(conn, n), at_start, at_end)
     np.testing.assert_array_equal(got, want)
     np.testing.assert_array_equal(np.signbit(got), np.signbit(want))
     assert np.all(np.signbit(got[:, :n - 1, 0])) and not np.any(np.signbit(got[:, n - 1]))

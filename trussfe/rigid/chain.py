@@ -282,7 +282,8 @@ def bay_positions(bay: Structure, L: np.ndarray, item: str = "bay",
         vel = np.zeros((nb * idx.size, n * 3))
         e, _ = unit_vectors(member_vectors(coarse.reshape(-1, n, 3), bay.connectivity))
         try:
-            solver = CompatSolver(pattern.rows, pattern.cols, pattern.values(e), pattern.m)
+            solver = CompatSolver(pattern.rows, pattern.cols, pattern.values(e), pattern.m,
+                                  pattern.form)
             vel[:, pattern.free_flat] = solver.solve(
                 rates[:, idx][..., pattern.loaded_cols].reshape(nb * idx.size, -1))
         except SingularStep:

@@ -36,6 +36,7 @@ import numpy as np
 
 from ..errors import AnalysisError
 from ..mechanics.mass import centroidal_inertia, gyration_squared, member_mass
+from ..model.derived import kept
 from ..model.structure import Structure
 from .active import active_members
 from .kinematics import Kinematics, _count_message, _Pattern, pad3
@@ -126,11 +127,10 @@ class NodalForces:
     reactions: np.ndarray
 
 
-def _to_nodes(conn: np.ndarray, n: int, at_start: np.ndarray, at_end: np.ndarray,
-              nodes: np.ndarray | None = None) -> np.ndarray:
-    """Sum member-end vectors (t, m, 3) into their nodes, (t, n, 3), or (t, len(nodes), 3)
-    for the given (distinct) nodes only; the result's components are stored first
-    (:mod:`trussfe.vectors`).
+def _to_nodes(plan: _NodeSums, at_start: np.ndarray, at_end: np.ndarray) -> np.ndarray:
+    """Sum member-end vectors (t, m, 3) into the nodes of ``plan`` (:func:`node_sums`): all
+    of them, (t, n, 3), or the (t, len(nodes), 3) it was made for; the result's components
+    are stored first (:mod:`trussfe.vectors`).
 
     Each node's sum runs over its member ends in one fixed order — its members' start ends
     by member, then their end ends — from −0 (the exact identity of addition, so that the
@@ -138,7 +138,6 @@ def _to_nodes(conn: np.ndarray, n: int, at_start: np.ndarray, at_end: np.ndarray
     gathered column of start ends per pass for all nodes that have that many, then one of
     end ends, a few passes of the node degree in all (:class:`_NodeSums`).
     """
-    plan = _node_sums(conn, n, nodes)
     starts, ends = components_first(at_start), components_first(at_end)
     acc = empty_vectors((at_start.shape[0], plan.size, at_start.shape[-1]))
     acc[...] = -0.0
@@ -176,26 +175,23 @@ class _NodeSums:
     isolated: np.ndarray
 
 
-def _node_sums(conn: np.ndarray, n: int, nodes: np.ndarray | None) -> _NodeSums:
-    """The :class:`_NodeSums` of a connectivity, kept by its content (every block of steps
-    of an analysis asks for it several times; a changed connectivity is another key, so
-    nothing kept can go stale)."""
-    key = (n, conn.shape, conn.tobytes(), None if nodes is None else np.asarray(nodes).tobytes())
-    plan = _NODE_SUMS.get(key)
-    if plan is None:
-        plan = _plan_node_sums(conn, n, nodes)
+def _supported(structure: Structure) -> np.ndarray:
+    """The nodes with a held translation (where reactions act)."""
+    return np.flatnonzero(structure.translation_supports.any(axis=1))
+
+
+def _kept_sums(structure: Structure, at_supports: bool) -> _NodeSums:
+    """The :func:`node_sums` of every node of ``structure`` (or of its supported nodes),
+    made once and kept with the model (every block of steps of an analysis sums at its
+    nodes several times)."""
+    def make(s: Structure) -> _NodeSums:
+        plan = node_sums(s.connectivity, s.n_nodes, _supported(s) if at_supports else None)
         for value in vars(plan).values():         # shared by every caller: read only
             for a in (value if isinstance(value, tuple) else (value,)):
                 if isinstance(a, np.ndarray):
                     a.setflags(write=False)
-        if len(_NODE_SUMS) > 64:
-            _NODE_SUMS.clear()
-        _NODE_SUMS[key] = plan
-    return plan
-
-
-#: Nodal-sum plans by connectivity (:func:`_node_sums`).
-_NODE_SUMS: dict = {}
+        return plan
+    return kept(structure, "nodal sums at supports" if at_supports else "nodal sums", make)
 
 
 def _side_columns(node_of_end: np.ndarray, size: int):
@@ -224,8 +220,9 @@ def _side_columns(node_of_end: np.ndarray, size: int):
     return order, tuple(cols), tuple(cnts), counts
 
 
-def _plan_node_sums(conn: np.ndarray, n: int, nodes: np.ndarray | None) -> _NodeSums:
-    """The :class:`_NodeSums` of :func:`_node_sums`, computed."""
+def node_sums(conn: np.ndarray, n: int, nodes: np.ndarray | None = None) -> _NodeSums:
+    """The :class:`_NodeSums` of the ``n`` nodes of connectivity ``conn`` for
+    :func:`_to_nodes`, or of the given (distinct) nodes only."""
     wanted = np.arange(n) if nodes is None else np.asarray(nodes, dtype=np.int64)
     size = wanted.size
     where = np.full(n, -1, dtype=np.int64)
@@ -421,7 +418,7 @@ def _member_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies, r
     # Known (tension-free) parts of the end forces, summed at the nodes: the start ends'
     # Re e + Fa_perp (in place of the axial part, which is not needed again).
     axial += Fa_perp
-    S = _to_nodes(conn, n, axial, Fb_perp)
+    S = _to_nodes(_kept_sums(structure, False), axial, Fb_perp)
     P = pad3(structure.loads[:, :dim])[None]
     Mn = structure.masses[None, :, None]
     mg = Mn * g if rest else Mn * (g - kin.acceleration)      # lumped masses' loads
@@ -464,7 +461,6 @@ def _solve_forces(structure: Structure, kins: list, bodies: MemberBodies | None,
     kin = kins[0]
     if check is None:
         check = kin.compat is None
-    conn = structure.connectivity
     dim = structure.dim
     e = kin.unit
     if loads is None:
@@ -492,7 +488,7 @@ def _solve_forces(structure: Structure, kins: list, bodies: MemberBodies | None,
                             ) from None
     n = structure.n_nodes
     # Reactions act on supported nodes only: the end forces are summed there alone.
-    held = np.flatnonzero(structure.translation_supports.any(axis=1))
+    held = _supported(structure)
     out = []
     for j, (Re, Fa_perp, Fb_perp, ext, _) in enumerate(loads):
         t = 0.5 * Re                   # members between two fixed nodes: symmetric split
@@ -505,7 +501,7 @@ def _solve_forces(structure: Structure, kins: list, bodies: MemberBodies | None,
         Fb += Fb_perp
         np.multiply((Re - t)[..., None], e, out=Fa)
         Fa += Fa_perp
-        tot = _to_nodes(conn, n, Fa, Fb, held)
+        tot = _to_nodes(_kept_sums(structure, True), Fa, Fb)
         P, mg = (np.broadcast_to(x, (x.shape[0], n, 3))[:, held] for x in ext)
         react = np.zeros(t.shape[:1] + (n, dim))
         react[:, held] = np.where(structure.translation_supports[None, held],

@@ -29,6 +29,7 @@ from __future__ import annotations
 import logging
 from collections import deque
 from dataclasses import dataclass
+from functools import cached_property
 
 from typing import Callable
 
@@ -40,7 +41,8 @@ from ..mechanics.geometry import lengths, member_vectors, unit_vectors
 from ..model.derived import kept
 from ..model.structure import Structure
 from ..threads import block_steps, contiguous_spans, parallel_map, worker_count
-from .linalg import ANCHOR_SPACING, CompatSolver, SingularStep, is_direct
+from .linalg import (ANCHOR_SPACING, BlockTriangularForm, CompatSolver, SingularStep,
+                     block_triangular_form, is_direct)
 from ..vectors import components_first, cross, dot, empty_vectors, is_components_first
 from .motion import Motion
 
@@ -277,7 +279,7 @@ def chord_newton(conn: np.ndarray, pattern: "_Pattern", L: np.ndarray, X: np.nda
     flat = X.reshape(nt, -1)
     failed = (X, np.zeros(nt, dtype=bool))
     spans = contiguous_spans(nt, min(worker_count(), nt // min_chunk_steps))
-    direct = is_direct(pattern.rows, pattern.cols, pattern.m)
+    direct = is_direct(pattern.rows, pattern.cols, pattern.m, pattern.form)
 
     def values(steps):
         """B's values at the current positions of ``steps`` (the unit vectors' components)."""
@@ -288,10 +290,11 @@ def chord_newton(conn: np.ndarray, pattern: "_Pattern", L: np.ndarray, X: np.nda
         step (each anchor's inverse is the same in any subset of the anchors)."""
         a, b = ab
         if anchors is None:
-            return CompatSolver(pattern.rows, pattern.cols, values(slice(a, b)), pattern.m)
+            return CompatSolver(pattern.rows, pattern.cols, values(slice(a, b)), pattern.m,
+                                pattern.form)
         first, last = owner[a], owner[b - 1]
         part = CompatSolver(pattern.rows, pattern.cols, values(anchors[first:last + 1]),
-                            pattern.m)
+                            pattern.m, pattern.form)
         return part.gather(owner[a:b] - first)
 
     pending: list | None = None       # the last corrections, one per chunk, not yet added
@@ -331,7 +334,7 @@ def chord_newton(conn: np.ndarray, pattern: "_Pattern", L: np.ndarray, X: np.nda
                     local = parallel_map(chunk_solver, spans)
                 else:
                     solver = CompatSolver(pattern.rows, pattern.cols, values(slice(None)),
-                                          pattern.m)
+                                          pattern.m, pattern.form)
             except SingularStep:
                 return failed
         if local is None:
@@ -415,6 +418,18 @@ class _Pattern:
         self.rows = np.repeat(np.arange(self.m), 2 * dim)[keep]
         self.cols = cols.ravel()[keep]
 
+    @cached_property
+    def form(self) -> BlockTriangularForm | None:
+        """The pattern's block-triangular form (:func:`~trussfe.rigid.linalg.
+        block_triangular_form`), found on first use and kept with the pattern (every
+        factorisation of the model's compatibility matrices uses it)."""
+        form = block_triangular_form(self.rows, self.cols, self.m)
+        if form is not None:                   # shared by every caller: read only
+            for part in (*form.rows, *form.cols, *form.diag, *form.coupling):
+                for a in (part if isinstance(part, tuple) else (part,)):
+                    a.setflags(write=False)
+        return form
+
     def values(self, unit: np.ndarray) -> np.ndarray:
         """Entries of B for unit vectors ``unit`` (nt, m, dim or 3) → (nt, nnz): ``−e`` at
         the start node's free coordinates, ``+e`` at the end node's (one gather of the
@@ -466,7 +481,7 @@ def _factorise(pattern: _Pattern, values: np.ndarray, motion: Motion) -> CompatS
     (:meth:`_Pattern.values`), or raise at the first singular step (once: velocities,
     accelerations and member forces all use this matrix or its transpose)."""
     try:
-        return CompatSolver(pattern.rows, pattern.cols, values, pattern.m)
+        return CompatSolver(pattern.rows, pattern.cols, values, pattern.m, pattern.form)
     except SingularStep as s:
         raise AnalysisError(_step_item(motion, s.step), "the assembly is at a singular "
                             "position (its compatibility matrix is rank deficient): its "

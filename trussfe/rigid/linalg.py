@@ -10,10 +10,11 @@ time step, and a singular step is reported by its index.
 The compatibility matrix of a truss built joint by joint or bay by bay is, after a row and
 column permutation, **block lower triangular** (its Dulmage–Mendelsohn fine decomposition):
 a double-octahedral bay splits into two 9 × 9 blocks (the midplane nodes, then the top
-nodes), a 100-bay chain into 200 of them.  :func:`block_triangular_form` finds that form once
-per sparsity pattern (a maximum matching puts a non-zero on the diagonal, the strongly
+nodes), a 100-bay chain into 200 of them.  :func:`block_triangular_form` finds that form
+from the sparsity pattern (a maximum matching puts a non-zero on the diagonal, the strongly
 connected components of the resulting dependency graph are the blocks, a topological order
-of the components is the solve order); :class:`CompatSolver` then keeps the stacked inverses
+of the components is the solve order; a model keeps its pattern's form,
+:attr:`trussfe.rigid.kinematics._Pattern.form`); :class:`CompatSolver` then keeps the stacked inverses
 of the small diagonal blocks of every step and solves ``B x = b`` by forward and ``Bᵀ y = c``
 by backward block substitution, a loop over blocks with every step at once.
 """
@@ -184,9 +185,6 @@ class BlockTriangularForm:
         return max((r.size for r in self.rows), default=0)
 
 
-_BTF_CACHE: dict = {}
-
-
 def block_triangular_form(rows: np.ndarray, cols: np.ndarray, n: int
                           ) -> BlockTriangularForm | None:
     """Block lower-triangular form of the n × n pattern ``(rows, cols)``, or ``None`` when the
@@ -202,13 +200,9 @@ def block_triangular_form(rows: np.ndarray, cols: np.ndarray, n: int
     """
     rows = np.asarray(rows, dtype=np.int64)
     cols = np.asarray(cols, dtype=np.int64)
-    key = (n, rows.tobytes(), cols.tobytes())
-    if key in _BTF_CACHE:
-        return _BTF_CACHE[key]
     pat = sp.csr_matrix((np.ones(rows.size), (rows, cols)), shape=(n, n))
     match = maximum_bipartite_matching(pat, perm_type="column")     # row i ↔ column match[i]
     if n == 0 or np.any(match < 0):
-        _BTF_CACHE[key] = None
         return None
     row_of = np.empty(n, dtype=np.int64)
     row_of[match] = np.arange(n)
@@ -256,11 +250,7 @@ def block_triangular_form(rows: np.ndarray, cols: np.ndarray, n: int
         coupling.append((ucols, local[rows[o]], pos.reshape(-1), o))
         block_rows.append(er)
         block_cols.append(ec)
-    out = BlockTriangularForm(rows=block_rows, cols=block_cols, diag=diag, coupling=coupling)
-    if len(_BTF_CACHE) > 64:
-        _BTF_CACHE.clear()
-    _BTF_CACHE[key] = out
-    return out
+    return BlockTriangularForm(rows=block_rows, cols=block_cols, diag=diag, coupling=coupling)
 
 
 #: Steps per thread below which a block substitution is not split between threads.
@@ -421,12 +411,27 @@ class _BlockInverses:
                 c[:, f.coupling[b][0]] -= np.einsum("tij,ti...->tj...", pick(self.off[b]), y)
 
 
-def is_direct(rows: np.ndarray, cols: np.ndarray, n: int) -> bool:
-    """Whether :class:`CompatSolver` keeps stacked inverses (no refinement) for this pattern."""
-    if n <= DENSE_LIMIT:
-        return True
-    form = block_triangular_form(rows, cols, n) if DENSE_LIMIT > 0 else None
+#: ``form`` not given: :func:`block_triangular_form` finds it.
+FIND_FORM = object()
+
+
+def _form(rows: np.ndarray, cols: np.ndarray, n: int, form) -> BlockTriangularForm | None:
+    """``form``, or when it is :data:`FIND_FORM` the block-triangular form of the pattern
+    (none needed when no block could be small enough)."""
+    if form is not FIND_FORM:
+        return form
+    return block_triangular_form(rows, cols, n) if DENSE_LIMIT > 0 else None
+
+
+def _blocks_pay(form: BlockTriangularForm | None) -> bool:
+    """Whether block substitution applies: several diagonal blocks, all dense-sized."""
     return form is not None and form.n_blocks > 1 and form.max_size <= DENSE_LIMIT
+
+
+def is_direct(rows: np.ndarray, cols: np.ndarray, n: int, form=FIND_FORM) -> bool:
+    """Whether :class:`CompatSolver` keeps stacked inverses (no refinement) for this pattern;
+    ``form``: its :func:`block_triangular_form`, when the caller keeps it."""
+    return n <= DENSE_LIMIT or _blocks_pay(_form(rows, cols, n, form))
 
 
 class CompatSolver:
@@ -447,6 +452,9 @@ class CompatSolver:
     vals : ndarray, shape (nt, nnz)
     n : int
         Size of each square B_k.
+    form : BlockTriangularForm or None, optional
+        The pattern's :func:`block_triangular_form` when the caller keeps it (a model's
+        pattern does); found here when not given.
 
     Raises
     ------
@@ -456,7 +464,8 @@ class CompatSolver:
         :data:`SINGULAR_RCOND`.
     """
 
-    def __init__(self, rows: np.ndarray, cols: np.ndarray, vals: np.ndarray, n: int):
+    def __init__(self, rows: np.ndarray, cols: np.ndarray, vals: np.ndarray, n: int,
+                 form=FIND_FORM):
         self.n = n
         self.nt = vals.shape[0]
         self.inverse = None
@@ -465,8 +474,8 @@ class CompatSolver:
         self.split = True
         if n == 0:
             return
-        form = block_triangular_form(rows, cols, n) if DENSE_LIMIT > 0 else None
-        if form is not None and form.n_blocks > 1 and form.max_size <= DENSE_LIMIT:
+        form = _form(rows, cols, n, form)
+        if _blocks_pay(form):
             self.block_inverses = _BlockInverses(form, vals)
             return
         if n <= DENSE_LIMIT:
