@@ -33,7 +33,6 @@ def spatial_mechanism(n_joints: int, seed: int = 0):
     pts = [P, Q, [0, 0, 1], [0, 0, -1], [3, 0, 1], [3, 0, -1]]
     bars = [(0, 2), (0, 3), (1, 4), (1, 5), (0, 1)]
     bodies = [[0, 2, 3], [1, 4, 5]]
-    centres = [np.zeros(3), D]
     for k in range(n_joints - 2):
         body = bodies[k % 2]
         while True:                                       # anchors spanning a good triangle

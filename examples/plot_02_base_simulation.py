@@ -11,7 +11,6 @@ von Mises stresses of the follower and of the leadscrew tube are those printed i
 from pathlib import Path
 
 import matplotlib.pyplot as plt
-import numpy as np
 
 import trussfe
 

@@ -11,7 +11,6 @@ two bars (a mechanism) and the path ends in the equilibrium form of that mechani
 from pathlib import Path
 
 import matplotlib.pyplot as plt
-import numpy as np
 
 import trussfe
 

@@ -1,6 +1,5 @@
 # SPDX-License-Identifier: MIT
 """Top-plane rotations converted to active-member lengths (Lacy section 5.5)."""
-import math
 
 import numpy as np
 import pytest

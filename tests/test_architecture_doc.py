@@ -6,7 +6,6 @@ Source of the expected values: the page itself (each cited name must resolve in 
 """
 from __future__ import annotations
 
-import dataclasses
 import importlib
 import importlib.util
 import re

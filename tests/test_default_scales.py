@@ -9,7 +9,6 @@ from __future__ import annotations
 import json
 
 import numpy as np
-import pytest
 from numpy.testing import assert_allclose
 
 from trussfe._resources import mesh_path

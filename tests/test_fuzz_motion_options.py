@@ -4,7 +4,6 @@ command-line option values.  Whatever the input, the answer is a result or one
 (exit 3), a warning line or a file left behind by a refused run."""
 from __future__ import annotations
 
-import math
 from pathlib import Path
 
 import numpy as np
@@ -14,7 +13,7 @@ from hypothesis import strategies as st
 
 import hostile_cases as hc
 from trussfe.cli import main
-from trussfe.errors import InputError, TrussfeError
+from trussfe.errors import TrussfeError
 from trussfe.io.model_file import parse_model
 from trussfe.io.toml_text import loads
 from trussfe.rigid.motion import Motion

@@ -93,7 +93,7 @@ def _model_edit_cases():
 @pytest.mark.parametrize("command", ["static"])
 @pytest.mark.parametrize("data", list(_model_edit_cases()))
 def test_bad_model(data, command, tmp_path, capsys):
-    v = _setup(tmp_path)
+    _setup(tmp_path)
     bad = tmp_path / "bad.toml"
     bad.write_bytes(data)
     assert_refused([command, str(bad), "--json", str(tmp_path / "out" / "r.json")],

@@ -1,7 +1,6 @@
 """Masses from a load case's loads along gravity (``modes --mass-from CASE``)."""
 import math
 
-import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 

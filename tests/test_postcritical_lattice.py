@@ -2,9 +2,7 @@
 check behind it."""
 import numpy as np
 import pytest
-import scipy.linalg as sla
 
-from trussfe.kinematics.compatibility import compatibility_matrix
 from trussfe.nonlinear import NonlinearModel, follow_path
 from trussfe.nonlinear.mechanism import mechanism_count
 from trussfe.studies.postcritical import double_layer_grid

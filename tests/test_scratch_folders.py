@@ -6,7 +6,6 @@ system's temporary folder (one validation run used to leave a dozen behind)."""
 from __future__ import annotations
 
 import tempfile
-from pathlib import Path
 
 import pytest
 

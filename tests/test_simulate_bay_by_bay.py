@@ -193,7 +193,6 @@ def test_chain_layout_is_kept_with_the_model():
     changed model (another object) gets its own, and a non-chain is still refused."""
     import gc
     import weakref
-    from trussfe.rigid import bays
     from trussfe.studies.lacy_rigid import double_octahedral_chain
     chain = double_octahedral_chain(3)
     first = chain_layout(chain)

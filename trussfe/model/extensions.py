@@ -29,7 +29,7 @@ import numpy as np
 from .active import ActiveMember
 from .actuators import Actuator
 from .failure import FailureLaws
-from .load_cases import LoadCases, check_load_cases
+from .load_cases import check_load_cases
 from .member_loads import MemberLoad
 from .node_supports import RotaryInertia, Springs
 from .postcritical import PostcriticalSettings

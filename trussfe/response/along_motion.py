@@ -109,7 +109,7 @@ def stacked_structure(structure: Structure, coords: np.ndarray) -> Structure:
     node ``i n + j``, member ``k`` of copy ``i`` is member ``i m + k``.
     """
     nt = coords.shape[0]
-    n, m, dim = structure.n_nodes, structure.n_members, structure.dim
+    n, dim = structure.n_nodes, structure.dim
     conn = (structure.connectivity[None] + n * np.arange(nt)[:, None, None]).reshape(-1, 2)
     return Structure(
         name=f"{structure.name} × {nt} steps", dim=dim,
@@ -262,7 +262,7 @@ def elastic_along_motion(structure: Structure, kin: Kinematics, *,
         positions = stations(bodies.tube_length, int(n_sections))       # from the end node
     positions = np.asarray(positions, dtype=float)
     ml = motion_loads(structure, kin, bodies, gravity=gravity, loads=loads)
-    nt, m, n, dim = kin.n_steps, structure.n_members, structure.n_nodes, structure.dim
+    nt, m = kin.n_steps, structure.n_members
     per_step = max(1, m * subdivisions)
     step = max(1, block_elements // per_step)
     parts = []

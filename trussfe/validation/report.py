@@ -134,7 +134,7 @@ def _deviations(res: CaseResult) -> str:
 # ------------------------------------------------------------------ markdown
 def markdown_report(results: list[CaseResult], figure_paths: dict[tuple[str, str], str]) -> str:
     """The Markdown report (figures linked as files in ``figures/``)."""
-    out = [f"# trussfe validation report", "",
+    out = ["# trussfe validation report", "",
            f"trussfe {__version__}. {''.join(_counts(results))}", "",
            "| case | title | result | checks | worst relative error (reproduced checks) "
            "| documented deviations |",
