@@ -420,9 +420,10 @@ class _Pattern:
 
     @cached_property
     def form(self) -> BlockTriangularForm | None:
-        """The pattern's block-triangular form (:func:`~trussfe.rigid.linalg.
-        block_triangular_form`), found on first use and kept with the pattern (every
-        factorisation of the model's compatibility matrices uses it)."""
+        """The pattern's block-triangular form
+        (:func:`~trussfe.rigid.linalg.block_triangular_form`), found on first use and kept
+        with the pattern (every factorisation of the model's compatibility matrices uses
+        it)."""
         form = block_triangular_form(self.rows, self.cols, self.m)
         if form is not None:                   # shared by every caller: read only
             for part in (*form.rows, *form.cols, *form.diag, *form.coupling):

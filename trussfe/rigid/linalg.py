@@ -13,10 +13,10 @@ a double-octahedral bay splits into two 9 × 9 blocks (the midplane nodes, then 
 nodes), a 100-bay chain into 200 of them.  :func:`block_triangular_form` finds that form
 from the sparsity pattern (a maximum matching puts a non-zero on the diagonal, the strongly
 connected components of the resulting dependency graph are the blocks, a topological order
-of the components is the solve order; a model keeps its pattern's form,
-:attr:`trussfe.rigid.kinematics._Pattern.form`); :class:`CompatSolver` then keeps the stacked inverses
-of the small diagonal blocks of every step and solves ``B x = b`` by forward and ``Bᵀ y = c``
-by backward block substitution, a loop over blocks with every step at once.
+of the components is the solve order), which a model's compatibility pattern keeps with
+the model; :class:`CompatSolver` then keeps the stacked inverses of the small diagonal
+blocks of every step and solves ``B x = b`` by forward and ``Bᵀ y = c`` by backward block
+substitution, a loop over blocks with every step at once.
 """
 from __future__ import annotations
 
