@@ -25,9 +25,23 @@ _KEPT: weakref.WeakKeyDictionary[Structure, dict[str, object]] = weakref.WeakKey
 _LOCK = threading.Lock()
 
 
+def read_only(value: T) -> T:
+    """``value`` with the arrays among its attributes made read-only, those in tuples and
+    lists of them included (a value shared by every later caller), and returned."""
+    def freeze(a) -> None:
+        if isinstance(a, np.ndarray):
+            a.setflags(write=False)
+        elif isinstance(a, (tuple, list)):
+            for b in a:
+                freeze(b)
+    for a in getattr(value, "__dict__", {}).values():
+        freeze(a)
+    return value
+
+
 def kept(structure: Structure, name: str, make: Callable[[Structure], T]) -> T:
     """The value ``make(structure)`` kept under ``name`` with ``structure``: made on first
-    request, its array attributes then made read-only (every later caller shares them).
+    request, then made read-only (:func:`read_only`: every later caller shares it).
 
     Two threads asking at once may both make it; the first one stored is kept and returned
     to both (they are equal).
@@ -35,10 +49,7 @@ def kept(structure: Structure, name: str, make: Callable[[Structure], T]) -> T:
     with _LOCK:
         value = _KEPT.get(structure, {}).get(name)
     if value is None:
-        value = make(structure)
-        for a in getattr(value, "__dict__", {}).values():
-            if isinstance(a, np.ndarray):
-                a.setflags(write=False)
+        value = read_only(make(structure))
         with _LOCK:
             value = _KEPT.setdefault(structure, {}).setdefault(name, value)
     return value

@@ -277,13 +277,12 @@ def bay_positions(bay: Structure, L: np.ndarray, item: str = "bay",
     if hermite:
         # the node velocities B ṗ = L̇ at every coarse step of every history, in one solve
         from .kinematics import _Pattern
-        from .linalg import CompatSolver, SingularStep
+        from .linalg import SingularStep
         pattern = _Pattern.of(bay)
         vel = np.zeros((nb * idx.size, n * 3))
         e, _ = unit_vectors(member_vectors(coarse.reshape(-1, n, 3), bay.connectivity))
         try:
-            solver = CompatSolver(pattern.rows, pattern.cols, pattern.values(e), pattern.m,
-                                  pattern.form)
+            solver = pattern.solver(pattern.values(e))
             vel[:, pattern.free_flat] = solver.solve(
                 rates[:, idx][..., pattern.loaded_cols].reshape(nb * idx.size, -1))
         except SingularStep:

@@ -185,12 +185,7 @@ def _kept_sums(structure: Structure, at_supports: bool) -> _NodeSums:
     made once and kept with the model (every block of steps of an analysis sums at its
     nodes several times)."""
     def make(s: Structure) -> _NodeSums:
-        plan = node_sums(s.connectivity, s.n_nodes, _supported(s) if at_supports else None)
-        for value in vars(plan).values():         # shared by every caller: read only
-            for a in (value if isinstance(value, tuple) else (value,)):
-                if isinstance(a, np.ndarray):
-                    a.setflags(write=False)
-        return plan
+        return node_sums(s.connectivity, s.n_nodes, _supported(s) if at_supports else None)
     return kept(structure, "nodal sums at supports" if at_supports else "nodal sums", make)
 
 

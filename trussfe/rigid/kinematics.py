@@ -38,7 +38,7 @@ import numpy as np
 from ..errors import AnalysisError
 from ..kinematics.assembly import solve_positions
 from ..mechanics.geometry import lengths, member_vectors, unit_vectors
-from ..model.derived import kept
+from ..model.derived import kept, read_only
 from ..model.structure import Structure
 from ..threads import block_steps, contiguous_spans, parallel_map, worker_count
 from .linalg import (ANCHOR_SPACING, BlockTriangularForm, CompatSolver, SingularStep,
@@ -279,7 +279,7 @@ def chord_newton(conn: np.ndarray, pattern: "_Pattern", L: np.ndarray, X: np.nda
     flat = X.reshape(nt, -1)
     failed = (X, np.zeros(nt, dtype=bool))
     spans = contiguous_spans(nt, min(worker_count(), nt // min_chunk_steps))
-    direct = is_direct(pattern.rows, pattern.cols, pattern.m, pattern.form)
+    direct = pattern.direct
 
     def values(steps):
         """B's values at the current positions of ``steps`` (the unit vectors' components)."""
@@ -290,11 +290,9 @@ def chord_newton(conn: np.ndarray, pattern: "_Pattern", L: np.ndarray, X: np.nda
         step (each anchor's inverse is the same in any subset of the anchors)."""
         a, b = ab
         if anchors is None:
-            return CompatSolver(pattern.rows, pattern.cols, values(slice(a, b)), pattern.m,
-                                pattern.form)
+            return pattern.solver(values(slice(a, b)))
         first, last = owner[a], owner[b - 1]
-        part = CompatSolver(pattern.rows, pattern.cols, values(anchors[first:last + 1]),
-                            pattern.m, pattern.form)
+        part = pattern.solver(values(anchors[first:last + 1]))
         return part.gather(owner[a:b] - first)
 
     pending: list | None = None       # the last corrections, one per chunk, not yet added
@@ -333,8 +331,7 @@ def chord_newton(conn: np.ndarray, pattern: "_Pattern", L: np.ndarray, X: np.nda
                 if direct:
                     local = parallel_map(chunk_solver, spans)
                 else:
-                    solver = CompatSolver(pattern.rows, pattern.cols, values(slice(None)),
-                                          pattern.m, pattern.form)
+                    solver = pattern.solver(values(slice(None)))
             except SingularStep:
                 return failed
         if local is None:
@@ -424,12 +421,24 @@ class _Pattern:
         (:func:`~trussfe.rigid.linalg.block_triangular_form`), found on first use and kept
         with the pattern (every factorisation of the model's compatibility matrices uses
         it)."""
-        form = block_triangular_form(self.rows, self.cols, self.m)
-        if form is not None:                   # shared by every caller: read only
-            for part in (*form.rows, *form.cols, *form.diag, *form.coupling):
-                for a in (part if isinstance(part, tuple) else (part,)):
-                    a.setflags(write=False)
-        return form
+        return read_only(block_triangular_form(self.rows, self.cols, self.m))
+
+    @property
+    def direct(self) -> bool:
+        """Whether its solvers keep stacked inverses (:func:`~trussfe.rigid.linalg.is_direct`;
+        from the kept form, so not kept itself)."""
+        return is_direct(self.rows, self.cols, self.m, self.form)
+
+    def solver(self, values: np.ndarray) -> CompatSolver:
+        """The factorised compatibility matrices of the steps whose entries are ``values``
+        (nt, nnz) (:meth:`values`).
+
+        Raises
+        ------
+        SingularStep
+            At the first singular step.
+        """
+        return CompatSolver(self.rows, self.cols, values, self.m, self.form)
 
     def values(self, unit: np.ndarray) -> np.ndarray:
         """Entries of B for unit vectors ``unit`` (nt, m, dim or 3) → (nt, nnz): ``−e`` at
@@ -482,7 +491,7 @@ def _factorise(pattern: _Pattern, values: np.ndarray, motion: Motion) -> CompatS
     (:meth:`_Pattern.values`), or raise at the first singular step (once: velocities,
     accelerations and member forces all use this matrix or its transpose)."""
     try:
-        return CompatSolver(pattern.rows, pattern.cols, values, pattern.m, pattern.form)
+        return pattern.solver(values)
     except SingularStep as s:
         raise AnalysisError(_step_item(motion, s.step), "the assembly is at a singular "
                             "position (its compatibility matrix is rank deficient): its "

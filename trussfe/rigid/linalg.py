@@ -411,14 +411,11 @@ class _BlockInverses:
                 c[:, f.coupling[b][0]] -= np.einsum("tij,ti...->tj...", pick(self.off[b]), y)
 
 
-#: ``form`` not given: :func:`block_triangular_form` finds it.
-FIND_FORM = object()
-
-
-def _form(rows: np.ndarray, cols: np.ndarray, n: int, form) -> BlockTriangularForm | None:
-    """``form``, or when it is :data:`FIND_FORM` the block-triangular form of the pattern
-    (none needed when no block could be small enough)."""
-    if form is not FIND_FORM:
+def _form(rows: np.ndarray, cols: np.ndarray, n: int,
+          form: BlockTriangularForm | None) -> BlockTriangularForm | None:
+    """``form``, or when it is not given the pattern's block-triangular form (none is needed
+    when no block could be small enough)."""
+    if form is not None:
         return form
     return block_triangular_form(rows, cols, n) if DENSE_LIMIT > 0 else None
 
@@ -428,7 +425,8 @@ def _blocks_pay(form: BlockTriangularForm | None) -> bool:
     return form is not None and form.n_blocks > 1 and form.max_size <= DENSE_LIMIT
 
 
-def is_direct(rows: np.ndarray, cols: np.ndarray, n: int, form=FIND_FORM) -> bool:
+def is_direct(rows: np.ndarray, cols: np.ndarray, n: int,
+              form: BlockTriangularForm | None = None) -> bool:
     """Whether :class:`CompatSolver` keeps stacked inverses (no refinement) for this pattern;
     ``form``: its :func:`block_triangular_form`, when the caller keeps it."""
     return n <= DENSE_LIMIT or _blocks_pay(_form(rows, cols, n, form))
@@ -465,7 +463,7 @@ class CompatSolver:
     """
 
     def __init__(self, rows: np.ndarray, cols: np.ndarray, vals: np.ndarray, n: int,
-                 form=FIND_FORM):
+                 form: BlockTriangularForm | None = None):
         self.n = n
         self.nt = vals.shape[0]
         self.inverse = None

@@ -27,7 +27,7 @@ from .buckling import BucklingCheck, buckling_check
 from .forces import (MemberBodies, NodalForces, forces_from_tensions, member_bodies,
                      nodal_forces_with_static, pair_loads)
 from .kinematics import Kinematics, _Pattern, compute_kinematics, solve_motion_positions
-from .linalg import SingularStep, is_direct
+from .linalg import SingularStep
 from .motion import Motion, check_stroke, rest_motion
 from .sections import (SectionForces, SectionStresses, section_forces, section_stresses,
                        section_tension)
@@ -275,7 +275,7 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
         # in the threads (measured on a shared 2-core machine with two threads: the slew
         # 0.32 s whole-motion against 0.34–0.43 s in blocks, the 100-bay chain 2.9–3.4 s
         # against 3.1–3.3 s).
-        if is_direct(pattern.rows, pattern.cols, pattern.m, pattern.form):
+        if pattern.direct:
             kin_all = compute_kinematics(structure, motion, scheme=scheme, coords=X)
             # Member loads block by block, the member tensions of all steps in one solve (a
             # loop over the diagonal blocks, paid once), then the rest block by block.
