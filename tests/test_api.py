@@ -232,14 +232,18 @@ CLI_CASES = [
 def test_to_dict_is_the_cli_json(command, model, argv, options, tmp_path, monkeypatch, capsys):
     """``trussfe COMMAND MODEL ... --json OUT`` writes exactly ``to_dict()`` of the API call
     with the same options (run in-process from an unrelated working directory: relative
-    motion paths are found beside the model)."""
+    motion paths are found beside the model).  The document starts with ``units``,
+    ``command`` and ``model`` (docs/json.md, "Conventions")."""
     monkeypatch.chdir(tmp_path)
     out = tmp_path / "out.json"
     assert main([command, str(MESHES / model), *argv, "--json", str(out)]) == 0
     capsys.readouterr()
     doc = api.ANALYSES[command](MESHES / model, **options).to_dict()
-    assert json.loads(out.read_text()) == doc
-    assert doc["command"] == command
+    written = json.loads(out.read_text())
+    assert written == doc
+    assert list(written)[:3] == ["units", "command", "model"]
+    assert (written["units"], written["command"], written["model"]) == \
+        ("SI", command, trussfe.read_model(MESHES / model).name)
 
 
 # ---------------------------------------------------------------- options

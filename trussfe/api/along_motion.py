@@ -8,6 +8,7 @@ from typing import Any, Callable, ClassVar
 
 import numpy as np
 
+from ..io.json_document import result_json
 from ..model.bar_models import BAR_MODELS
 from .model import ModelLike, as_structure, refuse_member_loads
 from .options import choice
@@ -186,10 +187,9 @@ class ElasticResult(Result):
             if s.supports[i, :dim].any():
                 d["reaction"] = resp.reactions[:, i].tolist()
             nodes[nid] = d
-        return {"units": "SI", "command": "elastic", "model": s.name,
-                "bar_model": "pinned-beam", "subdivisions": resp.subdivisions,
-                "time": sim.time.tolist(), "members": members, "nodes": nodes,
-                "comparison": self.comparison}
+        return result_json("elastic", s.name, bar_model="pinned-beam",
+                               subdivisions=resp.subdivisions, time=sim.time.tolist(),
+                               members=members, nodes=nodes, comparison=self.comparison)
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -263,7 +263,7 @@ class TransientResult(Result):
                 "moment": res.moment[:, j].tolist(),
                 "moment_quasi_static": res.moment_qs[:, j].tolist(),
                 "moment_rigid": res.moment_rigid[:, j].tolist()}
-        return {"units": "SI", "command": "transient", "model": s.name,
+        return {**result_json("transient", s.name),
                 "time": res.time.tolist(), "members": members,
                 "nodes": {nid: {"displacement": res.displacement[:, i].tolist()}
                           for i, nid in enumerate(s.node_ids)},

@@ -11,6 +11,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 from ..errors import InputError
+from ..io.json_document import result_json
 from .model import ModelLike, as_structure
 from .results import Result
 
@@ -210,7 +211,7 @@ class MechanismResult(Result):
             return out
 
         doc = {
-            "units": "SI", "command": "mechanism", "model": s.name,
+            **result_json("mechanism", s.name),
             "rank": r.rank, "mechanisms": r.mechanisms,
             "rigid_body_motions": r.rigid_body_motions,
             "self_stress_states": r.self_stress_states,
@@ -300,9 +301,9 @@ class TraceResult(Result):
                 entry["iterations"] = int(r.iterations[k - 1])
             path.append(entry)
         o = self.options or {}
-        return {"units": "SI", "command": "trace", "model": s.name, "drive": o.get("drive"),
-                "step": o.get("step"), "steps": o.get("steps"), "branch": o.get("branch"),
-                "path": path, "events": r.events}
+        return result_json("trace", s.name, drive=o.get("drive"), step=o.get("step"),
+                               steps=o.get("steps"), branch=o.get("branch"), path=path,
+                               events=r.events)
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -372,7 +373,7 @@ class TopologyResult(Result):
         g = t.graph
         Ba = t.complete_cycles
         return {
-            "units": "SI", "command": "topology", "model": self.structure.name,
+            **result_json("topology", self.structure.name),
             "counts": {"joints": len(ids), "edges": len(edges),
                        "tree_edges": int(g.tree.size), "links": int(g.links.size),
                        "cycles": None if Ba is None else int(Ba.shape[0])},

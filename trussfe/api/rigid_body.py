@@ -9,6 +9,7 @@ from typing import Callable, ClassVar
 import numpy as np
 
 from ..errors import InputError
+from ..io.json_document import result_json
 from ..model.structure import Structure
 from .model import ModelLike, as_structure, refuse_member_loads, resolve_beside
 from .options import choice, positive_int
@@ -280,5 +281,4 @@ class ActuatorsResult(Result):
                 **{k: peak(np.asarray(h[k])) for k in self.QUANTITIES},
                 "flags": list(h["flags"]),
             }
-        return {"units": "SI", "command": "actuators", "model": self.structure.name,
-                "actuators": out}
+        return result_json("actuators", self.structure.name, actuators=out)

@@ -28,6 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import AnalysisError, InputError
+from ..io.json_document import result_json
 from ..mechanics.euler import member_euler_loads
 from ..linalg.eigen import DENSE_BUCKLING_LIMIT, buckling_pairs
 from ..model.structure import Structure
@@ -201,15 +202,13 @@ def buckling_json(result: BucklingResult, command: str = "buckling") -> dict:
                      "buckling_utilisation": float(result.utilisation[i])}
                for i, mid in enumerate(s.member_ids)}
     crit = result.critical_load_factor
-    return {
-        "units": "SI",
-        "command": command,
-        "model": s.name,
-        "bar_model": fe.bar_model,
-        "subdivisions": fe.subdivisions,
-        "n_dof": fe.n_dof,
-        "load_factors": result.load_factors.tolist(),
-        "critical_load_factor": crit if np.isfinite(crit) else None,
-        "modes": modes,
-        "members": members,
-    }
+    return result_json(
+        command, s.name,
+        bar_model=fe.bar_model,
+        subdivisions=fe.subdivisions,
+        n_dof=fe.n_dof,
+        load_factors=result.load_factors.tolist(),
+        critical_load_factor=crit if np.isfinite(crit) else None,
+        modes=modes,
+        members=members,
+    )

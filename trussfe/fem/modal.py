@@ -52,6 +52,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from ..errors import AnalysisError, InputError
+from ..io.json_document import result_json
 from ..mechanics.geometry import member_vectors, unit_vectors
 from ..mechanics.mass import gyration_squared, mass_per_length, rigid_line_mass, tube_moments
 from ..model.structure import Structure
@@ -588,17 +589,15 @@ def modes_json(result: ModalResult, command: str = "modes") -> dict:
             "effective_mass": dict(zip(axes, result.effective_mass[i].tolist())),
             "shape": {nid: shapes[i, j, :dim].tolist() for j, nid in enumerate(s.node_ids)},
         })
-    return {
-        "units": "SI",
-        "command": command,
-        "model": s.name,
-        "bar_model": fe.bar_model,
-        "subdivisions": fe.subdivisions,
-        "mass": result.mass_kind,
-        "n_dof": fe.n_dof,
-        "n_free_dof": int(fe.free.size),
-        "rigid_modes": int(result.rigid_modes),
-        "frequencies_hz": result.frequencies_hz.tolist(),
-        "total_mass": dict(zip(axes, result.total_mass.tolist())),
-        "modes": modes,
-    }
+    return result_json(
+        command, s.name,
+        bar_model=fe.bar_model,
+        subdivisions=fe.subdivisions,
+        mass=result.mass_kind,
+        n_dof=fe.n_dof,
+        n_free_dof=int(fe.free.size),
+        rigid_modes=int(result.rigid_modes),
+        frequencies_hz=result.frequencies_hz.tolist(),
+        total_mass=dict(zip(axes, result.total_mass.tolist())),
+        modes=modes,
+    )

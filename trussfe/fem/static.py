@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import AnalysisError, InputError
+from ..io.json_document import result_json
 from ..mechanics.stress import round_sections, von_mises
 from ..model.member_loads import MemberLoad
 from ..model.structure import DOF_NAMES, Structure
@@ -480,15 +481,13 @@ def static_json(result: StaticResult, command: str = "static") -> dict:
         }
         if i in along:
             members[mid]["stations"] = along[i]
-    return {
-        "units": "SI",
-        "command": command,
-        "model": s.name,
-        "bar_model": fe.bar_model,
-        "subdivisions": fe.subdivisions,
-        "dof_names": list(names),
-        "n_dof": fe.n_dof,
-        "residual": result.residual,
-        "nodes": nodes,
-        "members": members,
-    }
+    return result_json(
+        command, s.name,
+        bar_model=fe.bar_model,
+        subdivisions=fe.subdivisions,
+        dof_names=list(names),
+        n_dof=fe.n_dof,
+        residual=result.residual,
+        nodes=nodes,
+        members=members,
+    )

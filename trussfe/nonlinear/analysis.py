@@ -27,6 +27,7 @@ import numpy as np
 
 from ..errors import AnalysisError
 from ..io.extension_tables import AXES, parse_monitor
+from ..io.json_document import result_json
 from ..io.model_file import read_model
 from ..mechanics.euler import member_euler_loads
 from ..model.bar_models import DEFAULT_POSTCRITICAL_SUBDIVISIONS
@@ -145,11 +146,11 @@ def result_document(result: PathResult) -> dict:
             ev["strain"] = float(e.force)
             ev["law_limit"] = float(e.threshold)
         events.append(ev)
-    doc = {"units": "SI", "command": "postcritical", "model": s.name,
-           "monitor": monitor_label(result.model, result.monitor),
-           "path": path, "events": events, "termination": result.termination,
-           "max_load_factor": float(max(p.load_factor for p in result.path)),
-           "gravity_dead_load": bool(np.any(result.model.dead != 0))}
+    doc = result_json("postcritical", s.name,
+                          monitor=monitor_label(result.model, result.monitor),
+                          path=path, events=events, termination=result.termination,
+                          max_load_factor=float(max(p.load_factor for p in result.path)),
+                          gravity_dead_load=bool(np.any(result.model.dead != 0)))
     mot = result.mechanism
     if mot is not None:
         alive = result.path[-1].alive

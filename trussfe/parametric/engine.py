@@ -30,6 +30,7 @@ from pathlib import Path
 from typing import Any, Iterator
 
 from ..errors import InputError
+from ..io.json_document import result_json
 from .design import design
 from .runner import run_batch, run_one
 from .spec import Study
@@ -205,10 +206,9 @@ class StudyRun:
         errors = df.loc[df["status"] == "error", ["run_id", "error"]] if len(df) else []
         n_err = int(len(errors))
         return {
-            "units": "SI", "command": "study", "study": self.study.name,
-            "analysis": list(self.study.analyses),
-            "model": str(self.study.model_file) if self.study.model_file
-            else f"catalogue:{self.study.catalogue}",
+            **result_json("study", str(self.study.model_file) if self.study.model_file
+                              else f"catalogue:{self.study.catalogue}"),
+            "study": self.study.name, "analysis": list(self.study.analyses),
             "runs": self.study.n_runs, "grid_points": self.study.n_grid,
             "samples": self.study.samples, "seed": self.study.seed,
             "complete": self.complete, "stored": int(len(df)),

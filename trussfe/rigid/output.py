@@ -10,6 +10,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..io.json_document import result_json
 from ..io.output import atomic_dir, atomic_path
 from .active import active_members
 from .simulate import SimulationResult
@@ -56,9 +57,9 @@ def to_json(res: SimulationResult) -> dict:
             entry["acceleration"] = res.motion.acceleration[:, col]
         entry.update(res.actuators.get(aid, {}))
         actuators[aid] = entry
-    return {"units": "SI", "command": "simulate", "model": s.name, "time": res.time,
-            "options": res.options, "members": members, "nodes": nodes,
-            "actuators": actuators, "summary": {"members": summary}}
+    return result_json("simulate", s.name, time=res.time, options=res.options,
+                           members=members, nodes=nodes, actuators=actuators,
+                           summary={"members": summary})
 
 
 def write_npz(path: str | Path, res: SimulationResult) -> None:
