@@ -51,6 +51,23 @@ def test_higher_modes_n_squared():
     assert_allclose(r.load_factors / r.load_factors[0], [1, 4, 9], rtol=1e-3)
 
 
+def test_mode_scaled_by_its_largest_translation():
+    """The first mode of a pinned 1 m column is sin(πx/L) (Timoshenko & Gere §2.1) with +1 at
+    mid-length, wherever it lies: its end rotations, ±π rad, do not set the scale, and the
+    joints, which do not move, read zero."""
+    s = column(1.0)
+    res = solve_buckling(s, count=1, subdivisions=8)
+    st = res.fe.station_displacements(res.shapes[:, 0])[0]          # (9, 2): x, y
+    x = np.linspace(0.0, 1.0, 9)
+    assert_allclose(st[:, 0], np.sin(np.pi * x), atol=1e-6)
+    assert st[4, 0] == 1.0 and np.abs(st[:, 1]).max() < 1e-12
+    rot = np.abs(res.shapes[:, 0]).max()
+    assert_allclose(rot, np.pi, rtol=1e-2)                          # an end's own rotation
+    assert np.abs(res.node_shapes()[0]).max() < 1e-12
+    doc = buckling_json(res)
+    assert all(max(map(abs, v)) < 1e-12 for v in doc["modes"][0]["shape"].values())
+
+
 def test_3d_column_two_planes():
     r = solve_buckling(column(2.0, dim=3), count=2, subdivisions=8)
     assert_allclose(r.load_factors[0], r.load_factors[1], rtol=1e-9)

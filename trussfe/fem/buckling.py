@@ -54,7 +54,9 @@ class BucklingResult:
     load_factors : ndarray, shape (k,)
         λ, ascending by absolute value, sign kept.
     shapes : ndarray, shape (n_dof, k)
-        Buckling modes (largest component +1).
+        Buckling modes, scaled so that the largest translation component over the joints
+        and the stations along the members is +1
+        (:meth:`~trussfe.fem.discretisation.FEModel.largest_translations`).
     euler_load : ndarray, shape (m,)
         Member Euler loads (Lacy eq. 2.26), N.
     utilisation : ndarray, shape (m,)
@@ -171,9 +173,9 @@ def solve_buckling(structure: Structure, count: int = 4, bar_model: str = "pinne
                             f"ones exist (the geometric stiffness has rank {found} on the free "
                             "DOFs); use a smaller --count")
     lam = 1.0 / mu
-    V = V / V[np.argmax(np.abs(V), axis=0), np.arange(V.shape[1])]
     shapes = np.zeros((fe.n_dof, V.shape[1]))
     shapes[free] = V
+    shapes /= fe.largest_translations(shapes)
     pe = member_euler_loads(structure)
     util = np.maximum(-static.axial_force, 0.0) / pe
     log.info("buckling: λ1 = %.6g (%d free DOFs)", lam[0], n)

@@ -1109,6 +1109,35 @@ class FEModel:
             out[emem[els][lastmask], k[emem[els]][lastmask]] = glob[lastmask, 1]
         return out
 
+    def largest_translations(self, U: np.ndarray) -> np.ndarray:
+        """The translation component of largest magnitude, sign kept, of each column of ``U``
+        (n_dof, k) over the joints and every station along the members.
+
+        A mode scaled by it has a largest translation component of +1 wherever that lies —
+        a member buckling between its joints moves a station most — and a scale free of the
+        rotations, whose unit differs.  A column that translates nothing gives its
+        component of largest magnitude instead.
+
+        Returns
+        -------
+        ndarray, shape (k,)
+        """
+        U = np.asarray(U, dtype=float).reshape(self.n_dof, -1)
+        dim = self.ndim
+        k = self.member_subdivisions
+        # the stations between a member's ends (its ends are joints, read exactly there)
+        j = np.arange(int(k.max()) + 1 if k.size else 1)
+        inside = (j >= 1) & (j < k[:, None])
+        out = np.empty(U.shape[1])
+        for i in range(U.shape[1]):
+            values = np.concatenate([self.node_values(U[:, i])[:, :dim].ravel(),
+                                     self.station_displacements(U[:, i])[inside].ravel()])
+            largest = values[np.argmax(np.abs(values))] if values.size else 0.0
+            if abs(largest) <= 1e-12 * np.abs(U[:, i]).max():
+                largest = U[np.argmax(np.abs(U[:, i])), i]
+            out[i] = largest
+        return out
+
     def dof_points(self) -> Points:
         """Where every DOF sits (:class:`~trussfe.linalg.ordering.Points`, for the geometric
         ordering of :func:`trussfe.linalg.factor`): a joint's translations and rotations and
