@@ -238,6 +238,25 @@ def test_coincident_nodes_warned_in_one_line(tmp_path, capsys):
     assert capsys.readouterr().err == ""
 
 
+def test_a_failed_run_says_only_its_error(tmp_path, capsys):
+    """Coincident unjoined nodes make a mechanism: the run fails, and its stderr is the one
+    error line (the warning met on the way is shown with --verbose, before it); a modal run
+    of a mechanism succeeds with its zero-frequency count in its table and nothing on
+    stderr."""
+    p = tmp_path / "m.toml"
+    p.write_text(hc.GOOD.replace("C = [1.0, 0.0]\n", "C = [1.0, 0.0]\nD = [1.0, 0.0]\n"))
+    assert main(["static", str(p)]) == 2
+    err = capsys.readouterr().err.splitlines()
+    assert len(err) == 1 and err[0].startswith("trussfe: error: ") and "mechanism" in err[0]
+    assert main(["-v", "static", str(p)]) == 2
+    err = capsys.readouterr().err
+    assert "'C' and 'D' coincide" in err and err.splitlines()[-1].startswith("trussfe: error")
+    mech = Path(__file__).resolve().parents[1] / "meshes" / "mech_fourbar.toml"
+    assert main(["modes", str(mech)]) == 0
+    out, err = capsys.readouterr()
+    assert "zero-frequency mode(s)" in out and err == ""
+
+
 # ----------------------------------------------------------------------------- progress
 def test_trace_progress_only_on_a_terminal(tmp_path, capsys, monkeypatch):
     import trussfe.cli.cmd_trace as cmd

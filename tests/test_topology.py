@@ -13,7 +13,8 @@ import trussfe
 from trussfe.cli import main
 from trussfe.errors import InputError
 from trussfe.kinematics.cycles import complete_cycle_matrix, cycle_rates
-from trussfe.kinematics.topology import cycle_kinematics, equivalent_assembly, graph_topology
+from trussfe.kinematics.topology import (cycle_kinematics, equivalent_assembly,
+                                         graph_topology, incidence_matrix)
 from trussfe.kinematics.velocity import mechanism_acceleration, mechanism_velocity
 from trussfe.model.sections import Material, Section
 from trussfe.model.structure import build_structure
@@ -86,6 +87,35 @@ def test_topology_json_and_summary(tmp_path, capsys):
     assert [e["kind"] for e in d["edges"]].count("ground") == 3
     assert d["ground"] == ["1", "2", "7", "8"] and d["reference"] == "1"
     assert sorted(d["tree"] + d["cotree"]) == sorted(e["id"] for e in d["edges"])
+
+
+@pytest.mark.parametrize("n_nodes, edges", [
+    (3, [(0, 1), (1, 0), (1, 2), (2, 0)]),                 # a parallel pair and a triangle
+    (2, [(0, 1), (1, 0), (0, 1)]),                          # three edges between two joints
+    (4, [(0, 1), (1, 2), (2, 3), (3, 0), (2, 1), (0, 2)]),  # K4 less one edge, one repeated
+])
+def test_parallel_edges_make_cycles_of_their_own(n_nodes, edges):
+    """Parallel edges (a bar between two ground joints beside the edge closing the ground):
+    the tree has n − 1 edges, the cotree the other s − n + 1 (the cyclomatic number of a
+    connected graph), and every fundamental cycle is a cycle — in the null space of the
+    incidence matrix, A Cᵀ = 0 — that uses its own link once (graph theory, Vlase eq. 2)."""
+    conn = np.array(edges)
+    t = graph_topology(n_nodes, conn)
+    s = len(edges)
+    assert t.tree.size == n_nodes - 1 and t.links.size == s - n_nodes + 1
+    assert sorted(np.r_[t.tree, t.links].tolist()) == list(range(s))
+    A = incidence_matrix(n_nodes, conn).toarray()
+    assert not np.any(A @ t.cycle_matrix.T)
+    assert np.array_equal(t.cycle_matrix[:, t.links], np.eye(t.links.size, dtype=np.int64))
+
+
+def test_supported_joints_joined_by_members(tmp_path, capsys):
+    """A model whose members join supported joints (the ground's own edges beside them):
+    one line, exit 0, with 8 joints, 10 edges, a tree of 7 and 3 fundamental cycles
+    (s − n + 1)."""
+    assert main(["topology", str(MESHES / "loads_closed_forms.toml")]) == 0
+    line = capsys.readouterr().out
+    assert "8 joints, 10 edges" in line and "tree of 7 edges, 3 fundamental cycle(s)" in line
 
 
 def test_slider_and_plate_edges():

@@ -28,7 +28,7 @@ from ..errors import TrussfeError, one_line
 from ..io.output import output_transaction
 from ..io.toml_text import compiled_parser
 from ..threads import compute_threads
-from .options import check_paths
+from .options import INPUT_OPTIONS, check_paths
 
 #: What a numerical overflow in a run usually means, appended to its message.
 UNITS_HINT = ("a value is out of the range of floating-point numbers; check the units "
@@ -149,17 +149,48 @@ def main(argv: list[str] | None = None) -> int:
         return 2
     # the run's own log handler on the "trussfe" logger (messages as "trussfe: ..." on the
     # stderr of this run), removed again afterwards: main() may run many times in a process
+    # Without --verbose the warnings are held until the run ends and shown only when it
+    # succeeds: a run that fails says so in one line, whatever it noticed on the way.
     log = logging.getLogger("trussfe")
-    handler = logging.StreamHandler(sys.stderr)
+    held = _HeldLines()
+    handler = logging.StreamHandler(sys.stderr) if args.verbose else held
     handler.setFormatter(logging.Formatter("trussfe: %(message)s"))
     old_level = log.level
     log.setLevel(logging.INFO if args.verbose else logging.WARNING)
     log.addHandler(handler)
+    status = 3
     try:
-        return _run_command(args)
+        status = _run_command(args)
+        return status
     finally:
         log.removeHandler(handler)
         log.setLevel(old_level)
+        if status not in FAILED:
+            held.write_to(sys.stderr)
+
+
+#: Exit statuses of a run that did not complete (bad input, an internal fault, Ctrl-C, a
+#: closed output pipe): its one error line stands alone.
+FAILED = frozenset({2, 3, 130, 128 + signal.SIGPIPE})
+
+
+class _HeldLines(logging.Handler):
+    """A log handler that keeps the formatted lines of a run for :meth:`write_to`."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.lines: list[str] = []
+
+    def emit(self, record: logging.LogRecord) -> None:
+        self.lines.append(self.format(record))
+
+    def write_to(self, stream) -> None:
+        """Write the kept lines, one each, and forget them."""
+        with contextlib.suppress(OSError):
+            for line in self.lines:
+                stream.write(line + "\n")
+            stream.flush()
+        self.lines.clear()
 
 
 def _run_command(args: argparse.Namespace) -> int:
@@ -171,6 +202,10 @@ def _run_command(args: argparse.Namespace) -> int:
         # (trussfe.io.toml_text)
         with _numerics_checked() as caught, output_transaction() as tx, \
                 compute_threads(workers=environment_workers(), blas=1), compiled_parser():
+            for name in INPUT_OPTIONS:
+                value = getattr(args, name, None)
+                if isinstance(value, str) and value:
+                    tx.read_from(value, "the model file" if name == "model" else f"--{name}")
             status = int(args.func(args) or 0)
             sys.stdout.flush()          # a closed pipe is found here, before the commit
             with _interrupts_held():

@@ -505,7 +505,8 @@ def _zero_frequency_modes(Kff, Mff, fac, item: str):
     kd, md = Kff.diagonal(), Mff.diagonal()
     ok = (kd > 0) & (md > 0)
     lam_ref = float(np.median(kd[ok] / md[ok])) if np.any(ok) else 1.0
-    log.warning("%s: %d zero-frequency (rigid-body or mechanism) mode%s", item, rigid,
+    # the command's table says so too: a note for --verbose, not a warning
+    log.info("%s: %d zero-frequency (rigid-body or mechanism) mode%s", item, rigid,
                 "s" if rigid != 1 else "")
     return rigid, -1e-6 * lam_ref, None
 

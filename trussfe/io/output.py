@@ -40,6 +40,9 @@ class OutputTransaction:
 
     pending: list[tuple[Path, Path, bool]] = field(default_factory=list)
     created: list[Path] = field(default_factory=list)
+    #: Files the run reads (resolved path → what it is, e.g. "the model file"), which no
+    #: output may replace.
+    inputs: dict[str, str] = field(default_factory=dict)
     done: bool = False
     #: Refuse JSON results holding a non-finite number (see :func:`write_json`).
     finite_only: bool = True
@@ -56,10 +59,51 @@ class OutputTransaction:
         folder.mkdir(parents=True, exist_ok=True)
         self.created += [m for m in reversed(missing) if m not in self.created]
 
+    def read_from(self, path: str | Path, what: str) -> None:
+        """Record that the run reads ``path`` (described as ``what``): no output may replace
+        it."""
+        self.inputs[os.path.realpath(path)] = what
+
+    def _check_destinations(self) -> None:
+        """Refuse, before anything is renamed, an output file that another output of the run
+        or one of its inputs already is — a name given twice, a file inside an output
+        folder, the ``_stations`` file beside a ``.vtu``: only the set of files to be
+        written shows every such pair."""
+        folders = {os.path.realpath(tmp): final for tmp, final, is_dir in self.pending if is_dir}
+        waiting = {os.path.realpath(tmp) for tmp, _, _ in self.pending}
+
+        def destination(path: Path) -> Path:
+            # a file written into an output folder's temporary twin ends up in the folder
+            real = os.path.realpath(path)
+            for tmp, final in folders.items():
+                if real.startswith(tmp + os.sep):
+                    return final / os.path.relpath(real, tmp)
+            return path
+
+        seen: dict[str, str] = {}
+        for tmp, final, is_dir in self.pending:
+            if is_dir:
+                files = [destination(f) for f in sorted(tmp.rglob("*"))
+                         if f.is_file() and os.path.realpath(f) not in waiting]
+                source = f" (in the folder '{final}')"
+            else:
+                files = [destination(final)]
+                source = "" if files[0] is final else f" (in the folder '{files[0].parent}')"
+            for path in files:
+                key = os.path.realpath(path)
+                if key in self.inputs:
+                    raise OutputError(str(path), f"is also {self.inputs[key]}; writing it "
+                                      "would overwrite it — choose another name")
+                if key in seen:
+                    raise OutputError(str(path), "would be written twice by this run"
+                                      f"{seen[key] or source} — choose another name")
+                seen[key] = source
+
     def commit(self) -> None:
         """Rename every output into place (under a lock on each destination folder)."""
         if self.done:
             return
+        self._check_destinations()
         folders = sorted({str(final.parent.resolve()) for _, final, _ in self.pending})
         with contextlib.ExitStack() as stack:
             for folder in folders:

@@ -100,9 +100,14 @@ def graph_topology(n_nodes: int, connectivity: np.ndarray, reference: int = 0) -
     """
     conn = np.asarray(connectivity, dtype=np.int64).reshape(-1, 2)
     s = conn.shape[0]
-    adj = sp.csr_matrix((np.arange(1, s + 1), (conn[:, 0], conn[:, 1])),
+    # One edge per pair of joints carries the tree (the first of parallel edges, such as a
+    # bar between two ground joints beside the edge closing the ground): a sparse matrix
+    # built from repeated pairs would add their indices up.
+    lo, hi = np.minimum(conn[:, 0], conn[:, 1]), np.maximum(conn[:, 0], conn[:, 1])
+    _, first = np.unique(lo * n_nodes + hi, return_index=True)
+    sym = sp.csr_matrix((np.r_[first, first] + 1, (np.r_[lo[first], hi[first]],
+                                                    np.r_[hi[first], lo[first]])),
                         shape=(n_nodes, n_nodes))
-    sym = (adj + adj.T).tocsr()
     order, pred = csg.breadth_first_order(sym, reference, directed=False,
                                           return_predecessors=True)
     if order.size != n_nodes:
@@ -113,9 +118,7 @@ def graph_topology(n_nodes: int, connectivity: np.ndarray, reference: int = 0) -
     child = order[1:]
     parent = pred[child]
     # edge index of each (parent, child) pair, whichever way the edge is oriented
-    e1 = np.asarray(adj[parent, child]).ravel()
-    e2 = np.asarray(adj[child, parent]).ravel()
-    tree = np.where(e1 > 0, e1, e2) - 1
+    tree = np.asarray(sym[parent, child]).ravel() - 1
     links = np.setdiff1d(np.arange(s), tree)
     A = reduced_incidence_matrix(n_nodes, conn, reference)
     At = A[:, tree].tocsc().astype(float)

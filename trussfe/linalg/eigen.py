@@ -27,6 +27,8 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from ..errors import AnalysisError
+
 log = logging.getLogger(__name__)
 
 #: Relative residual bound ``|β_m s_mi| ≤ tol |μ_i|`` at which a Ritz pair is converged.
@@ -233,6 +235,49 @@ def nearest_zero_mode(K: sp.spmatrix) -> tuple[float, np.ndarray]:
     return float(w[0]), v[:, 0] / np.linalg.norm(v[:, 0])
 
 
+#: Restarts of ARPACK's first try at a buckling problem before the wider second one.
+ARPACK_FIRST_RESTARTS = 300
+#: Lanczos vectors of the second try: more than a group of equal load factors is likely to
+#: hold (every equal member of a repetitive truss buckling alike, in two planes).
+ARPACK_WIDE_VECTORS = 64
+#: Order up to which a buckling problem ARPACK cannot converge is solved densely.
+DENSE_BUCKLING_FALLBACK = 6000
+
+
+def _arpack_buckling(A: sp.csc_matrix, M: sp.csc_matrix, Minv, k: int, which: str
+                     ) -> tuple[np.ndarray, np.ndarray]:
+    """``k`` eigenpairs of ``A φ = μ M φ`` (``which`` end) by ARPACK, robust to clusters.
+
+    Many equal load factors — the identical members of a repetitive truss, each buckling
+    between its joints — make an eigenvalue of high multiplicity, which ARPACK's default
+    number of Lanczos vectors (2k + 1) cannot resolve: it then restarts until its iteration
+    limit (ten times the order).  The first try stops early; a second one keeps
+    :data:`ARPACK_WIDE_VECTORS` vectors; a problem that still does not converge is solved
+    densely up to :data:`DENSE_BUCKLING_FALLBACK` unknowns, and refused above.
+
+    Raises
+    ------
+    AnalysisError
+        ARPACK did not converge and the problem is too large to solve densely.
+    """
+    n = A.shape[0]
+    try:
+        return spla.eigsh(A, k=k, M=M, Minv=Minv, which=which, maxiter=ARPACK_FIRST_RESTARTS)
+    except spla.ArpackNoConvergence:
+        pass
+    ncv = min(n - 1, max(2 * k + 1, k + ARPACK_WIDE_VECTORS))
+    try:
+        return spla.eigsh(A, k=k, M=M, Minv=Minv, which=which, ncv=ncv)
+    except spla.ArpackNoConvergence:
+        if n > DENSE_BUCKLING_FALLBACK:
+            raise AnalysisError("buckling", f"the eigen-solver did not converge on {n:,} "
+                                "unknowns (many equal or close load factors); ask for more "
+                                "load factors (--count) to take in a whole group of equal "
+                                "ones, or use fewer subdivisions") from None
+    log.info("buckling: ARPACK did not converge on %d unknowns; solved densely", n)
+    return sla.eigh(A.toarray(), M.toarray())
+
+
 #: Order up to which a buckling eigenproblem is solved densely (LAPACK); above it, by ARPACK.
 #: Dense is also deterministic in the modes' signs (ARPACK's depend on its start vector),
 #: which matters where a mode becomes an imperfection.
@@ -283,13 +328,11 @@ def buckling_pairs(K: sp.spmatrix, Kg: sp.spmatrix, count: int, *,
     n = K.shape[0]
     if n <= dense_limit or count >= n - 1:
         mu, V = sla.eigh(-Kg.toarray(), K.toarray())
-    elif positive_only:
-        k = min(max(2 * count, count + 4), n - 2)
-        op = None if solve is None else spla.LinearOperator((n, n), matvec=solve, dtype=float)
-        mu, V = spla.eigsh(-Kg.tocsc(), k=k, M=K.tocsc(), Minv=op, which="LA")
     else:
+        k = min(max(2 * count, count + 4), n - 2) if positive_only else count
         op = None if solve is None else spla.LinearOperator((n, n), matvec=solve, dtype=float)
-        mu, V = spla.eigsh(-Kg.tocsc(), k=count, M=K.tocsc(), Minv=op, which="LM")
+        mu, V = _arpack_buckling(-Kg.tocsc(), K.tocsc(), op, k,
+                                 "LA" if positive_only else "LM")
     if positive_only:
         pos = mu > 1e-12 * np.abs(mu).max() if mu.size else np.zeros(0, bool)
         order = np.argsort(-mu[pos])[:count]
