@@ -140,10 +140,12 @@ def test_slider_and_plate_edges():
     (["nobars"], "no members"),
     (["mech_fourbar.toml", "--drive", "2:y"], "unrecognized arguments"),
     (["free"], "no node is fixed"),
-    (["split"], "not connected"),
+    (["split"], "split.toml: the assembly is not connected: node(s) 'C', 'D' cannot be reached "
+                "from node 'A'"),
 ])
 def test_bad_input_is_one_line_exit_2(argv, message, tmp_path, capsys, monkeypatch):
-    """Bad input: one line ``trussfe: error: ...`` and exit status 2."""
+    """Bad input: one line ``trussfe: error: ...`` and exit status 2, naming the file and the
+    model's ids."""
     head = '[model]\nname = "m"\ndimension = 2\n[materials.al]\nE = 7e10\n' \
            '[sections.t]\narea = 1e-4\n'
     mem = '{ nodes = ["%s", "%s"], section = "t", material = "al" }'

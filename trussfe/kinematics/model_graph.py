@@ -29,7 +29,8 @@ import scipy.sparse as sp
 from ..errors import InputError
 from ..model.structure import Structure
 from .cycles import MAX_COMPLETE_CYCLE_RANK, complete_cycle_matrix
-from .topology import EquivalentAssembly, GraphTopology, equivalent_assembly, incidence_matrix
+from .topology import (EquivalentAssembly, GraphTopology, equivalent_assembly, graph_topology,
+                       incidence_matrix)
 
 
 @dataclass
@@ -128,9 +129,10 @@ def model_topology(structure: Structure) -> ModelTopology:
     bar_idx = np.flatnonzero(~in_plate)
     eq = equivalent_assembly(structure.coords, structure.connectivity[bar_idx],
                              ground=[int(g) for g in ground], plates=plates, sliders=sliders)
-    graph = eq.topology
     n = eq.coords.shape[0]
     node_ids = list(structure.node_ids) + [f"ground:{structure.node_ids[j]}" for j in sliders]
+    graph = graph_topology(n, eq.connectivity, int(eq.ground[0]), names=node_ids,
+                           item=structure.source or structure.name)
     edge_ids = []
     for (a, b), kind, src in zip(eq.connectivity, eq.kinds, eq.source):
         if src >= 0:

@@ -82,8 +82,20 @@ class GraphTopology:
     cycle_matrix: np.ndarray
 
 
-def graph_topology(n_nodes: int, connectivity: np.ndarray, reference: int = 0) -> GraphTopology:
+def graph_topology(n_nodes: int, connectivity: np.ndarray, reference: int = 0, *,
+                   names: list[str] | None = None, item: str = "topology") -> GraphTopology:
     """Spanning tree, cotree and fundamental cycle matrix (Vlase eq. 1–2).
+
+    Parameters
+    ----------
+    n_nodes : int
+    connectivity : ndarray of int, shape (s, 2)
+    reference : int
+        The tree's root (its incidence row is dropped).
+    names : list of str, optional
+        The joints' ids, for the message of a graph that is not connected (else indices).
+    item : str
+        Where the message says the fault lies (the model file).
 
     Raises
     ------
@@ -112,9 +124,12 @@ def graph_topology(n_nodes: int, connectivity: np.ndarray, reference: int = 0) -
                                           return_predecessors=True)
     if order.size != n_nodes:
         missing = np.setdiff1d(np.arange(n_nodes), order)
-        raise InputError("topology", f"the assembly is not connected: node(s) "
-                                     f"{missing[:5].tolist()} cannot be reached from node "
-                                     f"{reference}")
+        label = (lambda i: f"'{names[i]}'") if names is not None else str
+        more = f" and {missing.size - 5} more" if missing.size > 5 else ""
+        raise InputError(item, "the assembly is not connected: node(s) "
+                         f"{', '.join(label(int(i)) for i in missing[:5])}{more} cannot be "
+                         f"reached from node {label(int(reference))} (a joint with no bar "
+                         "to the rest)")
     child = order[1:]
     parent = pred[child]
     # edge index of each (parent, child) pair, whichever way the edge is oriented
