@@ -61,7 +61,8 @@ def run_postcritical(structure: Structure, **options) -> PathResult:
                  "factor", structure.source or structure.name)
     model = NonlinearModel(structure, bar_model=opts.pop("bar_model", "truss"),
                            subdivisions=opts.pop("subdivisions",
-                                                  DEFAULT_POSTCRITICAL_SUBDIVISIONS), laws=laws)
+                                                  DEFAULT_POSTCRITICAL_SUBDIVISIONS), laws=laws,
+                           subdivisions_item=_subdivisions_item(structure, given))
     imperfection = opts.pop("imperfection", 0.0)
     if imperfection:
         _, modes = linear_buckling(model, count=1)
@@ -74,6 +75,14 @@ def run_postcritical(structure: Structure, **options) -> PathResult:
     if len(result.path) < 2 and result.termination.startswith("path cannot"):
         raise AnalysisError(structure.source or structure.name, result.termination)
     return result
+
+
+def _subdivisions_item(structure: Structure, given: dict) -> str:
+    """What gave the number of beam elements per member, to name when it is refused: the
+    option, else the model file's ``[postcritical]`` table."""
+    if "subdivisions" in given:
+        return "--subdivisions"
+    return ": ".join(filter(None, (structure.source, "postcritical.subdivisions")))
 
 
 def unmodelled_buckling(result: PathResult) -> tuple[int, float, float] | None:

@@ -21,9 +21,10 @@ from __future__ import annotations
 
 import numpy as np
 from ..errors import AnalysisError
-from ..linalg import factor
+from ..linalg import SingularMatrixError, factor
 from ..linalg.eigen import buckling_pairs
 from .model import NonlinearModel
+from .path import UNSOLVABLE_START
 
 
 def linear_buckling(model: NonlinearModel, count: int = 1):
@@ -43,12 +44,20 @@ def linear_buckling(model: NonlinearModel, count: int = 1):
     """
     free = np.flatnonzero(model.free)
     K = model.reference_tangent()[free][:, free]
+    item = model.structure.source or model.structure.name
     lu = factor(K, "spd", singular="flag")
+    # stiffnesses below the smallest normal number over the machine epsilon leave no
+    # resolvable pivot: singular by magnitude (E or the section), not by a mechanism
+    too_small = K.shape[0] > 0 and abs(K).max() < np.finfo(float).tiny / np.finfo(float).eps
     if lu.is_singular:
-        raise AnalysisError(model.structure.source or model.structure.name,
+        raise AnalysisError(item, UNSOLVABLE_START if too_small else
                             "the structure is a mechanism: no linear buckling analysis")
     u0 = np.zeros(model.ndof)
-    u0[free] = lu.solve(model.load[free])
+    try:
+        u0[free] = lu.solve(model.load[free])
+    except SingularMatrixError:
+        # the pivots passed but the solve overflowed: the same loss of magnitude
+        raise AnalysisError(item, UNSOLVABLE_START) from None
     Nt, Nb = model.linear_axial_forces(u0)
     Kg = model.reference_tangent(Nt, Nb)[free][:, free] - K
     mu, vec = buckling_pairs(K, Kg, count, positive_only=True)

@@ -74,7 +74,8 @@ class PathPoint:
         Negative eigenvalues of the tangent; None where unknown (a singular tangent, a
         factorisation that does not reveal the inertia, the mechanism stage).
     stage : str
-        ``"equilibrium"`` or ``"mechanism"`` (rigid-bar motion after the hand-over).
+        ``"equilibrium"`` or ``"mechanism"`` (rigid-bar motion after the hand-over, or the
+        collapsed state that ends a path on which every member has failed).
     """
 
     load_factor: float
@@ -348,6 +349,13 @@ def _next_sign(sign: float, neg0: int | None, neg1: int | None, limit_point: boo
     return 1.0 if ut1 @ du >= 0.0 else -1.0
 
 
+#: Why a path cannot start from a tangent whose pivots passed but whose solve is not finite.
+UNSOLVABLE_START = ("the tangent stiffness of the unloaded structure is numerically singular: "
+                    "the displacement under the reference loads is not finite (a stiffness "
+                    "too small for floating-point numbers); check E and the section "
+                    "properties in [materials] and [sections]")
+
+
 #: Default first step of displacement and arc-length control, as a fraction of the size of
 #: the structure (its largest extent).
 DEFAULT_STEP_FRACTION = 1.0 / 1000.0
@@ -458,6 +466,9 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
         No load pattern, unknown control, bad step or monitor.
     MechanismError
         The structure is a mechanism before any load is applied.
+    AnalysisError
+        The unloaded tangent passes its pivot test but its solve is not finite (a stiffness
+        below what floating-point numbers resolve).
     """
     if control not in CONTROLS:
         raise InputError("--control", f"unknown control {control!r}; valid: "
@@ -498,7 +509,12 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                              f"({nm} independent mechanism(s)); a post-critical analysis "
                              "needs a stiff start — see 'trussfe mechanism'",
                              mechanisms=nm) from None
-    ut = fac.solve(f, refine=False)
+    try:
+        ut = fac.solve(f, refine=False)
+    except SingularMatrixError:
+        # the pivots are all of one (vanishing) magnitude, so the factor passed its relative
+        # pivot test, yet the solve overflowed: no step can start from this tangent
+        raise AnalysisError(s.source or s.name, UNSOLVABLE_START) from None
     if control == "displacement":
         if abs(ut[st.c]) <= 1e-12 * np.abs(ut).max():
             raise InputError("monitor", "the reference load does not move the monitored "
@@ -873,6 +889,8 @@ def _reequilibrate(st, m, out, uf, lam, handover, record):
     """After members were removed: rank check, equilibrium at the same λ, cascades."""
     s = m.structure
     for _ in range(len(m.alive) + 1):
+        if not m.alive.any():
+            return None, None, None, _collapse(st, m, out, uf, lam)
         conn = s.connectivity[m.alive]
         x = m.positions(st.full(uf))[: s.n_nodes]
         if not s.is_beam.any():
@@ -913,6 +931,30 @@ def _reequilibrate(st, m, out, uf, lam, handover, record):
         _apply_failures(st, m, out, hit, mg, res, lam, point)
         out.events[-1].detail += " (redistribution at the same load factor)"
     return None, None, None, "too many cascading failures"
+
+
+def _collapse(st: _Stepper, m: NonlinearModel, out: PathResult, uf: np.ndarray,
+              lam: float) -> str:
+    """End the path where every member has failed: the structure has collapsed.
+
+    No member is left to carry the load, so there is neither an equilibrium to re-establish
+    nor a mechanism of bars to move.  The collapsed state closes the path — the displacements
+    at the last failure, every member failed and carrying no force, stage ``"mechanism"`` (no
+    stiffness is left) — so that the path's last point, like the VTK series, shows the
+    failures; an ``"end"`` event gives the reason.
+
+    Returns
+    -------
+    str
+        The termination reason.
+    """
+    s = m.structure
+    reason = (f"every member has failed at load factor {lam:.6g}: the structure has "
+              "collapsed (no member is left to carry the load)")
+    out.path.append(PathPoint(lam, st.full(uf), np.zeros(s.n_members), m.alive.copy(), None,
+                              "mechanism"))
+    out.events.append(Event("end", lam, None, len(out.path) - 1, detail=reason))
+    return reason
 
 
 def _release(st, uf0, lam, event_tolerance=1e-6, min_increment=1.0 / 4096):

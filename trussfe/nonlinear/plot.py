@@ -53,7 +53,9 @@ def _draw_path(ax, result: PathResult, u: np.ndarray, lam: np.ndarray, eq: np.nd
                motion: bool) -> None:
     """The equilibrium path, the mechanism motion (when ``motion``) and the events on it."""
     ax.plot(u[eq], lam[eq], ".-", lw=1.2, ms=3, label="equilibrium path")
-    if motion and (~eq).any():
+    # a collapse (every member failed) closes the path with one state off the equilibrium
+    # path at the last one's position: there is no motion of bars to draw
+    if motion and (~eq).any() and result.mechanism is not None:
         j = np.flatnonzero(~eq)
         j = np.concatenate([[j[0] - 1], j])              # from the hand-over state
         ax.plot(u[j], lam[j], "--", color="0.5", label="mechanism motion (λ held)")
