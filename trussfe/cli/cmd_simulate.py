@@ -5,11 +5,17 @@ from __future__ import annotations
 import argparse
 import logging
 from pathlib import Path
+from typing import TYPE_CHECKING
+
+import numpy as np
 
 from .. import api
 from ..io.output import write_json
 from . import options as opt
 from .progress import progress_bar
+
+if TYPE_CHECKING:
+    from ..rigid.simulate import SimulationResult
 
 log = logging.getLogger(__name__)
 
@@ -56,11 +62,45 @@ def _run(args: argparse.Namespace) -> int:
         write_vtk(args.vtk, res, stem=Path(args.model).stem)
     if args.plots:
         write_plots(args.plots, res)
-    worst = max(range(res.structure.n_members),
-                key=lambda k: res.stresses.von_mises[:, k].max())
-    summ = res.member_summary(worst)
-    print(f"{res.structure.name}: {res.time.size} steps; largest von Mises "
-          f"{summ['max_von_mises']:.5g} Pa in member {res.structure.member_ids[worst]} at "
-          f"t = {summ['time']:.4g} s; smallest buckling margin "
-          f"{res.buckling.margin.min():.3g}")
+    print(f"{res.structure.name}: {res.time.size} steps; {_stress_clause(res)}; "
+          f"{_buckling_clause(res)}")
     return 0
+
+
+def _stress_clause(res: SimulationResult) -> str:
+    """The summary's stress: the largest von Mises stress over the members that have one.
+
+    A member whose section has no outer-fibre distance c has no bending stress, so no von
+    Mises stress where it bends (NaN in the arrays, ``null`` in JSON); the clause names such
+    sections, and gives the largest axial stress instead when no member has a von Mises stress.
+    """
+    s = res.structure
+    vm = res.stresses.von_mises                                  # (step, member, section)
+    defined = np.all(np.isfinite(vm), axis=(0, 2))
+    if np.all(defined):
+        worst = max(range(s.n_members), key=lambda k: vm[:, k].max())
+        summ = res.member_summary(worst)
+        return (f"largest von Mises {summ['max_von_mises']:.5g} Pa in member "
+                f"{s.member_ids[worst]} at t = {summ['time']:.4g} s")
+    names = sorted({s.sections[k].name for k in np.flatnonzero(~defined)})
+    why = (f"section{'s' if len(names) > 1 else ''} {', '.join(names)} "
+           f"without an outer-fibre distance c")
+    if np.any(defined):
+        worst = max(np.flatnonzero(defined).tolist(), key=lambda k: vm[:, k].max())
+        summ = res.member_summary(worst)
+        n_out = int(np.count_nonzero(~defined))
+        return (f"largest von Mises {summ['max_von_mises']:.5g} Pa in member "
+                f"{s.member_ids[worst]} at t = {summ['time']:.4g} s (not computed for "
+                f"{n_out} member{'s' if n_out > 1 else ''} of {why})")
+    axial = np.abs(res.stresses.axial)
+    i, k, _ = np.unravel_index(int(np.argmax(axial)), axial.shape)
+    return (f"von Mises not computed ({why}); largest |axial stress| "
+            f"{axial[i, k].max():.5g} Pa in member {s.member_ids[k]} at t = {res.time[i]:.4g} s")
+
+
+def _buckling_clause(res: SimulationResult) -> str:
+    """The summary's buckling margin; none when no member is ever compressed."""
+    margin = res.buckling.margin
+    if not np.any(np.isfinite(margin)):
+        return "no member in compression (no buckling margin)"
+    return f"smallest buckling margin {margin.min():.3g}"

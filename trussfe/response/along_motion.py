@@ -41,6 +41,7 @@ from typing import Callable
 
 import numpy as np
 
+from ..budget import along_motion_bytes, require
 from ..errors import AnalysisError, InputError
 from ..fem.discretisation import FEModel, discretise
 from ..fem.solver import factorise, solve_free
@@ -57,6 +58,27 @@ log = logging.getLogger(__name__)
 
 #: Elements per solved block of steps (memory ~ a few tens of MB).
 BLOCK_ELEMENTS = 40_000
+
+#: Peak bytes per element of a solved block of steps (the stacked model, its factorisation and
+#: element forces; measured about 4 KiB with 40 000 elements a block).
+BYTES_PER_BLOCK_ELEMENT = 4096
+#: Bytes kept per time step and element (station positions and forces) ...
+BYTES_PER_STEP_ELEMENT = 256
+#: ... and per time step and section (the FE section forces and their recovery; measured about
+#: 300 beside the rigid model's on the triangular truss).
+BYTES_PER_STEP_FE_SECTION = 256
+
+
+def elastic_bytes(steps: float, n_members: int, subdivisions: float,
+                  n_sections: float) -> tuple[float, float]:
+    """Estimated memory of the FE response along a motion (bytes): the part that grows with the
+    elements (``subdivisions`` per member) and the part that grows with the sections."""
+    per_step = float(n_members) * float(subdivisions)
+    block = min(float(steps) * per_step, max(float(BLOCK_ELEMENTS), per_step))
+    elements = (block * BYTES_PER_BLOCK_ELEMENT
+                + float(steps) * n_members * (float(subdivisions) + 1) * BYTES_PER_STEP_ELEMENT)
+    sections = float(steps) * n_members * float(n_sections) * BYTES_PER_STEP_FE_SECTION
+    return elements, sections
 
 
 @dataclass
@@ -390,12 +412,24 @@ def simulate_elastic(structure: Structure, motion=None, *,
         From the rigid solver (a motion that leaves the assembly, a mechanism or an
         indeterminate truss) or the FE solve.
     """
-    from ..rigid.simulate import simulate
+    from ..rigid.simulate import sections_bytes, simulate
 
+    k = subdivisions if subdivisions is not None else max(int(n_sections) - 1, 2)
+    counts = (n_sections, k)
+    if all(isinstance(c, (int, np.integer)) and not isinstance(c, bool) and c >= 1
+           for c in counts):            # other values are refused by the analyses themselves
+        # Before the rigid-body run: its results are kept beside the FE response.
+        nt, m = (1 if motion is None else motion.n_steps), structure.n_members
+        elements, sections = elastic_bytes(nt, m, k, n_sections)
+        rigid = along_motion_bytes(nt, structure.n_nodes, m) + sections_bytes(nt, m, n_sections)
+        item = ("--subdivisions" if subdivisions is not None and elements > sections
+                else "--sections")
+        require(rigid + elements + sections, item,
+                f"the FE response of {m * k:,} elements and {m * n_sections:,} sections at "
+                f"{nt:,} time steps", "use fewer sections or subdivisions")
     sim = simulate(structure, motion, n_sections=n_sections, actuators=False,
                    conventions=replace(conventions, full_length_inertia=False),
                    progress=progress)
-    k = subdivisions if subdivisions is not None else max(int(n_sections) - 1, 2)
     resp = elastic_along_motion(structure, sim.kinematics, bodies=sim.bodies,
                                 positions=sim.sections.position, subdivisions=k,
                                 gravity=gravity, loads=loads, progress=progress)

@@ -71,7 +71,7 @@ from ..errors import AnalysisError, InputError
 from ..fem.discretisation import FEModel, discretise
 from ..model.bar_models import BAR_MODELS
 from ..fem.solver import factorise
-from ..linalg import factor
+from ..linalg import SingularMatrixError, factor
 from ..fem.static import section_forces as fe_section_forces
 from ..model.structure import Structure
 from ..rigid.forces import member_bodies
@@ -444,6 +444,7 @@ def transient_response(structure: Structure, motion: Motion, *, bar_model: str =
     alpha, beta = _check_damping(damping)
     if block is not None and not (isinstance(block, (int, np.integer)) and block >= 1):
         raise InputError("block", f"must be a positive number of steps, got {block!r}")
+    dt_given = dt is not None
     grid = motion_on_grid(motion, dt, t_end)
     dt = float(grid.time[1] - grid.time[0])
     nt = grid.n_steps
@@ -493,8 +494,20 @@ def transient_response(structure: Structure, motion: Motion, *, bar_model: str =
                 if frozen else kin.coords[sl])
         B = assemble_block(structure, single, np.ascontiguousarray(geom), kb, bodies,
                            bar_model=bar_model, subdivisions=k, mass=mass)
-        ops = (_Dense(B, free, alpha, beta, dt) if dense
-               else _Sparse(B, free, alpha, beta, dt, frozen))
+        try:
+            ops = (_Dense(B, free, alpha, beta, dt) if dense
+                   else _Sparse(B, free, alpha, beta, dt, frozen))
+        except (SingularMatrixError, np.linalg.LinAlgError):
+            # The massless degrees of freedom (those of the active members, whose inertia
+            # enters as loads) carry only βΔt²K in M + γΔt C + βΔt²K: a short enough step
+            # leaves them below the round-off of the massive ones.
+            where = ("--dt" if dt_given else
+                     f"{motion.source}: time step" if motion.source else "motion: time step")
+            whose = "" if dt_given else " (the motion's own sampling)"
+            raise AnalysisError(where, f"the time step {dt:.3g} s{whose} is too short for this "
+                                "model: the Newmark matrix M + γΔt C + βΔt²K is singular to "
+                                "round-off at its massless degrees of freedom; give a longer "
+                                "time step (--dt)") from None
         F = B.f[:, free]
         nb = k1 - k0
         Ub = np.zeros((nb, nf))

@@ -22,7 +22,9 @@ spline's cross-validated smoothing does not.  The spline's natural end condition
 make the rates less accurate over the first and last few samples (about 2 % of a record
 sampled as finely as the third-order move of the tests: 0.6 % of the peak velocity and 7 % of
 the peak acceleration at the very ends, 0.04 % and 0.4 % inside).  At least five samples are
-needed to differentiate.
+needed to differentiate.  Samples closer than 10 ms are fitted in a finer time unit (see
+:mod:`trussfe.rigid.smoothing`); rates that are not finite or beyond any motion (closely spaced
+samples of a large change) are refused naming the time column.
 """
 from __future__ import annotations
 
@@ -177,16 +179,19 @@ def read_motion_csv(path: str | Path, structure: Structure, *,
                          "velocities or accelerations (or give ID.velocity and ID.acceleration)")
     v = np.empty_like(L)
     a = np.empty_like(L)
+    tcol = header.index("time")
+    titem = f"{name}: column {tcol + 1} 'time'"
     for j, k in enumerate(order):
         cols = columns[k]
         v[:, j] = data[:, cols["velocity"]] if "velocity" in cols else \
-            smooth_derivative(t, L[:, [j]], smoothing)[:, 0]
+            smooth_derivative(t, L[:, [j]], smoothing, item=titem)[:, 0]
         if "acceleration" in cols:
             a[:, j] = data[:, cols["acceleration"]]
         elif "velocity" in cols:
-            a[:, j] = smooth_derivative(t, v[:, [j]], smoothing)[:, 0]
+            a[:, j] = smooth_derivative(t, v[:, [j]], smoothing, item=titem)[:, 0]
         else:
-            a[:, j] = smooth_derivative(t, L[:, [j]], smoothing, order=2)[:, 0]
+            a[:, j] = smooth_derivative(t, L[:, [j]], smoothing, order=2,
+                                         item=titem)[:, 0]
     return Motion(time=t, members=np.array(order, dtype=np.int64), length=L, velocity=v,
                   acceleration=a, source=name)
 

@@ -38,7 +38,13 @@ def motion_from_spec(spec: dict, structure: Structure, base_dir: Path, source: s
         _no_steps(steps, "a CSV motion history")
         return read_motion_csv(base_dir / str(spec["file"]), structure)
     if kind == "rotation":
-        return rotation_motion(spec, structure, steps=steps)
+        try:
+            return rotation_motion(spec, structure, steps=steps)
+        except InputError as err:
+            # named by the file, as for the other motion types (the options' own items not)
+            if not source or err.item.startswith((source, "--")):
+                raise
+            raise err.with_file(source) from None
     if kind != "third-order":
         raise InputError(f"{item}.type", f"unknown motion type {kind!r}; valid: "
                          "'third-order', 'csv', 'rotation'")

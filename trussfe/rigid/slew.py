@@ -289,6 +289,22 @@ def _number(spec: dict, key: str, item: str, *, positive=False) -> float:
     return float(v)
 
 
+#: Largest tilt of a top plane from its base normal (degrees; per bay for a rotation split
+#: over the bays): beyond a half turn the orientations repeat, and the continuation from rest
+#: would walk through every degree of the angle.
+MAX_TILT_DEG = 180.0
+
+
+def _tilt(value: float, key: str, item: str, n_bays: int) -> float:
+    """``value`` (degrees) in radians, refused beyond :data:`MAX_TILT_DEG` per bay."""
+    if abs(value) / n_bays > MAX_TILT_DEG:
+        per = f" ({value / n_bays:g} degrees per bay of {n_bays})" if n_bays > 1 else ""
+        raise InputError(f"{item}.{key}", f"{value:g} degrees{per} is more than a half turn; "
+                         f"a top plane tilts by at most {MAX_TILT_DEG:g} degrees from its base "
+                         "normal (angles are in degrees)")
+    return math.radians(value)
+
+
 def _steps_fit(n: int, structure: Structure, item: str) -> None:
     """Refuse a step count whose analysis cannot fit in memory (before sampling it)."""
     require(along_motion_bytes(n, structure.n_nodes, structure.n_members), f"{item}.steps",
@@ -360,24 +376,26 @@ def rotation_motion(spec: dict, structure: Structure, *, steps: int | None = Non
                              "own steps; --steps applies to start/end/duration rotations")
         try:
             t = np.asarray(spec["time"], dtype=float).reshape(-1)
-            ang = np.radians(np.asarray(spec["angle"], dtype=float).reshape(-1))
+            deg = np.asarray(spec["angle"], dtype=float).reshape(-1)
         except KeyError as exc:
             raise InputError(f"{item}.{exc.args[0]}", "a given profile needs both time and "
                              "angle") from None
         except (TypeError, ValueError):
             raise InputError(f"{item}.angle", "time and angle must be lists of numbers") \
                 from None
-        if t.size != ang.size or t.size < 5:
+        if t.size != deg.size or t.size < 5:
             raise InputError(f"{item}.angle", "time and angle need the same length, at least 5")
-        if not (np.all(np.isfinite(t)) and np.all(np.isfinite(ang))):
+        if not (np.all(np.isfinite(t)) and np.all(np.isfinite(deg))):
             raise InputError(f"{item}.angle", "time and angle must be finite")
         if np.any(np.diff(t) <= 0):
             raise InputError(f"{item}.time", "must increase strictly")
-        dang = smooth_derivative(t, ang[:, None])[:, 0]
-        ddang = smooth_derivative(t, ang[:, None], order=2)[:, 0]
+        _tilt(float(deg[np.argmax(np.abs(deg))]), "angle", item, n_bays)
+        ang = np.radians(deg)
+        dang = smooth_derivative(t, ang[:, None], item=f"{item}.time")[:, 0]
+        ddang = smooth_derivative(t, ang[:, None], order=2, item=f"{item}.time")[:, 0]
     elif spec.get("profile", "third-order") == "constant-velocity":
-        a0 = math.radians(_number(spec, "start", item))
-        a1 = math.radians(_number(spec, "end", item))
+        a0 = _tilt(_number(spec, "start", item), "start", item, n_bays)
+        a1 = _tilt(_number(spec, "end", item), "end", item, n_bays)
         T = _number(spec, "duration", item, positive=True)
         ramp = _number(spec, "ramp_time", item, positive=True)
         if 2 * ramp > T:
@@ -395,8 +413,8 @@ def rotation_motion(spec: dict, structure: Structure, *, steps: int | None = Non
         if spec.get("profile", "third-order") != "third-order":
             raise InputError(f"{item}.profile", "must be \"third-order\" or "
                              f"\"constant-velocity\", got {spec['profile']!r}")
-        a0 = math.radians(_number(spec, "start", item))
-        a1 = math.radians(_number(spec, "end", item))
+        a0 = _tilt(_number(spec, "start", item), "start", item, n_bays)
+        a1 = _tilt(_number(spec, "end", item), "end", item, n_bays)
         T = _number(spec, "duration", item, positive=True)
         n = steps if steps is not None else spec.get("steps", 50)
         if isinstance(n, bool) or not isinstance(n, int) or n < 1:
