@@ -95,6 +95,25 @@ def test_equal_members_buckling_alike(monkeypatch):
     assert_allclose(res.load_factors, ref, rtol=1e-9)
 
 
+def test_arpack_failing_falls_back_or_is_one_error(monkeypatch):
+    """When ARPACK converges on neither try, a problem up to the dense limit is solved by
+    LAPACK (the pinned column's P_n = n²π²EI/L², Timoshenko & Gere §2.1) and a larger one is
+    refused as an analysis error of the model, never an ARPACK exception."""
+    import scipy.sparse.linalg as spla
+    import trussfe.linalg.eigen as eigen
+
+    def fails(*args, **kw):
+        raise spla.ArpackNoConvergence("no convergence", np.zeros(0), np.zeros((0, 0)))
+
+    monkeypatch.setattr(eigen.spla, "eigsh", fails)
+    r = solve_buckling(column(2.0), count=2, subdivisions=512)       # > 800 unknowns
+    pe = np.pi**2 * AL.E * TRI_TUBE.Iz / 2.0**2
+    assert_allclose(r.load_factors, [pe, 4 * pe], rtol=1e-6)
+    monkeypatch.setattr(eigen, "DENSE_BUCKLING_FALLBACK", 100)
+    with pytest.raises(AnalysisError, match="eigen-solver did not converge"):
+        solve_buckling(column(2.0), count=2, subdivisions=512)
+
+
 def test_3d_column_two_planes():
     r = solve_buckling(column(2.0, dim=3), count=2, subdivisions=8)
     assert_allclose(r.load_factors[0], r.load_factors[1], rtol=1e-9)

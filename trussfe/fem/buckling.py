@@ -30,7 +30,7 @@ import numpy as np
 from ..errors import AnalysisError, InputError
 from ..io.json_document import result_json
 from ..mechanics.euler import member_euler_loads
-from ..linalg.eigen import DENSE_BUCKLING_LIMIT, buckling_pairs
+from ..linalg.eigen import DENSE_BUCKLING_LIMIT, EigenNotConverged, buckling_pairs
 from ..model.structure import Structure
 from .discretisation import FEModel
 from .solver import factorise
@@ -165,7 +165,10 @@ def solve_buckling(structure: Structure, count: int = 4, bar_model: str = "pinne
     solve = None
     if n > DENSE_BUCKLING_LIMIT and count < n - 1:
         solve = factorise(K, free, fe=fe, item=item).solve
-    mu, V = buckling_pairs(Kff, Kgff, count, solve=solve)
+    try:
+        mu, V = buckling_pairs(Kff, Kgff, count, solve=solve)
+    except EigenNotConverged as err:
+        raise AnalysisError(item, str(err)) from None
     tiny = np.abs(mu) <= 1e-12 * np.abs(mu).max()
     if np.any(tiny) or mu.size < count:
         found = int(np.sum(~tiny))

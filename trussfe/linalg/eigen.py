@@ -27,8 +27,6 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
-from ..errors import AnalysisError
-
 log = logging.getLogger(__name__)
 
 #: Relative residual bound ``|β_m s_mi| ≤ tol |μ_i|`` at which a Ritz pair is converged.
@@ -235,6 +233,11 @@ def nearest_zero_mode(K: sp.spmatrix) -> tuple[float, np.ndarray]:
     return float(w[0]), v[:, 0] / np.linalg.norm(v[:, 0])
 
 
+class EigenNotConverged(RuntimeError):
+    """An eigen-solver did not converge; the message says why and what to change (the
+    solvers report it as an analysis error of their model)."""
+
+
 #: Restarts of ARPACK's first try at a buckling problem before the wider second one.
 ARPACK_FIRST_RESTARTS = 300
 #: Lanczos vectors of the second try: more than a group of equal load factors is likely to
@@ -257,7 +260,7 @@ def _arpack_buckling(A: sp.csc_matrix, M: sp.csc_matrix, Minv, k: int, which: st
 
     Raises
     ------
-    AnalysisError
+    EigenNotConverged
         ARPACK did not converge and the problem is too large to solve densely.
     """
     n = A.shape[0]
@@ -270,10 +273,10 @@ def _arpack_buckling(A: sp.csc_matrix, M: sp.csc_matrix, Minv, k: int, which: st
         return spla.eigsh(A, k=k, M=M, Minv=Minv, which=which, ncv=ncv)
     except spla.ArpackNoConvergence:
         if n > DENSE_BUCKLING_FALLBACK:
-            raise AnalysisError("buckling", f"the eigen-solver did not converge on {n:,} "
-                                "unknowns (many equal or close load factors); ask for more "
-                                "load factors (--count) to take in a whole group of equal "
-                                "ones, or use fewer subdivisions") from None
+            raise EigenNotConverged(f"the eigen-solver did not converge on {n:,} unknowns "
+                                    "(many equal or close load factors); ask for more load "
+                                    "factors (--count) to take in a whole group of equal "
+                                    "ones, or use fewer subdivisions") from None
     log.info("buckling: ARPACK did not converge on %d unknowns; solved densely", n)
     return sla.eigh(A.toarray(), M.toarray())
 
@@ -316,6 +319,11 @@ def buckling_pairs(K: sp.spmatrix, Kg: sp.spmatrix, count: int, *,
         positive ones found, tiny ones, ``μ ≤ 1e-12 max |μ|``, excluded).
     V : ndarray, shape (n, k)
         The modes, as the eigen-solver returns them (callers scale them).
+
+    Raises
+    ------
+    EigenNotConverged
+        ARPACK did not converge on a problem too large to solve densely.
 
     Examples
     --------

@@ -22,7 +22,7 @@ from __future__ import annotations
 import numpy as np
 from ..errors import AnalysisError
 from ..linalg import SingularMatrixError, factor
-from ..linalg.eigen import buckling_pairs
+from ..linalg.eigen import EigenNotConverged, buckling_pairs
 from .model import NonlinearModel
 from .path import UNSOLVABLE_START
 
@@ -60,7 +60,10 @@ def linear_buckling(model: NonlinearModel, count: int = 1):
         raise AnalysisError(item, UNSOLVABLE_START) from None
     Nt, Nb = model.linear_axial_forces(u0)
     Kg = model.reference_tangent(Nt, Nb)[free][:, free] - K
-    mu, vec = buckling_pairs(K, Kg, count, positive_only=True)
+    try:
+        mu, vec = buckling_pairs(K, Kg, count, positive_only=True)
+    except EigenNotConverged as err:
+        raise AnalysisError(item, str(err)) from None
     if not mu.size:
         raise AnalysisError(model.structure.source or model.structure.name,
                             "no positive buckling load factor: the load puts no member in "
