@@ -22,7 +22,7 @@ import numpy as np
 
 from ..errors import InputError, TrussfeError, one_line
 from ..api.result_paths import PathError, get_values, numbers, reduce, set_value
-from .spec import TEMPLATE, Study, _catalogue_function, parse_study
+from .spec import TEMPLATE, Study, _catalogue_function, parse_study, with_study_file
 
 #: Error message of a run whose numbers overflowed (as the command line words it).
 _NUMERICS = ("numerical failure ({}): a value is out of the range of floating-point numbers; "
@@ -229,7 +229,11 @@ def read_study(path) -> Study:
         invalid.
     """
     study = parse_study(path)
-    _check_inputs(study)
+    try:
+        _check_inputs(study)
+    except InputError as err:
+        # every refusal of a study names the study file, as parse_study's do
+        raise with_study_file(err, study.source) from None
     return study
 
 

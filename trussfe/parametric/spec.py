@@ -14,13 +14,16 @@ import hashlib
 import inspect
 import json
 import math
+import os
 import re
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from ..budget import check_input_file, require
 from ..errors import InputError
+from ..io.regular_file import read_regular_file
 from ..api.result_paths import REDUCTIONS, PathError, tokens
 
 #: Distributions of a Monte Carlo parameter and the numbers each needs.
@@ -33,6 +36,9 @@ _PARAM_KEYS = ("values", "from", "to", "step", "count", "distribution", "low", "
 _OUTPUT_KEYS = ("path", "reduce", "where", "analysis")
 #: Largest number of runs a study may have (a typing accident beyond that, not a study).
 MAX_RUNS = 10_000_000
+#: Memory a study holds per run in the command's process: its entry in the list of runs
+#: (measured 0.4 KiB with one parameter) and its row of the results table, read back whole.
+BYTES_PER_RUN = 1024
 
 
 @dataclass(frozen=True)
@@ -138,9 +144,11 @@ class Study:
         """A digest of everything that decides the results: the study file and the model and
         motion files it reads (a resumed study must be the same study)."""
         h = hashlib.sha256()
-        for f in (self.file, self.model_file, self.motion_file):
+        for f, what in ((self.file, "study file"), (self.model_file, "model file"),
+                        (self.motion_file, "motion file")):
             if f is not None:
-                h.update(Path(f).read_bytes())
+                # read again, so checked again: the file may have been replaced since
+                h.update(read_regular_file(f, what))
         h.update(json.dumps([self.catalogue, self.catalogue_args], default=str).encode())
         return h.hexdigest()
 
@@ -150,14 +158,18 @@ def _err(item: str, message: str) -> InputError:
 
 
 def _load_toml(path: Path, what: str) -> dict:
+    """The tables of a TOML file the study reads (the study, model or motion file).
+
+    Only a regular file is read: a device never ends and a named pipe blocks its reader
+    (:func:`trussfe.io.regular_file.read_regular_file`)."""
     try:
-        return tomllib.loads(path.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise _err(str(path), f"{what} not found") from None
-    except (OSError, UnicodeDecodeError) as exc:
+        return tomllib.loads(read_regular_file(path, what).decode("utf-8"))
+    except UnicodeDecodeError as exc:
         raise _err(str(path), f"cannot read the {what}: {exc}") from None
     except tomllib.TOMLDecodeError as exc:
         raise _err(str(path), f"malformed TOML: {exc}") from None
+    except RecursionError:
+        raise _err(str(path), f"the {what} nests too deeply") from None
 
 
 def parse_study(path: str | Path) -> Study:
@@ -176,9 +188,15 @@ def parse_study(path: str | Path) -> Study:
     try:
         return _parse(data, path)
     except InputError as err:
-        if err.item.startswith(str(path)):
-            raise
-        raise err.with_file(str(path)) from None
+        raise with_study_file(err, str(path)) from None
+
+
+def with_study_file(err: InputError, source: str) -> InputError:
+    """``err`` naming the study file ``source`` first, as every refusal of a study does
+    (unchanged when it names it already: the file cannot be read, or is not TOML)."""
+    if err.item == source or err.item.startswith(f"{source}: "):
+        return err
+    return err.with_file(source)
 
 
 def _parse(data: dict, path: Path) -> Study:
@@ -217,6 +235,13 @@ def _parse(data: dict, path: Path) -> Study:
 
     motion_file, motion_data = _motion(options)
     samples, seed = _count(head, "samples", 1, 1), _count(head, "seed", 0, 0)
+    # from the counts alone, before any grid is built: a typing accident such as
+    # count = 1000000000000 must be refused at once, not after filling the memory
+    n_runs = samples * _grid_size(data.get("parameters", {}))
+    if n_runs > MAX_RUNS:
+        raise _err("study", f"{n_runs} runs is more than {MAX_RUNS}")
+    require(n_runs * BYTES_PER_RUN, "study", f"the list and table of {n_runs} runs",
+            "make fewer runs (grid values or samples)")
     params = _parameters(data.get("parameters", {}), model_data, motion_data, catalogue,
                          catalogue_args, motion_file)
     if any(not p.is_grid for p in params):
@@ -292,10 +317,23 @@ def _options(raw, analyses: tuple[str, ...], base: Path) -> dict:
             raise _err(item, err.message) from None
         opts = dict(opts)
         motion = opts.get("motion")
-        if isinstance(motion, str) and (base / motion).is_file():
-            opts["motion"] = str((base / motion).resolve())
+        if isinstance(motion, str):
+            opts["motion"] = str(_motion_path(motion, base))
         out[a] = opts
     return out
+
+
+def _motion_path(motion: str, base: Path) -> Path:
+    """The motion file of an analysis' options, checked to be a regular file before any
+    run reads it.
+
+    It is named relative to the study file's folder; a file that is not there but is found
+    from the working folder is taken from there, as the analysis alone would.
+    """
+    beside = base / motion
+    path = beside if os.path.lexists(beside) or not os.path.lexists(motion) else Path(motion)
+    check_input_file(str(path), "motion file")
+    return path.resolve()
 
 
 def _motion(options: dict) -> tuple[Path | None, dict | None]:
@@ -466,25 +504,72 @@ def _same_kind(values: list, item: str) -> None:
     raise _err(item, "values must be all finite numbers, all strings or all booleans")
 
 
-def _range(spec: dict, item: str) -> tuple:
+def _grid_size(raw) -> int:
+    """The number of grid points of the ``[parameters]`` table, from the lists' lengths and
+    the ranges' counts and steps, without building any range.
+
+    A parameter that is not a well-formed grid counts as one value: its error is reported
+    when the parameter is read.
+    """
+    if not isinstance(raw, dict):
+        return 1
+    size = 1
+    for name, spec in raw.items():
+        if isinstance(spec, list):
+            size *= max(len(spec), 1)
+        elif isinstance(spec, dict) and "distribution" not in spec:
+            if "values" in spec and "from" not in spec:
+                values = spec["values"]
+                size *= len(values) if isinstance(values, list) and values else 1
+            elif "from" in spec and "values" not in spec:
+                size *= _range_count(spec, f"parameters.{name}")
+    return size
+
+
+def _range_count(spec: dict, item: str) -> int:
+    """The number of values of a ``from``/``to`` range, checked from its numbers alone.
+
+    Raises
+    ------
+    InputError
+        For bounds that are not finite numbers (or whose difference is not), a missing or
+        doubled ``step``/``count``, a step that does not lead from ``from`` to ``to``, and a
+        range of more values than a study may have runs.
+    """
     lo, hi = spec.get("from"), spec.get("to")
     if not (_number(lo) and _number(hi)):
         raise _err(item, "from and to must be finite numbers")
+    if not math.isfinite(hi - lo):      # the values between would overflow to inf or nan
+        raise _err(item, f"from {lo} to {hi} spans more than the range of floating-point "
+                         "numbers")
     if ("step" in spec) == ("count" in spec):
         raise _err(item, "from/to needs step or count (one of them)")
     if "count" in spec:
         n = spec["count"]
         if isinstance(n, bool) or not isinstance(n, int) or n < 1:
             raise _err(f"{item}.count", f"must be a positive integer, got {n!r}")
+        if n > MAX_RUNS:
+            raise _err(f"{item}.count", f"{n} values is more than the {MAX_RUNS} runs a "
+                                        "study may have")
+        return n
+    step = spec["step"]
+    if not _number(step) or step == 0 or (hi - lo) / step < 0:
+        raise _err(f"{item}.step", f"must be a number leading from {lo} to {hi}, got {step!r}")
+    ratio = (hi - lo) / step
+    if not ratio < MAX_RUNS:            # also inf: (to - from) / step overflows for a tiny step
+        raise _err(f"{item}.step", f"gives more than the {MAX_RUNS} values a study may have "
+                                   "runs")
+    return int(math.floor(ratio + 1e-9)) + 1
+
+
+def _range(spec: dict, item: str) -> tuple:
+    n = _range_count(spec, item)
+    lo, hi = spec["from"], spec["to"]
+    if "count" in spec:
         if n == 1:
             return (lo,)
         return tuple(lo + (hi - lo) * k / (n - 1) for k in range(n))
     step = spec["step"]
-    if not _number(step) or step == 0 or (hi - lo) / step < 0:
-        raise _err(f"{item}.step", f"must be a number leading from {lo} to {hi}, got {step!r}")
-    n = int(math.floor((hi - lo) / step + 1e-9)) + 1
-    if n > MAX_RUNS:
-        raise _err(f"{item}.step", f"gives {n} values")
     vals = [lo + k * step for k in range(n)]
     if all(isinstance(x, int) for x in (lo, hi, step)):
         vals = [int(v) for v in vals]

@@ -9,6 +9,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import InputError
+from ..io.regular_file import read_regular_file
 from ..io.suggest import suggest as _suggest
 
 CASE_KEYS = ("id", "title", "model", "catalogue", "parameters", "analysis", "python",
@@ -190,13 +191,15 @@ def load_case(path: str | Path) -> Case:
     """
     path = Path(path)
     try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise InputError(str(path), "case file not found") from None
-    except (OSError, UnicodeDecodeError) as exc:
+        # only a regular file (or a link to one) is read: a case "file" that is a device
+        # never ends and a named pipe blocks its reader
+        data = tomllib.loads(read_regular_file(path, "case file").decode("utf-8"))
+    except UnicodeDecodeError as exc:
         raise InputError(str(path), f"cannot read file: {exc}") from None
     except tomllib.TOMLDecodeError as exc:
         raise InputError(str(path), f"malformed TOML: {exc}") from None
+    except RecursionError:
+        raise InputError(str(path), "the case file nests too deeply") from None
     try:
         return _parse(data, path)
     except InputError as err:
