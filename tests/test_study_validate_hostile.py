@@ -258,3 +258,28 @@ def test_a_case_file_linked_to_a_regular_file_is_read(tmp_path):
     (cases / "linked.toml").symlink_to(target)
     [case] = load_cases(cases)
     assert case.id == "linked" and case.file == cases / "linked.toml"
+
+
+@pytest.mark.parametrize("key", ["model", "picture"])
+def test_a_case_model_that_is_a_named_pipe_is_named_as_such(tmp_path, key):
+    """A case whose ``model`` (or ``picture``) is a named pipe is refused as one, not as a
+    missing file, and is not waited on."""
+    cases = tmp_path / "cases"
+    cases.mkdir()
+    os.mkfifo(tmp_path / "m.toml")
+    head = '[case]\nid = "x"\ntitle = "x"\n'
+    body = (f'analysis = "static"\nmodel = "{tmp_path / "m.toml"}"\n' if key == "model" else
+            f'python = "math:sqrt"\npicture = "{tmp_path / "m.toml"}"\n')
+    (cases / "x.toml").write_text(head + body + '\n[[quantities]]\nname = "x"\npath = "x"\n'
+                                  'reference = 1.0\nrtol = 0.1\n', encoding="utf-8")
+    if key == "picture":
+        status, err, _ = _trussfe("validate", "--cases", str(cases), "--out",
+                                  str(tmp_path / "r"), "--no-progress", cwd=tmp_path)
+        _assert_one_line(status, err, "case.picture", "is a named pipe")
+    else:
+        # an analysis case's model is looked at when the case runs: the case ends in error
+        from trussfe.validation.engine import run_case
+        [case] = load_cases(cases)
+        result = run_case(case)
+        assert result.status == "error" and "case.model" in result.error
+        assert "is a named pipe" in result.error and "not found" not in result.error

@@ -8,6 +8,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from ..budget import check_input_file
 from ..errors import InputError
 from ..io.regular_file import read_regular_file
 from ..io.suggest import suggest as _suggest
@@ -268,8 +269,10 @@ def _parse(data: dict, path: Path) -> Case:
         if case.python is None:
             raise InputError("case.picture", "an analysis case shows its own model")
         case.picture = resolve_model_path(_str(raw["picture"], "case.picture"), path)
-        if not Path(case.picture).is_file():
-            raise InputError("case.picture", f"model file '{raw['picture']}' not found")
+        try:
+            check_input_file(str(case.picture), "model file")
+        except InputError as err:          # missing, a folder, a device or a pipe
+            raise InputError("case.picture", f"'{raw['picture']}': {err.message}") from None
     tags = raw.get("tags", [])
     if not isinstance(tags, list) or not all(isinstance(t, str) for t in tags):
         raise InputError("case.tags", "expected a list of strings")

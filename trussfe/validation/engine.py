@@ -11,6 +11,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from ..budget import check_input_file
 from ..errors import InputError, TrussfeError
 from ..api.result_paths import get_value
 from ..io.output import scratch_files
@@ -191,8 +192,10 @@ def _evaluate(case: Case) -> tuple[dict, dict[str, bytes]]:
         analyse = _analyse(case.analysis)
         with tempfile.TemporaryDirectory(prefix="trussfe-case-") as tmp:
             model = case.model if case.catalogue is None else _catalogue_model(case, Path(tmp))
-            if not Path(model).is_file():
-                raise InputError("case.model", f"model file '{model}' not found")
+            try:
+                check_input_file(str(model), "model file")
+            except InputError as err:      # missing, a folder, a device or a pipe
+                raise InputError("case.model", f"'{model}': {err.message}") from None
             result = analyse(str(model), **case.options)
             if case.plot and isinstance(result, dict):
                 figures[case.plot] = _member_plot(model, result, case.plot)
