@@ -325,6 +325,31 @@ def test_command_runs_cases_that_write_working_files(tmp_path):
                (out / "figures").iterdir())
 
 
+def test_builtin_case_models_do_not_warn_the_user(tmp_path, capsys):
+    """The built-in Hortobágyi section-4 case analyses a folded mechanism whose joint 1 lies
+    on support 4 on purpose: `trussfe validate` prints its result and no warning about the
+    suite's own model; -v shows it; a folder of one's own cases keeps its warnings."""
+    assert main(["validate", "--case", "hortobagyi-section4", "--out", str(tmp_path / "a"),
+                 "--no-progress"]) == 0
+    out, err = capsys.readouterr()
+    assert "1/1 cases pass" in out and err == ""
+    assert main(["-v", "validate", "--case", "hortobagyi-section4", "--out",
+                 str(tmp_path / "b"), "--no-progress"]) == 0
+    assert "'1' and '4' coincide" in capsys.readouterr().err
+    own = tmp_path / "own"
+    own.mkdir()
+    model = Path(__file__).resolve().parents[1] / "meshes" / "mech_hortobagyi_sec4.toml"
+    (own / "rank.toml").write_text(
+        f'[case]\nid = "rank"\ntitle = "rank"\nanalysis = "mechanism"\n'
+        f'model = "{model.as_posix()}"\n\n[[quantities]]\nname = "rank"\npath = "rank"\n'
+        'reference = 2\nsource = "Hortobágyi (1999) section 4"\nrtol = 0\n',
+        encoding="utf-8")
+    assert main(["validate", "--cases", str(own), "--out", str(tmp_path / "c"),
+                 "--no-progress"]) == 0
+    err = capsys.readouterr().err.splitlines()
+    assert len(err) == 1 and "'1' and '4' coincide" in err[0]
+
+
 def test_report_labels_regression_values_and_explanations(tmp_path):
     """The report marks references recorded from trussfe's own output as regression values,
     counts them, and shows each documented deviation's explained value and its source."""

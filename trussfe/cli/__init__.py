@@ -165,7 +165,7 @@ def main(argv: list[str] | None = None) -> int:
     finally:
         log.removeHandler(handler)
         log.setLevel(old_level)
-        if status not in FAILED:
+        if status not in FAILED and getattr(args, "show_warnings", True):
             held.write_to(sys.stderr)
 
 
@@ -185,9 +185,10 @@ class _HeldLines(logging.Handler):
         self.lines.append(self.format(record))
 
     def write_to(self, stream) -> None:
-        """Write the kept lines, one each, and forget them."""
+        """Write the kept lines, each distinct one once (a model read twice in a run warns
+        twice), and forget them."""
         with contextlib.suppress(OSError):
-            for line in self.lines:
+            for line in dict.fromkeys(self.lines):
                 stream.write(line + "\n")
             stream.flush()
         self.lines.clear()
