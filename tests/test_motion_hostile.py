@@ -220,6 +220,12 @@ def test_simulate_without_outer_fibre_distance_prints_no_nan(tmp_path, capsys):
     assert "largest |axial stress|" in out
     d = json.loads(js.read_text())
     assert None in d["members"]["follower"]["max_von_mises"]
+    # an undefined maximum has no time, step or section (not the first step's, where the
+    # first undefined value lies)
+    summary = d["summary"]["members"]["follower"]
+    assert summary["max_von_mises"] is None
+    assert summary["time"] is None and summary["step"] is None and summary["section"] is None
+    assert summary["motion_induced_time"] is None
 
 
 def test_simulate_summary_ranks_the_members_that_have_a_von_mises_stress(tmp_path, capsys):

@@ -143,13 +143,23 @@ class SimulationResult:
         i2, j2 = np.unravel_index(int(np.argmax(d)), d.shape)
         j2 = section if section is not None else j2
         pos = self.sections.position[member]
-        return {
+        out = {
             "max_von_mises": float(vm[i, j]), "time": float(self.time[i]), "step": int(i),
             "section": float(pos[j]),
             "static_at_max": float(vs[i, j]), "static_max": float(vs.max()),
             "motion_induced_max": float(d.max()), "motion_induced_time": float(self.time[i2]),
             "motion_induced_step": int(i2), "motion_induced_section": float(pos[j2]),
         }
+        # A section without an outer-fibre distance has no von Mises stress where it bends:
+        # the member's maximum is then undefined (NaN, null in JSON), and so are the time,
+        # step and section of it (argmax stops at the first NaN, which is no maximum).
+        for value, keys in (("max_von_mises", ("time", "step", "section")),
+                            ("motion_induced_max", ("motion_induced_time",
+                                                    "motion_induced_step",
+                                                    "motion_induced_section"))):
+            if not np.isfinite(out[value]):
+                out.update(dict.fromkeys(keys))
+        return out
 
 
 class _Counter:
