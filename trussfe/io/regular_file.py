@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import os
 import stat
+import tomllib
 
 from ..budget import MAX_INPUT_BYTES, check_input_file, format_bytes
 from ..errors import InputError
@@ -61,3 +62,29 @@ def read_regular_file(path: str | os.PathLike, what: str = "file") -> bytes:
         raise InputError(name, f"is more than the {format_bytes(MAX_INPUT_BYTES)} a {what} "
                                "may have")
     return data
+
+
+def read_toml_file(path: str | os.PathLike, what: str = "file") -> dict:
+    """The tables of a TOML input file, read by :func:`read_regular_file`.
+
+    Parameters
+    ----------
+    path : str or path-like
+    what : str
+        What the file is, for the messages (``"study file"``, ``"case file"``).
+
+    Raises
+    ------
+    InputError
+        Naming the path: not a regular file of an accepted size, not UTF-8, malformed TOML,
+        or nested too deeply to parse.
+    """
+    name = os.fspath(path)
+    try:
+        return tomllib.loads(read_regular_file(name, what).decode("utf-8"))
+    except UnicodeDecodeError as exc:
+        raise InputError(name, f"cannot read the {what}: {exc}") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(name, f"malformed TOML: {exc}") from None
+    except RecursionError:
+        raise InputError(name, f"the {what} nests too deeply") from None

@@ -16,14 +16,13 @@ import json
 import math
 import os
 import re
-import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from ..budget import check_input_file, require
 from ..errors import InputError
-from ..io.regular_file import read_regular_file
+from ..io.regular_file import read_regular_file, read_toml_file
 from ..api.result_paths import REDUCTIONS, PathError, tokens
 
 #: Distributions of a Monte Carlo parameter and the numbers each needs.
@@ -157,21 +156,6 @@ def _err(item: str, message: str) -> InputError:
     return InputError(item, message)
 
 
-def _load_toml(path: Path, what: str) -> dict:
-    """The tables of a TOML file the study reads (the study, model or motion file).
-
-    Only a regular file is read: a device never ends and a named pipe blocks its reader
-    (:func:`trussfe.io.regular_file.read_regular_file`)."""
-    try:
-        return tomllib.loads(read_regular_file(path, what).decode("utf-8"))
-    except UnicodeDecodeError as exc:
-        raise _err(str(path), f"cannot read the {what}: {exc}") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise _err(str(path), f"malformed TOML: {exc}") from None
-    except RecursionError:
-        raise _err(str(path), f"the {what} nests too deeply") from None
-
-
 def parse_study(path: str | Path) -> Study:
     """Read a study file and check it against itself and the catalogue (the model and motion
     files are built with the parameters by :func:`trussfe.parametric.runner.read_study`).
@@ -184,7 +168,7 @@ def parse_study(path: str | Path) -> Study:
         needs the model or motion file is checked by ``read_study``).
     """
     path = Path(path)
-    data = _load_toml(path, "study file")
+    data = read_toml_file(path, "study file")
     try:
         return _parse(data, path)
     except InputError as err:
@@ -225,7 +209,7 @@ def _parse(data: dict, path: Path) -> Study:
         if not isinstance(head["model"], str):
             raise _err("study.model", f"expected a file name, got {head['model']!r}")
         model_file = (base / head["model"]).resolve()
-        model_data = _load_toml(model_file, "model file")
+        model_data = read_toml_file(model_file, "model file")
         if "catalogue" in data:
             raise _err("[catalogue]", "arguments of a catalogue structure need "
                                       "study.catalogue")
@@ -343,7 +327,7 @@ def _motion(options: dict) -> tuple[Path | None, dict | None]:
     f = Path(next(iter(files)))
     if f.suffix.lower() != ".toml" or not f.is_file():
         return f, None
-    return f, _load_toml(f, "motion file")
+    return f, read_toml_file(f, "motion file")
 
 
 def _catalogue_function(name):

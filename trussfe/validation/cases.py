@@ -3,14 +3,13 @@
 from __future__ import annotations
 
 import math
-import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from ..budget import check_input_file
 from ..errors import InputError
-from ..io.regular_file import read_regular_file
+from ..io.regular_file import read_toml_file
 from ..io.suggest import suggest as _suggest
 
 CASE_KEYS = ("id", "title", "model", "catalogue", "parameters", "analysis", "python",
@@ -182,6 +181,16 @@ def resolve_model_path(model: str, case_file: Path) -> Path:
     return candidates[0].resolve()      # reported as missing when the case runs
 
 
+def check_model_file(path: str | Path, item: str, written: str | Path) -> None:
+    """Refuse a case's model file unless it is a regular file of an accepted size (missing, a
+    folder, a device or a named pipe), naming the case's ``item`` and the path as ``written``
+    in the case file."""
+    try:
+        check_input_file(str(path), "model file")
+    except InputError as err:
+        raise InputError(item, f"'{written}': {err.message}") from None
+
+
 def load_case(path: str | Path) -> Case:
     """Read one case file.
 
@@ -191,16 +200,9 @@ def load_case(path: str | Path) -> Case:
         Naming the file and the item at fault.
     """
     path = Path(path)
-    try:
-        # only a regular file (or a link to one) is read: a case "file" that is a device
-        # never ends and a named pipe blocks its reader
-        data = tomllib.loads(read_regular_file(path, "case file").decode("utf-8"))
-    except UnicodeDecodeError as exc:
-        raise InputError(str(path), f"cannot read file: {exc}") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(str(path), f"malformed TOML: {exc}") from None
-    except RecursionError:
-        raise InputError(str(path), "the case file nests too deeply") from None
+    # only a regular file (or a link to one) is read: a case "file" that is a device never
+    # ends and a named pipe blocks its reader
+    data = read_toml_file(path, "case file")
     try:
         return _parse(data, path)
     except InputError as err:
@@ -269,10 +271,7 @@ def _parse(data: dict, path: Path) -> Case:
         if case.python is None:
             raise InputError("case.picture", "an analysis case shows its own model")
         case.picture = resolve_model_path(_str(raw["picture"], "case.picture"), path)
-        try:
-            check_input_file(str(case.picture), "model file")
-        except InputError as err:          # missing, a folder, a device or a pipe
-            raise InputError("case.picture", f"'{raw['picture']}': {err.message}") from None
+        check_model_file(case.picture, "case.picture", raw["picture"])
     tags = raw.get("tags", [])
     if not isinstance(tags, list) or not all(isinstance(t, str) for t in tags):
         raise InputError("case.tags", "expected a list of strings")

@@ -11,11 +11,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from ..budget import check_input_file
 from ..errors import InputError, TrussfeError
 from ..api.result_paths import get_value
 from ..io.output import scratch_files
-from .cases import Case, Quantity
+from .cases import Case, Quantity, check_model_file
 
 log = logging.getLogger(__name__)
 
@@ -192,10 +191,7 @@ def _evaluate(case: Case) -> tuple[dict, dict[str, bytes]]:
         analyse = _analyse(case.analysis)
         with tempfile.TemporaryDirectory(prefix="trussfe-case-") as tmp:
             model = case.model if case.catalogue is None else _catalogue_model(case, Path(tmp))
-            try:
-                check_input_file(str(model), "model file")
-            except InputError as err:      # missing, a folder, a device or a pipe
-                raise InputError("case.model", f"'{model}': {err.message}") from None
+            check_model_file(model, "case.model", model)
             result = analyse(str(model), **case.options)
             if case.plot and isinstance(result, dict):
                 figures[case.plot] = _member_plot(model, result, case.plot)
