@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import os
 import resource
+import shutil
 import subprocess
 import sys
 import time
@@ -283,3 +284,70 @@ def test_a_case_model_that_is_a_named_pipe_is_named_as_such(tmp_path, key):
         result = run_case(case)
         assert result.status == "error" and "case.model" in result.error
         assert "is a named pipe" in result.error and "not found" not in result.error
+
+
+@pytest.fixture(scope="module")
+def finished_study(tmp_path_factory) -> tuple[Path, Path]:
+    """A static study of three runs, finished: (study file, results folder)."""
+    folder = tmp_path_factory.mktemp("finished")
+    f = _static(folder, '"sections.tube.outer_diameter" = [0.0254, 0.03, 0.035]')
+    status = main(["study", str(f), "--out", str(folder / "out"), "--no-progress",
+                   "--workers", "1"])
+    assert status == 0
+    assert len(list((folder / "out" / "parts").glob("*.parquet"))) >= 1
+    return f, folder / "out"
+
+
+def _resume_copy(finished_study, tmp_path: Path) -> tuple[Path, Path]:
+    f, out = finished_study
+    copy = tmp_path / "out"
+    shutil.copytree(out, copy)
+    return f, copy
+
+
+def test_resuming_a_folder_whose_study_record_is_a_named_pipe_is_refused(finished_study,
+                                                                         tmp_path):
+    """``--resume`` reads the folder's ``study-id.json``: a named pipe in its place is named
+    in one line, not waited on."""
+    f, out = _resume_copy(finished_study, tmp_path)
+    (out / "study-id.json").unlink()
+    os.mkfifo(out / "study-id.json")
+    status, err, _ = _trussfe("study", str(f), "--out", str(out), "--resume", "--no-progress",
+                              cwd=tmp_path)
+    _assert_one_line(status, err, f"{out / 'study-id.json'}: is a named pipe",
+                     "the study record must be a regular file")
+
+
+@pytest.mark.parametrize("kind", ["corrupt", "foreign", "pipe"])
+def test_resuming_a_folder_with_a_part_that_is_not_the_studys_is_refused(
+        finished_study, tmp_path, kind):
+    """A part of the results that is not a Parquet table of the study's columns (damaged,
+    another table, a named pipe) is named in one line, exit 2: never an internal error,
+    never a blocked read."""
+    f, out = _resume_copy(finished_study, tmp_path)
+    part = out / "parts" / "extra.parquet"
+    if kind == "corrupt":
+        part.write_bytes(b"not a parquet table\n")
+        fragment = "is not a Parquet table of the study's columns"
+    elif kind == "foreign":
+        import pyarrow as pa
+        import pyarrow.parquet as pq
+        pq.write_table(pa.table({"other": [1, 2]}), part)
+        fragment = "is not a Parquet table of the study's columns"
+    else:
+        os.mkfifo(part)
+        fragment = "is a named pipe"
+    status, err, _ = _trussfe("study", str(f), "--out", str(out), "--resume", "--no-progress",
+                              cwd=tmp_path)
+    _assert_one_line(status, err, f"trussfe: error: {part}: {fragment}")
+
+
+def test_resuming_a_finished_folder_reads_its_parts(finished_study, tmp_path):
+    """The checks accept the parts a study wrote: resuming a finished study runs nothing
+    and gives its three rows."""
+    f, out = _resume_copy(finished_study, tmp_path)
+    status, err, _ = _trussfe("study", str(f), "--out", str(out), "--resume", "--no-progress",
+                              cwd=tmp_path)
+    assert status == 0, err
+    import pyarrow.parquet as pq
+    assert pq.read_table(out / "results.parquet").num_rows == 3

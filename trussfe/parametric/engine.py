@@ -29,7 +29,9 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Iterator
 
+from ..budget import check_input_file
 from ..errors import InputError
+from ..io.regular_file import read_regular_file
 from ..io.json_document import result_json
 from .design import design
 from .runner import run_batch, run_one
@@ -103,10 +105,7 @@ class PartStore:
             if not resume:
                 raise InputError(str(self.folder), "already holds runs of a study: give "
                                  "--resume to continue it, or another --out folder")
-            try:
-                old = json.loads(id_file.read_text(encoding="utf-8"))
-            except (OSError, ValueError):
-                old = {}
+            old = _study_record(id_file)
             if old.get("fingerprint") != ident["fingerprint"]:
                 raise InputError(str(self.folder), "holds runs of a different study (the "
                                  "study, model or motion file changed): resume it with the "
@@ -132,7 +131,7 @@ class PartStore:
         import pyarrow.parquet as pq
 
         files = sorted(self.parts.glob("*.parquet")) if self.parts.is_dir() else []
-        tables = [pq.read_table(f).cast(self.schema) for f in files]
+        tables = [_read_part(f, lambda f: pq.read_table(f).cast(self.schema)) for f in files]
         table = pa.concat_tables(tables) if tables else self.schema.empty_table()
         df = table.to_pandas()
         return df.drop_duplicates("run_id").sort_values("run_id").reset_index(drop=True)
@@ -143,7 +142,8 @@ class PartStore:
         if not self.parts.is_dir():
             return ids
         for f in self.parts.glob("*.parquet"):
-            ids.update(pq.read_table(f, columns=["run_id"]).column(0).to_pylist())
+            part = _read_part(f, lambda f: pq.read_table(f, columns=["run_id"]))
+            ids.update(part.column(0).to_pylist())
         return ids
 
     def append(self, rows: list[dict]) -> None:
@@ -160,6 +160,52 @@ class PartStore:
         tmp = self.parts / f".{name}.tmp"
         pq.write_table(pa.Table.from_pylist(rows, schema=self.schema), tmp)
         os.replace(tmp, self.parts / name)
+
+
+def _study_record(id_file: Path) -> dict:
+    """The record of the study a results folder holds (``study-id.json``); empty when it is
+    missing or not a JSON object, which the fingerprint test then refuses as another study's.
+
+    Raises
+    ------
+    InputError
+        The record is not a regular file of an accepted size (a named pipe would block the
+        resume, a device would never end).
+    """
+    if not id_file.exists() and not id_file.is_symlink():
+        return {}
+    try:
+        old = json.loads(read_regular_file(id_file, "study record").decode("utf-8"))
+    except (UnicodeDecodeError, ValueError):
+        return {}
+    return old if isinstance(old, dict) else {}
+
+
+def _read_part(f: Path, read):
+    """``read(f)`` of one stored part of a results folder, or a one-line error naming it.
+
+    A part is written under a temporary name and renamed, so a part that is not a Parquet
+    table of the study's columns was not written by a study run: it is named, never read
+    past (a named pipe would block, a device never end).
+
+    Raises
+    ------
+    InputError
+        The part is not a regular file or not a readable table of the study's rows.
+    """
+    import pyarrow as pa
+
+    check_input_file(str(f), "part of the study's results")
+    try:
+        return read(f)
+    except (OSError, pa.ArrowException, ValueError, KeyError) as exc:
+        if isinstance(exc, OSError) and exc.errno is not None:      # the system refused
+            raise InputError(str(f), "cannot read this part of the study's results: "
+                             f"{exc.strerror or exc}") from None
+        # pyarrow's own errors (corrupt or foreign content): its message repeats the path
+        raise InputError(str(f), "is not a Parquet table of the study's columns; "
+                         "remove it to run its runs again, or choose another --out folder"
+                         ) from None
 
 
 @dataclass
