@@ -20,6 +20,7 @@ import numpy as np
 
 from ..budget import check_input_file
 from ..errors import InputError, TrussfeError, one_line
+from .regular_file import read_regular_file
 from . import toml_text
 from .extension_tables import TABLES as EXTENSION_TABLES
 from .load_case_tables import parse_load_cases, parse_mass_entry, parse_springs
@@ -658,14 +659,12 @@ def read_model(path: str | Path) -> Structure:
         One line naming the file and the item at fault.
     """
     path = Path(path)
-    # a folder, device or named pipe is refused before it is opened (a pipe would block)
-    check_input_file(str(path), "model file")
+    # a folder, device or named pipe is refused before it is opened (a pipe would block), and
+    # what is read is what was checked (read_regular_file)
     try:
-        text = path.read_bytes().decode("utf-8")
-    except FileNotFoundError:
-        raise InputError(str(path), "file not found") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(str(path), f"cannot read file: {exc}") from None
+        text = read_regular_file(path, "model file").decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise InputError(str(path), f"cannot read the model file: {exc}") from None
     try:
         data = toml_text.loads(text)
     except toml_text.TOMLDecodeError as exc:

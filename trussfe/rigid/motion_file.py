@@ -16,6 +16,7 @@ from typing import Any
 
 from ..budget import check_input_file
 from ..errors import InputError
+from ..io.regular_file import read_regular_file
 from ..model.structure import Structure
 from .motion import Motion, spec_bool, spec_int, spec_positive, third_order_motion
 from .motion_csv import read_motion_csv
@@ -116,7 +117,8 @@ def load_motion(path: str | Path, structure: Structure, steps: int | None = None
         _no_steps(steps, "a CSV motion history")
         return read_motion_csv(path, structure)
     try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
+        # what is read is what was checked, and no more than an input file may hold
+        data = tomllib.loads(read_regular_file(path, "motion file").decode("utf-8"))
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
         raise InputError(path.name, f"not a valid TOML motion file ({exc})") from None
     except RecursionError:
