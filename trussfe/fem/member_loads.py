@@ -53,6 +53,9 @@ class MemberLoadVectors:
     point : ndarray of bool, shape (l,)
     at : ndarray, shape (l,)
         Position of point loads, m from the start node.
+    element_axial : ndarray, shape (n_elements,)
+        Per element, its length-average axial force minus the mean of its two end values
+        (:func:`element_axial_correction`).
     """
 
     global_vector: np.ndarray
@@ -64,6 +67,7 @@ class MemberLoadVectors:
     at: np.ndarray
     F: np.ndarray
     C: np.ndarray
+    element_axial: np.ndarray
 
 
 def local_member_loads(fe: FEModel, loads: Sequence[MemberLoad]):
@@ -181,8 +185,104 @@ def member_load_vector(fe: FEModel, loads: Sequence[MemberLoad]) -> MemberLoadVe
                     rows = fld.offset + edofs[:, pos_in[els]].T            # (el, nbfun)
                     np.add.at(out, rows.ravel(), vals.ravel())
         f += g.T.T @ out
+    correction = element_axial_correction(fe.n_elements, d_el, fe.element_length[d_el],
+                                          qa[:, 0], qb[:, 0], p_el, xi, F[pts, 0])
     return MemberLoadVectors(global_vector=f, local=local, member=mem, point=point, q1=q1,
-                             q2=q2, at=a, F=F, C=C)
+                             q2=q2, at=a, F=F, C=C, element_axial=correction)
+
+
+def element_axial_correction(n_elements: int, d_el: np.ndarray, h: np.ndarray,
+                             qa: np.ndarray, qb: np.ndarray, p_el: np.ndarray,
+                             xi: np.ndarray, P: np.ndarray) -> np.ndarray:
+    r"""Per element, the length-average of its axial force minus the mean of its two end
+    values, from the axial loads along it.
+
+    A linear buckling analysis takes one axial force per element
+    (:meth:`~trussfe.fem.discretisation.FEModel.geometric_stiffness`); the bar's string
+    stiffness ``∫ N dx / h² · [[1, −1], [−1, 1]]`` is exact with the average of N over the
+    element, which is the mean of the end values only where N is linear.  With
+    ``N(x) = N(0) − Q(x)`` (``Q`` the axial load on ``[0, x]``), a load varying linearly from
+    ``q_a`` to ``q_b`` over the element adds ``h (q_b − q_a)/12``, and a point force ``P`` at
+    ``ξ h`` adds ``P (ξ − 1/2)`` (``−P/2`` at the element's start: it acts on all of it).
+
+    Parameters
+    ----------
+    n_elements : int
+    d_el, h, qa, qb : ndarray, shape (d,)
+        Element, its length and the axial intensities at its ends, for every (distributed
+        load, element) pair.
+    p_el, xi, P : ndarray, shape (p,)
+        Element, relative position in it and axial force of every point load.
+
+    Returns
+    -------
+    ndarray, shape (n_elements,)
+
+    Examples
+    --------
+    A point force of 1000 N at 0.3 of an element: the average is 0.2 × 1000 N below the
+    mean of the ends.
+
+    >>> element_axial_correction(1, np.zeros(0, int), np.zeros(0), np.zeros(0), np.zeros(0),
+    ...                          np.array([0]), np.array([0.3]), np.array([1000.0])).tolist()
+    [-200.0]
+    """
+    out = np.zeros(n_elements)
+    np.add.at(out, d_el, h * (qb - qa) / 12.0)
+    np.add.at(out, p_el, P * (xi - 0.5))
+    return out
+
+
+def midpoint_axial_correction(v: MemberLoadVectors, lengths: np.ndarray,
+                               n_members: int) -> np.ndarray:
+    r"""``N(L/2) − (N(0) + N(L))/2`` of every member from its loads along it.
+
+    The axial force at the midpoint is reported (``StaticResult.axial_force``); the mean of
+    the two end values is that only where N is linear along the member.  With
+    ``Q(x) = ∫₀ˣ q_x + Σ_{a<x} F_x`` the load on ``[0, x]`` (member axes),
+    ``N(x) = N(0) − Q(x)``, so the midpoint value is the mean of the ends plus
+    ``Q(L)/2 − Q(L/2)``: ``L(q₂ − q₁)/8`` for a load varying linearly from ``q₁`` to ``q₂``
+    (zero for a uniform one), ``F/2`` for a point force beyond the midpoint and ``−F/2``
+    before it.  A point force at the midpoint itself adds nothing: N jumps there and the
+    mean of its two sides is reported.  Loads not among ``v`` (a truss bar's self-weight,
+    lumped at its joints) do not enter its end values either, and need no correction.
+
+    Parameters
+    ----------
+    v : MemberLoadVectors
+        The member loads (member axes, point positions in m).
+    lengths : ndarray, shape (m,)
+        Member lengths.
+    n_members : int
+
+    Returns
+    -------
+    ndarray, shape (m,)
+        The correction, N; zero for members without an axial member load.
+
+    Examples
+    --------
+    A member of 4 m under an axial point load of 1000 N at 1.2 m: the mean of the ends is
+    off by ``−F/2`` at the midpoint.
+
+    >>> v = MemberLoadVectors(np.zeros(0), [], np.array([0]), np.array([True]),
+    ...                       np.zeros((1, 3)), np.zeros((1, 3)), np.array([1.2]),
+    ...                       np.array([[1000.0, 0.0, 0.0]]), np.zeros((1, 3)), np.zeros(1))
+    >>> midpoint_axial_correction(v, np.array([4.0]), 1).tolist()
+    [-500.0]
+    """
+    L = np.asarray(lengths, dtype=float)
+    out = np.zeros(n_members)
+    dist = ~v.point
+    md = v.member[dist]
+    np.add.at(out, md, L[md] * (v.q2[dist, 0] - v.q1[dist, 0]) / 8.0)
+    mp = v.member[v.point]
+    a, Lp = v.at[v.point], L[mp]
+    tol = AT_STATION * Lp
+    # share of each point force in Q(L/2): before the midpoint all of it, at it half
+    share = np.where(a < 0.5 * Lp - tol, 1.0, np.where(a > 0.5 * Lp + tol, 0.0, 0.5))
+    np.add.at(out, mp, v.F[v.point, 0] * (0.5 - share))
+    return out
 
 
 def loaded_member_stations(fe: FEModel, v: MemberLoadVectors, station_x: np.ndarray,

@@ -28,7 +28,8 @@ from ..model.member_loads import MemberLoad
 from ..model.structure import DOF_NAMES, Structure
 from ..linalg import SingularMatrixError
 from .discretisation import FEModel, discretise
-from .member_loads import MemberLoadVectors, loaded_member_stations, member_load_vector
+from .member_loads import (MemberLoadVectors, loaded_member_stations, member_load_vector,
+                           midpoint_axial_correction)
 from .solver import factorise, factorise_truss, raise_mechanism, solve_free
 from .truss_band import internal_forces
 
@@ -73,7 +74,7 @@ class StaticResult:
     max_von_mises : ndarray, shape (m,)
         Largest of S1 and S2 over the member's stations.
     element_axial_force : ndarray, shape (n_elements,)
-        Mean axial force of every element (tension positive): the input of
+        Axial force of every element averaged along it (tension positive): the input of
         :meth:`FEModel.geometric_stiffness` for a linear buckling analysis.
     residual : float
         ‖K u − f‖ / ‖f‖ over the free DOFs.
@@ -365,13 +366,20 @@ class LinearSystem:
             reac = reac - fe.spring_stiffness * u
         fel = fe.element_forces(u, f_local)
         element_axial = 0.5 * (fel[:, 1, 0] - fel[:, 0, 0])
+        if member_loads is not None:
+            # the average along each element, which its geometric stiffness takes
+            element_axial = element_axial + member_loads.element_axial
         x, F = section_forces(fe, u, fel, overwrite=True)       # fel is not used after this
         m = s.n_members
         k = fe.member_subdivisions
         # the two end sections (with one element per member, F holds exactly those)
         ends = F if F.shape[1] == 2 else np.stack([F[:, 0], F[np.arange(m), k]], axis=1)
         # midpoint axial force: N is linear along a member under uniform distributed load
+        # (self-weight), so the mean of its end values; loads along members with a point
+        # or a varying axial component make N non-linear, and statics corrects the mean
         N_mid = 0.5 * (ends[:, 0, 0] + ends[:, 1, 0])
+        if member_loads is not None:
+            N_mid = N_mid + midpoint_axial_correction(member_loads, s.lengths(), m)
         s1, s2 = _stresses(fe, F)
         # largest over the stations; fmax skips the NaN padding past a member's own stations
         max_vm = _largest_per_row(np.fmax(s1, s2))
