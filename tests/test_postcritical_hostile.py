@@ -89,6 +89,23 @@ def test_stiffness_below_floating_point_is_refused_in_one_line(edit, extra, tmp_
     assert "numerically singular" in line and "mechanism" not in line
 
 
+
+def test_a_singular_tangent_of_a_rigid_geometry_is_not_called_a_mechanism(tmp_path, capsys):
+    """The von Mises truss with E = 1e-320 Pa (a subnormal number): its geometry is rigid
+    (rank test: no mechanism), its tangent singular in floating point. The one line says so
+    and points at the units — not "a mechanism (0 independent mechanisms)"."""
+    model = tmp_path / "subnormal.toml"
+    text, n = re.subn(r"(?m)^E = .*$", "E = 1e-320", VON_MISES.read_text())
+    assert n == 1
+    model.write_text(text)
+    rc = main(["postcritical", str(model)])
+    line = _one_error_line(capsys.readouterr().err)
+    assert rc == 2
+    assert line.startswith(f"trussfe: error: {model}: ")
+    assert "numerically singular" in line and "geometry is rigid" in line
+    assert "mechanism" not in line
+
+
 def test_subdivisions_beyond_memory_are_refused_before_allocating(monkeypatch, capsys):
     """``--subdivisions 1000000000`` is refused at once (exit 2, one line naming the option and
     the memory it would need), before any element array of the co-rotational model exists."""

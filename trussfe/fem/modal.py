@@ -412,9 +412,16 @@ def solve_modes(structure: Structure, count: int | None = None, mass: str = "con
     Kff, fac, Mff = _free_matrices(fe, mass, include_nodal_masses, dense)
     _stage(progress, 2)
     count = _check_mass(Mff, count, fe, mass, item, every)
-    rigid, sigma, factor = _zero_frequency_modes(Kff, Mff, fac, item)
+    rigid, sigma, factor, keep = _zero_frequency_modes(Kff, Mff, fac, item)
     _stage(progress, 3)
-    lam, V = generalized_eigen(Kff, Mff, count, sigma=sigma, factor=factor, item=item)
+    if keep is None:
+        lam, V = generalized_eigen(Kff, Mff, count, sigma=sigma, factor=factor, item=item)
+    else:
+        # massless mechanisms: one DOF of each held, which fixes only their arbitrary part
+        lam, Vk = generalized_eigen(_restrict(Kff, keep), _restrict(Mff, keep), count,
+                                    sigma=sigma, item=item)
+        V = np.zeros((n, Vk.shape[1]))
+        V[keep] = Vk
     _stage(progress, 4)
     lam = _clean_eigenvalues(lam, min(rigid, count), Kff, Mff, item)
     residuals = eigen_residuals(Kff, Mff, lam, V, min(rigid, count))
@@ -481,14 +488,32 @@ def _check_mass(Mff, count: int, fe: FEModel, mass: str, item: str, every: bool 
     return count
 
 
+#: Mass of a unit null-space vector, relative to the largest diagonal mass, below which the
+#: mechanism carries no mass (:func:`_zero_frequency_modes`).
+MASSLESS_TOLERANCE = 1e-10
+
+
+def _restrict(A, keep: np.ndarray) -> sp.csr_matrix:
+    """The rows and columns ``keep`` of a free-DOF matrix (sparse or FreeBlock)."""
+    A = A if sp.issparse(A) else A.tocsr()
+    return A.tocsr()[keep][:, keep].tocsr()
+
+
 def _zero_frequency_modes(Kff, Mff, fac, item: str):
     """Number of zero-frequency (rigid-body and mechanism) modes, the shift and the factor for
-    the eigen-solution.
+    the eigen-solution, and the free DOFs to keep.
 
-    A regular K_ff has none: shift 0 and its factor.  Otherwise the dimension ``r`` of the
-    null space of K_ff (:func:`trussfe.linalg.stiffness_null_space`) is the number of
-    zero-frequency modes, and the shift ``σ = −10⁻⁶ λ_ref`` (``λ_ref`` the median of
-    ``K_ii / M_ii``) makes ``K − σM`` factorisable (see the module notes).
+    A regular K_ff has none: shift 0 and its factor.  Otherwise the null space of K_ff
+    (:func:`trussfe.linalg.stiffness_null_space`) is split by the mass it carries.  Its
+    directions with mass are the zero-frequency modes (``r`` of them).  Its massless
+    directions (in the null spaces of K and M both: the twist of a beam between ball joints
+    under lumped mass, which puts no mass on rotations) are no modes at all: they make
+    ``K − σM`` singular for every σ, and counting them as zero-frequency modes would report
+    the lowest elastic modes as 0 Hz.  An eigenvector is determined only up to such a
+    direction, so one DOF of each (pivoted QR of the massless basis) is held: the finite
+    eigenpairs are unchanged and their vectors come out with zero there.  The shift
+    ``σ = −10⁻⁶ λ_ref`` (``λ_ref`` the median of ``K_ii / M_ii``) then makes ``K − σM``
+    factorisable (see the module notes).
 
     Returns
     -------
@@ -496,19 +521,36 @@ def _zero_frequency_modes(Kff, Mff, fac, item: str):
     sigma : float
     factor : Factor or None
         The factor of K_ff to reuse (None: :func:`generalized_eigen` factorises ``K − σM``).
+    keep : ndarray of bool, shape (n,), or None
+        The free DOFs to solve on (None: all of them).
     """
     if fac is not None and not fac.is_singular:    # regular: no mechanism
-        return 0, 0.0, fac
-    rigid = stiffness_null_space(Kff).shape[1]
+        return 0, 0.0, fac, None
+    null = stiffness_null_space(Kff)
+    if not null.shape[1]:
+        return 0, 0.0, None, None
+    basis = sla.qr(null, mode="economic")[0]                  # orthonormal
+    w, W = sla.eigh(basis.T @ (Mff @ basis))
+    massive = w > MASSLESS_TOLERANCE * max(float(Mff.diagonal().max()), 1e-300)
+    rigid = int(massive.sum())
+    keep = None
+    if not massive.all():
+        massless = basis @ W[:, ~massive]
+        pivots = sla.qr(massless.T, pivoting=True, mode="r")[1][: massless.shape[1]]
+        keep = np.ones(null.shape[0], dtype=bool)
+        keep[pivots] = False
+        log.info("%s: %d massless mechanism(s) (no mass in the null space of the "
+                 "stiffness): not modes; a DOF of each held", item, int((~massive).sum()))
+        Kff, Mff = _restrict(Kff, keep), _restrict(Mff, keep)
     if not rigid:
-        return 0, 0.0, None
+        return 0, 0.0, None, keep
     kd, md = Kff.diagonal(), Mff.diagonal()
     ok = (kd > 0) & (md > 0)
     lam_ref = float(np.median(kd[ok] / md[ok])) if np.any(ok) else 1.0
     # the command's table says so too: a note for --verbose, not a warning
     log.info("%s: %d zero-frequency (rigid-body or mechanism) mode%s", item, rigid,
                 "s" if rigid != 1 else "")
-    return rigid, -1e-6 * lam_ref, None
+    return rigid, -1e-6 * lam_ref, None, keep
 
 
 def _clean_eigenvalues(lam: np.ndarray, nz: int, Kff, Mff, item: str) -> np.ndarray:

@@ -144,6 +144,7 @@ class NonlinearModel:
         self._beam_properties()
         held = self._element_dofs()
         self._supports(held)
+        self._springs()
         self._loads()
         self.dead = self._dead_load()
         self.alive = np.ones(s.n_members, dtype=bool)
@@ -363,6 +364,48 @@ class NonlinearModel:
             free[self.n_points * dim + 3 * joint_slot[jn] + comp] = False
             free[held] = False
 
+    def _springs(self) -> None:
+        """Elastic supports ``[springs]`` as a stiffness per DOF (``spring``, shape (dof,)).
+
+        A spring is part of the structure in every analysis (docs/fem.md), so the path
+        carries its force ``−k u`` too.  On a translation (global axis) that is exact at any
+        displacement.  On a joint rotation it is a spring on the rotation: in 2-D on the
+        angle; in 3-D on the components of the joint's total rotation vector ψ, energy
+        ``½ Σ k_i ψ_i²``, which is the linear spring for small rotations (and exact for a
+        rotation about one axis).  Such a 3-D joint slot is made additive (its DOFs are the
+        increments of ψ, as for a partly supported joint), so the spring force is ``k ψ`` and
+        its tangent ``diag(k)``.
+
+        Raises
+        ------
+        InputError
+            A spring on a rotation the joint does not have (no beam rigidly attached), as in
+            the linear analyses.
+        """
+        s = self.structure
+        dim, n = self.dim, s.n_nodes
+        k = np.zeros(self.ndof)
+        self.spring = k
+        data = s.extensions.get("springs")
+        if data is None:
+            return
+        values = np.asarray(data.stiffness, dtype=float)
+        k[: n * dim] = values[:, :dim].ravel()
+        rot = values[:, dim:]
+        has = np.flatnonzero(np.any(rot != 0.0, axis=1))
+        if not has.size:
+            return
+        lost = has[~self.end_rotations.joint_rotation[has]]
+        if lost.size:
+            raise InputError(f"springs.{s.node_ids[int(lost[0])]}",
+                             "acts on a rotation, which this node does not have (a pin "
+                             "joint: no beam is rigidly attached); remove it")
+        slot = self.joint_slot[has]
+        cols = self.n_points * dim + self.rdof * slot[:, None] + np.arange(self.rdof)
+        k[cols] = rot[has]
+        if dim == 3:
+            self.slot_additive[slot] = True         # DOFs = increments of ψ (Q = I)
+
     def _loads(self) -> None:
         """Reference load pattern ``load`` (``[loads]``): forces on the joints' translations,
         moments on their rotation slots."""
@@ -512,9 +555,21 @@ class NonlinearModel:
             ks.append(kb[live_b])
             ds.append(self.b_dofs[live_b])
         F, K = _assemble_mixed(self.ndof, ds, fs, ks, tangent)
+        F, K = self._add_springs(u, F, K)
         out["internal"] = F
         out["tangent"] = K
         return out
+
+    def _add_springs(self, u: np.ndarray, F: np.ndarray, K):
+        """Internal force and tangent with the springs' ``k u`` and ``diag(k)`` added (a
+        3-D joint slot with a rotational spring stores ψ additively, see :meth:`_springs`)."""
+        if not np.any(self.spring):
+            return F, K
+        import scipy.sparse as sp
+        F = F + self.spring * u
+        if K is not None:
+            K = (K + sp.diags(self.spring, format="csr")).tocsr()
+        return F, K
 
     def _beam3d(self, x, psi, tangent=True, N_override=None):
         """Element forces and tangents of the 3-D beams in the slot DOFs (DOF order of
@@ -668,7 +723,9 @@ class NonlinearModel:
             fb, kb, _, _ = beam2d_matrices(lb, c, s_, L0, ul, th, self.b_EA, self.b_EI,
                                            N_override=Nb)
             ds.append(self.b_dofs[live_b]); fs.append(fb[live_b]); ks.append(kb[live_b])
-        return _assemble_mixed(self.ndof, ds, fs, ks, True)[1]
+        F, K = _assemble_mixed(self.ndof, ds, fs, ks, True)
+        # the springs belong to K (they cancel in Kg = tangent(N) − tangent(0))
+        return self._add_springs(np.zeros(self.ndof), F, K)[1]
 
     def linear_axial_forces(self, u: np.ndarray):
         """Element axial forces of the linearised kinematics, ``EA/L0 · eᵀ(u_b − u_a)``."""

@@ -387,9 +387,15 @@ def default_step(control: str, steps: int, size: float, ut: np.ndarray, c: int,
 
 def _mech_free(model: NonlinearModel) -> np.ndarray:
     """Free joint coordinates for the rank check, shape (node, dim): joints still reached by a
-    live member, or loaded (a loaded joint left without members is a mechanism)."""
+    live member, or loaded (a loaded joint left without members is a mechanism).
+
+    A coordinate on a spring is held like a support: the tangent has a zero-stiffness mode
+    only where the bars leave one with no spring on it, and the rigid-bar motion of the
+    hand-over treats the springs as rigid as it treats the bars."""
     s = model.structure
-    return ~s.supports[:, : s.dim] & _touched(model)
+    n = s.n_nodes * s.dim
+    sprung = (model.spring[:n] > 0).reshape(s.n_nodes, s.dim)
+    return ~s.supports[:, : s.dim] & ~sprung & _touched(model)
 
 
 def _touched(model):
@@ -505,6 +511,13 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
         fac = factor(K, "symmetric")
     except SingularMatrixError:
         nm, _ = mechanism_count(s.coords, s.connectivity, _mech_free(m))
+        if nm == 0:
+            # rigid by its geometry, singular by its numbers (a modulus of 1e-320 Pa)
+            raise MechanismError(s.source or s.name, "the tangent stiffness of the unloaded "
+                                 "structure is numerically singular although its geometry is "
+                                 "rigid; check the units (SI: m, N, Pa, kg, s) and the "
+                                 "magnitudes of the moduli and sections", mechanisms=0
+                                 ) from None
         raise MechanismError(s.source or s.name, f"the unloaded structure is a mechanism "
                              f"({nm} independent mechanism(s)); a post-critical analysis "
                              "needs a stiff start — see 'trussfe mechanism'",
