@@ -13,6 +13,7 @@ import numpy as np
 from ..errors import InputError
 from ..io.json_document import result_json
 from .model import ModelLike, as_structure
+from .options import nonneg_int, positive_int, real, relative_tolerance
 from .results import Result
 
 
@@ -44,6 +45,7 @@ def mechanism(model: ModelLike, *, tolerance: float | None = None,
             or not 2 <= max_order <= MAX_ORDER_LIMIT:
         raise InputError("--max-order", f"must be an integer from 2 to {MAX_ORDER_LIMIT}, "
                                         f"got {max_order!r}")
+    tolerance = relative_tolerance("--tolerance", tolerance)
     structure = as_structure(model)
     rank = structure_rank(structure, tolerance=tolerance)
     order = mechanism_order(structure.coords, structure.connectivity,
@@ -88,17 +90,24 @@ def trace(model: ModelLike, *, drive: str | Sequence[str], step: float | Sequenc
     """
     from ..kinematics.trace import trace_structure
 
-    drives = [drive] if isinstance(drive, str) else list(drive)
-    steps_ = [step] if np.isscalar(step) else list(step)
+    if isinstance(drive, str):
+        drives = [drive]
+    elif isinstance(drive, (Sequence, np.ndarray)) and all(isinstance(d, str) for d in drive):
+        drives = list(drive)
+    else:
+        raise InputError("--drive", f"expected NODE:AXIS (e.g. 3:y) or a list of them, "
+                                    f"got {drive!r}")
+    given = (np.ravel(step).tolist() if isinstance(step, np.ndarray) else list(step)
+             if isinstance(step, Sequence) and not isinstance(step, str) else [step])
+    steps_ = [real("--step", s, nonzero=True, optional=False) for s in given]
     if len(steps_) == 1 and len(drives) > 1:
         steps_ = steps_ * len(drives)
     if len(steps_) != len(drives):
         raise InputError("--step", f"give one --step per --drive ({len(drives)} drives, "
                                    f"{len(steps_)} steps)")
-    if isinstance(steps, bool) or not isinstance(steps, (int, np.integer)) or steps < 1:
-        raise InputError("--steps", f"must be a positive integer, got {steps!r}")
-    if branch < 0:
-        raise InputError("--branch", f"must be 0 or more, got {branch}")
+    steps = positive_int("--steps", steps, optional=False)
+    branch = nonneg_int("--branch", branch)
+    tolerance = relative_tolerance("--tolerance", tolerance, optional=False)
     structure = as_structure(model)
     r = trace_structure(structure, drives, steps_ if len(steps_) > 1 else steps_[0], steps,
                         branch=branch, tolerance=tolerance, newton=not frozen,

@@ -57,7 +57,7 @@ def static(model: ModelLike, *, bar_model: str = "truss", subdivisions: int | No
     MechanismError
         The structure is a mechanism.
     """
-    positive_int("--subdivisions", subdivisions)
+    subdivisions = positive_int("--subdivisions", subdivisions)
     choice("--solver", solver, SOLVERS)
     chosen = [o for o, v in (("--case", case), ("--combination", combination),
                              ("--all", all_cases)) if v not in (None, False)]
@@ -124,6 +124,8 @@ def modes(model: ModelLike, *, count: int | None = None, mass: str = "consistent
     ModesResult
         ``frequencies_hz`` (mode,), ``shapes`` (mode, node, dim), ``effective_mass``, …
     """
+    count = positive_int("--count", count)
+    subdivisions = positive_int("--subdivisions", subdivisions)
     structure = as_structure(model)
     if mass_from is not None:
         structure = _with_case_masses(structure, mass_from)
@@ -180,6 +182,8 @@ def buckling(model: ModelLike, *, count: int = 4, bar_model: str = "pinned-beam"
         ``load_factors`` (mode,), ``shapes`` (mode, node, dim), ``euler_load`` (member,), …
     """
     from ..errors import InputError
+    count = positive_int("--count", count, optional=False)
+    subdivisions = positive_int("--subdivisions", subdivisions)
     structure = as_structure(model)
     from ..fem.buckling import solve_buckling   # imported on first use: start-up
 

@@ -2,7 +2,6 @@
 """Geometrically nonlinear analysis: :func:`postcritical`."""
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import Callable, ClassVar
 
@@ -10,7 +9,7 @@ import numpy as np
 
 from ..errors import InputError
 from .model import ModelLike, as_structure
-from .options import choice, positive_int
+from .options import choice, positive_int, real
 from .results import Result
 
 
@@ -71,14 +70,15 @@ def postcritical(model: ModelLike, *, control: str | None = None, steps: int | N
         choice("--control", control, CONTROLS)
     if bar_model is not None:
         choice("--bar-model", bar_model, BAR_MODELS)
-    positive_int("--steps", steps)
-    positive_int("--subdivisions", subdivisions)
-    for name, v in (("step", step), ("max_load_factor", max_load_factor),
-                    ("max_displacement", max_displacement), ("max_step", max_step)):
-        if v is not None and not (math.isfinite(v) and v > 0):
-            raise InputError(f"--{name.replace('_', '-')}", f"must be positive, got {v}")
-    if imperfection is not None and not (math.isfinite(imperfection) and imperfection >= 0):
-        raise InputError("--imperfection", f"must not be negative, got {imperfection}")
+    steps = positive_int("--steps", steps)
+    subdivisions = positive_int("--subdivisions", subdivisions)
+    step, max_load_factor, max_displacement, max_step = (
+        real(f"--{name.replace('_', '-')}", v, positive=True)
+        for name, v in (("step", step), ("max_load_factor", max_load_factor),
+                        ("max_displacement", max_displacement), ("max_step", max_step)))
+    imperfection = real("--imperfection", imperfection, nonneg=True)
+    if monitor is not None and not isinstance(monitor, str):
+        raise InputError("--monitor", f"expected NODE:AXIS (e.g. 3:y), got {monitor!r}")
     structure = as_structure(model)
     return PostcriticalResult(structure, run_postcritical(
         structure, control=control, steps=steps, step=step, max_load_factor=max_load_factor,

@@ -8,10 +8,23 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..io.model_picture import (DEFAULT_SIZE, PictureResults, draw_model, read_results,
-                                results_from_document)
+from ..errors import InputError
+from ..io.model_picture import (DEFAULT_SIZE, PIXELS_PER_SIDE, PictureResults, draw_model,
+                                read_results, results_from_document)
 from .model import ModelLike, as_structure
+from .options import is_integer, real
 from .results import Result
+
+
+def _size(size) -> tuple[int, int]:
+    """``(width, height)``: two integers in :data:`~trussfe.io.model_picture.PIXELS_PER_SIDE`,
+    else an InputError."""
+    lo, hi = PIXELS_PER_SIDE
+    if (not isinstance(size, (tuple, list)) or len(size) != 2
+            or not all(is_integer(v) and lo <= v <= hi for v in size)):
+        raise InputError("--size", f"expected (width, height) in pixels, integers from {lo} "
+                                   f"to {hi}, got {size!r}")
+    return int(size[0]), int(size[1])
 
 
 @dataclass(frozen=True)
@@ -78,13 +91,13 @@ def show(model: ModelLike, png: str | os.PathLike, *,
     >>> pic.size, out.stat().st_size > 0
     ((1000, 800), True)
     """
+    width, height = _size(size)
+    scale = real("--scale", scale, positive=True)
     structure = as_structure(model)
     if backend is not None and backend not in ("pyvista", "matplotlib"):
-        from ..errors import InputError
         raise InputError("backend", f"unknown backend '{backend}'; use pyvista or matplotlib")
     picture_results: PictureResults | None
     if case is not None and results is None:
-        from ..errors import InputError
         raise InputError("--case", "chooses a load case of the results: give --results too")
     if results is None:
         picture_results = None
@@ -94,7 +107,6 @@ def show(model: ModelLike, png: str | os.PathLike, *,
         picture_results = results_from_document(dict(results), structure, case=case)
     else:
         picture_results = read_results(results, structure, case)
-    width, height = (int(v) for v in size)
     used = draw_model(png, structure, results=picture_results, color=color, scale=scale,
                       labels=labels, backend=backend, size=(width, height))
     return Picture(path=Path(png), backend=used, size=(width, height))

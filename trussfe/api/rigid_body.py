@@ -33,7 +33,7 @@ def load_motion_for(structure: Structure, motion, steps: int | None, *,
     from ..rigid.motion import Motion
     from ..rigid.motion_file import load_motion
 
-    positive_int("--steps", steps)
+    steps = positive_int("--steps", steps)
     if motion is None:
         if required:
             raise InputError("motion", "the analysis needs a motion file")
@@ -56,6 +56,7 @@ def _simulate(model: ModelLike, motion, steps, scheme: str, sections: int,
 
     choice("--scheme", scheme, SCHEMES)
     choice("--method", method, METHODS)
+    sections = positive_int("--sections", sections, optional=False)
     structure = refuse_member_loads(as_structure(model), "simulate")
     mot = load_motion_for(structure, motion, steps)
     return structure, run(structure, mot, conventions=Conventions.from_scheme(scheme),

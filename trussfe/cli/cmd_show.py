@@ -19,18 +19,18 @@ from pathlib import Path
 from typing import Iterator
 
 from .. import api
-from ..io.model_picture import COLOR_BY, DEFAULT_SIZE
+from ..io.model_picture import COLOR_BY, DEFAULT_SIZE, PIXELS_PER_SIDE
 from . import options as opt
 
 log = logging.getLogger("trussfe")
 
 
 def _size(value: str) -> tuple[int, int]:
-    """``WIDTHxHEIGHT`` in pixels, each from 200 to 8000."""
+    """``WIDTHxHEIGHT`` in pixels, each in ``PIXELS_PER_SIDE`` (200 to 8000)."""
     parts = value.lower().replace("×", "x").split("x")
     if len(parts) != 2:
         raise argparse.ArgumentTypeError(f"expected WIDTHxHEIGHT in pixels, got {value!r:.40}")
-    px = opt.integer(200, 8000, "a number of pixels")
+    px = opt.integer(*PIXELS_PER_SIDE, "a number of pixels")
     return px(parts[0].strip()), px(parts[1].strip())
 
 

@@ -17,6 +17,8 @@ import tempfile
 from pathlib import Path
 from typing import Callable
 
+from ..api.options import number_problem
+
 #: Longest text an option value may have (a path or a number); longer is a pasting accident.
 MAX_OPTION_CHARS = 4096
 
@@ -70,17 +72,13 @@ def real(*, positive: bool = False, nonneg: bool = False, nonzero: bool = False,
             x = float(value)
         except ValueError:
             raise argparse.ArgumentTypeError(f"expected {what}, got {_show(value)}") from None
-        if not math.isfinite(x):
-            raise argparse.ArgumentTypeError(f"must be a finite number, got {_show(value)}")
-        if positive and not x > 0.0:
-            raise argparse.ArgumentTypeError(f"must be positive, got {value.strip()}")
-        if nonneg and x < 0.0:
-            raise argparse.ArgumentTypeError(f"must not be negative, got {value.strip()}")
-        if nonzero and x == 0.0:
-            raise argparse.ArgumentTypeError("must not be zero")
-        if below is not None and not x < below:
-            raise argparse.ArgumentTypeError(f"must be smaller than {below:g}, got "
-                                             f"{value.strip()}")
+        problem = number_problem(x, positive=positive, nonneg=nonneg, nonzero=nonzero,
+                                 below=below)
+        if problem:
+            # the value as typed: "got 1e400", not "got inf"
+            shown = _show(value) if not math.isfinite(x) else value.strip()
+            raise argparse.ArgumentTypeError(problem if x == 0.0 and nonzero
+                                             else f"{problem}, got {shown}")
         return x
 
     parse.__name__ = "real"

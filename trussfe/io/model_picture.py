@@ -58,6 +58,8 @@ LOAD_ARROW = 0.18
 DEFORMED_SIZE = 0.1
 #: Default picture size, pixels.
 DEFAULT_SIZE = (1000, 800)
+#: Fewest and most pixels a picture may have per side (``show --size``, ``trussfe.show``).
+PIXELS_PER_SIDE = (200, 8000)
 
 
 @dataclass(frozen=True)
