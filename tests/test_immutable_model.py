@@ -217,3 +217,50 @@ def test_reading_a_model_file_imports_the_model_layer_only(tmp_path):
     assert len(s.extensions["active_members"]) == 3 and len(s.extensions["actuators"]) == 3
     assert s.extensions["postcritical"].monitor == "N7:z"
     assert int(s.extensions["failure"].buckling.sum()) == s.n_members   # "cap" on every bar
+
+
+def _arrays(obj, seen=None, depth=0):
+    """Every numpy array reachable from a model: its fields, its member properties and the
+    fields of its extension tables (dataclasses, mappings and tuples of them)."""
+    seen = set() if seen is None else seen
+    if id(obj) in seen or depth > 4:
+        return
+    seen.add(id(obj))
+    if isinstance(obj, np.ndarray):
+        yield obj
+    elif dataclasses.is_dataclass(obj) and not isinstance(obj, type):
+        for f in dataclasses.fields(obj):
+            yield from _arrays(getattr(obj, f.name), seen, depth + 1)
+    elif isinstance(obj, (tuple, list)):
+        for v in obj:
+            yield from _arrays(v, seen, depth + 1)
+    elif hasattr(obj, "items"):
+        for v in obj.values():
+            yield from _arrays(v, seen, depth + 1)
+
+
+def _models():
+    import copy
+    import pickle
+    s = two_bar()
+    many = s.with_sections({"left": BIG})
+    read = read_model(ROOT / "meshes" / "loads_closed_forms.toml")
+    return {"one section": s, "two sections": many, "moved": s.with_coords(s.coords * 2.0),
+            "subset": many.subset_members([True, False]),
+            "pickled": pickle.loads(pickle.dumps(many)), "deep copy": copy.deepcopy(many),
+            "model file with extensions": read}
+
+
+@pytest.mark.parametrize("name", sorted(_models()))
+def test_no_array_of_a_model_can_be_made_writable_again(name):
+    """Structure's notes: every array is read-only.  ``flags.writeable = False`` alone would
+    let ``setflags(write=True)`` undo it on an array that owns its memory, after which a
+    change would reach every analysis of the model; numpy refuses it for a read-only view of
+    a read-only owner."""
+    s = _models()[name]
+    arrays = list(_arrays(s)) + [s.area, s.E, s.Iy, s.Iz, s.J, s.density, s.c]
+    assert len(arrays) > 10
+    for a in arrays:
+        assert not a.flags.writeable
+        with pytest.raises(ValueError):
+            a.setflags(write=True)

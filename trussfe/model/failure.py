@@ -26,6 +26,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .sealed import sealed
+
 
 BUCKLING = ("none", "cap", "softening", "remove")
 YIELD = ("none", "cap", "remove")
@@ -104,6 +106,4 @@ _FIELDS = ("buckling", "critical_load", "residual", "softening_strain", "yield_m
 
 
 def _frozen(a, dtype, m: int) -> np.ndarray:
-    out = np.array(a, dtype=dtype).reshape(m)
-    out.flags.writeable = False
-    return out
+    return sealed(np.array(a, dtype=dtype).reshape(m))

@@ -22,6 +22,8 @@ from typing import Any
 
 import numpy as np
 
+from .sealed import sealed
+
 #: Name of the one case of a model without ``[load_cases]``.
 DEFAULT_CASE = "default"
 
@@ -32,8 +34,7 @@ def _frozen(value: Any, dtype, shape: tuple[int, ...] | None, name: str) -> np.n
     a = np.array(value, dtype=dtype)
     if shape is not None and a.shape != shape:
         raise ValueError(f"{name}: expected shape {shape}, got {a.shape}")
-    a.flags.writeable = False
-    return a
+    return sealed(a)
 
 
 @dataclass(frozen=True, eq=False)

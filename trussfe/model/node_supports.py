@@ -13,6 +13,8 @@ from typing import Any
 
 import numpy as np
 
+from .sealed import sealed
+
 
 def _readonly(value: Any, name: str) -> np.ndarray:
     a = np.array(value, dtype=float)
@@ -20,8 +22,7 @@ def _readonly(value: Any, name: str) -> np.ndarray:
         raise ValueError(f"{name}: expected a (nodes, DOFs) array, got shape {a.shape}")
     if not np.all(np.isfinite(a)) or np.any(a < 0):
         raise ValueError(f"{name}: values must be finite and not negative")
-    a.flags.writeable = False
-    return a
+    return sealed(a)
 
 
 @dataclass(frozen=True, eq=False)

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .sealed import sealed
 from .sections import Material, Section
 
 #: Section attributes spread over the members, and the material ones.
@@ -82,9 +83,9 @@ def _spread(objs: Sequence[object], attrs: tuple[str, ...],
     if len(first) == 1:
         # one object for every member (the usual large model): a read-only broadcast view
         # of its value, no memory per member
-        return [np.broadcast_to(v, inverse.shape) for v in table[0]]
+        return [np.broadcast_to(sealed(np.array(v)), inverse.shape) for v in table[0]]
     # one gather into an (attribute, member) array: every property a contiguous row
-    rows = _readonly(np.take(np.ascontiguousarray(table.T), inverse, axis=1))
+    rows = sealed(np.take(np.ascontiguousarray(table.T), inverse, axis=1))
     return list(rows)
 
 
@@ -114,7 +115,7 @@ def member_properties(sections: Sequence[Section], materials: Sequence[Material]
     """
     m = len(sections)
     if m == 0:
-        empty = _readonly(np.zeros(0))
+        empty = sealed(np.zeros(0))
         return MemberProperties(*([empty] * (len(SECTION_PROPERTIES)
                                              + len(MATERIAL_PROPERTIES))))
     if groups is not None:
@@ -130,7 +131,3 @@ def member_properties(sections: Sequence[Section], materials: Sequence[Material]
     return MemberProperties(*_spread(sections, SECTION_PROPERTIES, sec_groups),
                             *_spread(materials, MATERIAL_PROPERTIES, mat_groups))
 
-
-def _readonly(a: np.ndarray) -> np.ndarray:
-    a.flags.writeable = False
-    return a

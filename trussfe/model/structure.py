@@ -29,6 +29,7 @@ import numpy as np
 
 from . import geometry
 from .extensions import freeze_extensions, subset_extensions
+from .sealed import sealed
 from .ids import IdRange, id_index
 from .properties import MemberProperties, member_properties
 from .sections import Material, Section
@@ -417,10 +418,8 @@ imperfection=None, branch=None, max_displacement=None)}
         members are dropped, the others renumbered.
         """
         idx = np.flatnonzero(np.asarray(keep, dtype=bool))
-        props = MemberProperties(*(np.array(getattr(self._properties, f.name)[idx])
+        props = MemberProperties(*(sealed(np.array(getattr(self._properties, f.name)[idx]))
                                    for f in fields(MemberProperties)))
-        for f in fields(props):
-            getattr(props, f.name).flags.writeable = False
         return self._derive(dict(
             member_ids=tuple(self.member_ids[i] for i in idx),
             connectivity=self.connectivity[idx],
@@ -559,6 +558,4 @@ def _frozen_array(value, dtype, shape: tuple[int, ...], name: str) -> np.ndarray
         if a.size != int(np.prod(shape)):
             raise ValueError(f"{name}: expected shape {shape}, got {a.shape}")
         a = a.reshape(shape)
-    if a.flags.writeable:
-        a.flags.writeable = False
-    return a
+    return sealed(a)
