@@ -291,9 +291,11 @@ def loaded_member_stations(fe: FEModel, v: MemberLoadVectors, station_x: np.ndar
     """Section forces along the members that carry member loads, by statics from their start
     sections (:func:`trussfe.mechanics.member_loads.section_forces_along`).
 
-    The stations are the member's finite-element stations and the positions of its point
-    loads (where the shear force jumps and the moment peaks), so that a pin-ended bar, which
-    has no station inside, shows its simply supported moment under its loads too.
+    The stations are the member's finite-element stations, the positions of its point
+    loads (where the shear force jumps and the moment peaks) and the points between them
+    where a distributed load makes a shear force vanish (where the moment it bends peaks), so
+    that a pin-ended bar, which has no station inside, shows its simply supported moment
+    under its loads too.
 
     Parameters
     ----------
@@ -321,12 +323,68 @@ def loaded_member_stations(fe: FEModel, v: MemberLoadVectors, station_x: np.ndar
     rank = np.arange(prow.size) - np.repeat(np.cumsum(count) - count, count)
     extra = np.full((members.size, int(count.max(initial=0))), np.nan)
     extra[prow[order], rank] = v.at[v.point][order]
-    x = np.sort(np.concatenate([station_x[members], extra], axis=1), axis=1)
+    x = _distinct_stations([station_x[members], extra], L)
+    start = section_forces[members, 0]
+    F = section_forces_along(x, L, start, row, v.point, v.q1, v.q2, v.at, v.F, v.C)
+    # where a distributed load makes a shear force vanish between two stations, the moment
+    # it bends has its extreme there (the midspan of a bar under a uniform load): a station
+    peaks = _zero_shear_positions(x, F, L, row, v.point, v.q1, v.q2, members.size)
+    if peaks.shape[1]:
+        x = _distinct_stations([x, peaks], L)
+        F = section_forces_along(x, L, start, row, v.point, v.q1, v.q2, v.at, v.F, v.C)
+    F[~np.isfinite(x)] = np.nan
+    return members, x, F
+
+
+def _distinct_stations(parts: list[np.ndarray], L: np.ndarray) -> np.ndarray:
+    """The positions of ``parts`` (each (r, ·), NaN-padded) per member row, sorted, a
+    position within :data:`AT_STATION` of the member length of the one before dropped,
+    NaN-padded to the longest row."""
+    x = np.sort(np.concatenate(parts, axis=1), axis=1)
     same = np.abs(np.diff(x, axis=1)) <= AT_STATION * L[:, None]
     x[:, 1:][same] = np.nan
     x = np.sort(x, axis=1)
-    x = x[:, : int(np.isfinite(x).sum(axis=1).max(initial=0))]
-    F = section_forces_along(x, L, section_forces[members, 0], row, v.point, v.q1, v.q2,
-                             v.at, v.F, v.C)
-    F[~np.isfinite(x)] = np.nan
-    return members, x, F
+    return x[:, : int(np.isfinite(x).sum(axis=1).max(initial=0))]
+
+
+def _zero_shear_positions(x: np.ndarray, F: np.ndarray, L: np.ndarray, row: np.ndarray,
+                          point: np.ndarray, q1: np.ndarray, q2: np.ndarray, r: int
+                          ) -> np.ndarray:
+    r"""Positions strictly between consecutive stations where ``Vy`` or ``Vz`` is zero.
+
+    Between stations (the point loads are stations) a member carries only its distributed
+    loads, ``q(x) = q₁ + (q₂ − q₁) x / L`` summed over them, so from a station ``xᵢ`` with
+    shear ``Vᵢ`` (just beyond it) ``V(xᵢ + t) = Vᵢ − q(xᵢ) t − k t²/2``, ``k = (q₂ − q₁)/L``:
+    its roots in ``(0, h)`` are where ``dM/dx = ∓V`` vanishes.  With loads in one plane (or
+    of one shape in both) these are where the resultant moment, and so the bending stress,
+    is largest.
+
+    Returns
+    -------
+    ndarray, shape (r, p)
+        The positions per member row, NaN-padded (``p`` may be 0).
+    """
+    dist = ~np.asarray(point, bool)
+    qs = np.zeros((r, 3))
+    qe = np.zeros((r, 3))
+    np.add.at(qs, row[dist], q1[dist])
+    np.add.at(qe, row[dist], q2[dist])
+    x0, x1 = x[:, :-1], x[:, 1:]
+    h = x1 - x0                                                        # (r, s − 1), NaN past
+    found = []
+    for c in (1, 2):                                                   # Vy, Vz
+        V = F[:, :-1, c]
+        k = ((qe[:, c] - qs[:, c]) / L)[:, None]
+        qi = qs[:, c][:, None] + k * x0
+        with np.errstate(invalid="ignore", divide="ignore"):
+            D = np.sqrt(np.maximum(qi * qi + 2.0 * k * V, 0.0))
+            s = qi + np.where(qi < 0, -D, D)                           # no cancellation
+            t1 = np.where(s != 0, 2.0 * V / s, np.nan)                 # the root near V/q
+            t2 = np.where(k != 0, -s / k, np.nan)
+            real = qi * qi + 2.0 * k * V >= 0
+        for t in (t1, t2):
+            inside = real & np.isfinite(t) & (t > AT_STATION * L[:, None]) \
+                & (t < h - AT_STATION * L[:, None])
+            found.append(np.where(inside, x0 + t, np.nan))
+    peaks = np.sort(np.concatenate(found, axis=1), axis=1)
+    return peaks[:, : int(np.isfinite(peaks).sum(axis=1).max(initial=0))]

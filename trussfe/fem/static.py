@@ -72,7 +72,8 @@ class StaticResult:
     von_mises_s1, von_mises_s2 : ndarray, shape (m, kmax + 1)
         Von Mises stress at points S1 and S2 of each station (NaN-padded).
     max_von_mises : ndarray, shape (m,)
-        Largest of S1 and S2 over the member's stations.
+        Largest of S1 and S2 over the member's stations (and, for a member carrying member
+        loads, the positions of its point loads).
     element_axial_force : ndarray, shape (n_elements,)
         Axial force of every element averaged along it (tension positive): the input of
         :meth:`FEModel.geometric_stiffness` for a linear buckling analysis.
@@ -82,6 +83,10 @@ class StaticResult:
         Linear-solver backend that factorised K_ff (:mod:`trussfe.linalg.factor`).
     member_loads : MemberLoadVectors or None
         The member loads applied (:mod:`trussfe.fem.member_loads`), None without any.
+    loaded_stations : tuple or None
+        ``(members, x, forces)`` of the members carrying member loads: the section forces at
+        their finite-element stations and under their point loads
+        (:func:`trussfe.fem.member_loads.loaded_member_stations`); None without any.
     timings : dict
         Wall-clock seconds of the steps: ``assemble`` (load vector and stiffness: the sparse
         K, or for a long truss the bars' blocks that go to band storage), ``factorise``,
@@ -106,6 +111,7 @@ class StaticResult:
     residual: float
     backend: str = ""
     member_loads: MemberLoadVectors | None = None
+    loaded_stations: tuple | None = None
     timings: dict = field(default_factory=dict)
 
     @property
@@ -383,13 +389,20 @@ class LinearSystem:
         s1, s2 = _stresses(fe, F)
         # largest over the stations; fmax skips the NaN padding past a member's own stations
         max_vm = _largest_per_row(np.fmax(s1, s2))
+        stations = None
+        if member_loads is not None:
+            # a loaded member's moment peaks between its finite-element stations (under a
+            # point load; a pin-ended bar bends between its joints): its largest stress is
+            # taken over the stations of its loads too
+            stations = loaded_member_stations(fe, member_loads, x, F)
+            max_vm = _with_loaded_stations(fe, stations, max_vm)
         result = StaticResult(
             fe=fe, u=u, f=f, displacements=fe.node_values(u), reactions=fe.node_values(reac),
             axial_force=N_mid, axial_stress=N_mid / s.area, strain=N_mid / (s.E * s.area),
             end_forces=ends, station_x=x, section_forces=F, von_mises_s1=s1,
             von_mises_s2=s2, max_von_mises=max_vm,
             element_axial_force=element_axial, residual=residual,
-            backend=self.factor.backend, member_loads=member_loads)
+            backend=self.factor.backend, member_loads=member_loads, loaded_stations=stations)
         t4 = time.perf_counter()
         # wall-clock seconds: load vector and stiffness (sparse K, or the bars' blocks for
         # the band), factorisation (band fill included), solve with refinement and residual,
@@ -409,6 +422,36 @@ def _largest_per_row(a: np.ndarray) -> np.ndarray:
     out = a[:, 0].copy()
     for j in range(1, a.shape[1]):          # over the few stations, not the members
         np.fmax(out, a[:, j], out=out)
+    return out
+
+
+def _with_loaded_stations(fe: FEModel, stations: tuple, max_vm: np.ndarray) -> np.ndarray:
+    """``max_vm`` with each loaded member's von Mises stress at its load stations (Lacy eqs.
+    2.24, 2.25) taken into its largest.
+
+    Raises
+    ------
+    InputError
+        A loaded member bends but its section has no outer-fibre distance ``c`` (or no second
+        moment of area): its bending stress cannot be computed.
+    """
+    lm, lx, lF = stations
+    if lm.size == 0:
+        return max_vm
+    s = fe.structure
+    col = lambda a: a[lm][:, None]       # member properties against (member, station)
+    vm = von_mises(lF[..., 0], lF[..., 1], lF[..., 2], lF[..., 4], lF[..., 5], col(s.area),
+                   col(s.Iy), col(s.Iz), col(s.c), col(s.c),
+                   col(round_sections(s.sections)))
+    unknown = np.isfinite(lx) & ~np.isfinite(vm.s2)
+    if np.any(unknown):
+        i = int(lm[np.flatnonzero(unknown.any(axis=1))[0]])
+        raise InputError(f"sections.{s.sections[i].name}",
+                         f"c (outer-fibre distance) or I is missing (member {s.member_ids[i]}, "
+                         "which bends under its member loads); its bending stress needs them: "
+                         "give c and I (or the tube's diameters)")
+    out = max_vm.copy()
+    out[lm] = np.fmax(out[lm], _largest_per_row(np.fmax(vm.s1, vm.s2)))
     return out
 
 
@@ -470,10 +513,8 @@ def static_json(result: StaticResult, command: str = "static") -> dict:
         nodes[nid] = d
     members = {}
     along = {}
-    if result.member_loads is not None:
-        lm, lx, lF = loaded_member_stations(fe, result.member_loads, result.station_x,
-                                            result.section_forces)
-        for i, x, F in zip(lm, lx, lF):
+    if result.loaded_stations is not None:
+        for i, x, F in zip(*result.loaded_stations):
             ok = np.isfinite(x)
             along[int(i)] = {"x": x[ok].tolist(), **{
                 n: F[ok, c].tolist() for c, n in enumerate(SECTION_FORCE_NAMES)}}
