@@ -203,3 +203,27 @@ def test_element_axial_force_is_the_average_along_the_element(bar_model, k, at, 
     got = r.element_axial_force
     assert np.allclose(got, expected, rtol=0.0, atol=1e-9 * (F_AXIAL + Q_END * L)), \
         (got, expected)
+
+
+@pytest.mark.parametrize("how", ["plain", "all", "case default"])
+def test_the_default_case_carries_the_models_member_loads(how):
+    """A model without ``[load_cases]`` has one case, ``default``, of the loads a plain
+    static analysis applies — its member loads included (docs/model-format.md, *Load
+    cases*).  Reference: a cantilever of 2 m under q = 1 kN/m, support reaction qL = 2000 N
+    and moment qL²/2 = 2000 N·m (global equilibrium of the cantilever), by ``static``,
+    ``static(all_cases=True)`` and ``static(case="default")`` alike."""
+    q, span = 1000.0, 2.0
+    s = trussfe.model_from_dict({
+        "model": {"dimension": 2}, "materials": {"st": {"E": 2.0e11, "G": 8.0e10}},
+        "sections": {"b": {"area": 4.0e-3, "Iz": 8.0e-6, "c": 0.05}},
+        "nodes": {"A": [0.0, 0.0], "B": [span, 0.0]},
+        "members": {"AB": {"nodes": ["A", "B"], "section": "b", "material": "st",
+                           "type": "beam"}},
+        "supports": {"A": ["x", "y", "rz"]},
+        "member_loads": [{"member": "AB", "kind": "uniform", "q": [0.0, -q]}]})
+    r = {"plain": lambda: trussfe.static(s),
+         "all": lambda: trussfe.static(s, all_cases=True).cases["default"],
+         "case default": lambda: trussfe.static(s, case="default")}[how]()
+    assert r.reaction[0, 1] == pytest.approx(q * span, rel=1e-12)
+    moment = r.to_dict()["nodes"]["A"]["reaction_moment"]
+    assert abs(moment[0]) == pytest.approx(q * span**2 / 2.0, rel=1e-12)

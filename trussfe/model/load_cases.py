@@ -222,11 +222,14 @@ class LoadCases:
 
 def model_load_cases(structure: Any) -> LoadCases:
     """The load cases of a structure: its ``load_cases`` table, or the one implicit case
-    :data:`DEFAULT_CASE` of its ``loads`` and self-weight (a model without ``[load_cases]``)."""
+    :data:`DEFAULT_CASE` of its ``loads``, ``member_loads`` and self-weight (a model without
+    ``[load_cases]``: the loads a plain static analysis applies)."""
     table = structure.extensions.get("load_cases")
     if table is not None:
         return table
-    return LoadCases(cases=(LoadCase(DEFAULT_CASE, structure.loads, gravity=True),))
+    return LoadCases(cases=(LoadCase(DEFAULT_CASE, structure.loads, gravity=True,
+                                     member_loads=tuple(structure.extensions.get(
+                                         "member_loads", ()))),))
 
 
 def check_load_cases(value: Any, n_members: int) -> LoadCases:
