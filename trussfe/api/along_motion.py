@@ -12,6 +12,7 @@ from ..io.json_document import result_json
 from ..model.bar_models import BAR_MODELS
 from .model import ModelLike, as_structure, refuse_member_loads
 from .options import choice, positive_int, real
+from .numerics import numerics_checked
 from .results import Result
 from .rigid_body import SCHEMES, load_motion_for
 
@@ -19,6 +20,7 @@ from .rigid_body import SCHEMES, load_motion_for
 UPDATES = ("per-step", "frozen")
 
 
+@numerics_checked
 def elastic(model: ModelLike, *, motion=None, steps: int | None = None,
             scheme: str = "exact", sections: int = 7,
             subdivisions: int | None = None, progress: Callable[[int, int], None] | None = None) -> ElasticResult:
@@ -66,6 +68,7 @@ def elastic(model: ModelLike, *, motion=None, steps: int | None = None,
     return ElasticResult(structure, resp, rigid=sim, comparison=cmp)
 
 
+@numerics_checked
 def transient(model: ModelLike, *, motion, steps: int | None = None, dt: float | None = None,
               t_end: float | None = None, bar_model: str = "pinned-beam",
               subdivisions: int | None = None, update: str = "per-step",

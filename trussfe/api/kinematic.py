@@ -14,9 +14,11 @@ from ..errors import InputError
 from ..io.json_document import result_json
 from .model import ModelLike, as_structure
 from .options import nonneg_int, positive_int, real, relative_tolerance
+from .numerics import numerics_checked
 from .results import Result
 
 
+@numerics_checked
 def mechanism(model: ModelLike, *, tolerance: float | None = None,
               max_order: int = 64) -> MechanismResult:
     """Rank analysis of the bar assembly (``trussfe mechanism``): ρ(B), internal
@@ -58,6 +60,7 @@ def mechanism(model: ModelLike, *, tolerance: float | None = None,
 MAX_ORDER_LIMIT = 4096
 
 
+@numerics_checked
 def trace(model: ModelLike, *, drive: str | Sequence[str], step: float | Sequence[float],
           steps: int, branch: int = 0, tolerance: float = 1e-10,
           frozen: bool = False, progress: Callable[[int, int], None] | None = None) -> TraceResult:
@@ -116,6 +119,7 @@ def trace(model: ModelLike, *, drive: str | Sequence[str], step: float | Sequenc
                                               "steps": steps, "branch": branch})
 
 
+@numerics_checked
 def topology(model: ModelLike) -> TopologyResult:
     """Graph description of the assembly (``trussfe topology``; Vlase et al. 2008 §2): the
     bar-only equivalent mechanism (plates triangulated, the ground closed, sliders as edges),

@@ -12,12 +12,14 @@ from ..fem.load_cases import load_cases_json, solve_load_cases
 from ..fem.static import solve_static
 from .model import ModelLike, as_structure
 from .options import choice, positive_int
+from .numerics import numerics_checked
 from .results import Result
 
 #: Sparse linear solvers of :func:`static`.
 SOLVERS = ("auto", "superlu", "pardiso")
 
 
+@numerics_checked
 def static(model: ModelLike, *, bar_model: str = "truss", subdivisions: int | None = None,
            solver: str = "auto", case: str | None = None, combination: str | None = None,
            all_cases: bool = False) -> StaticResult | LoadCasesResult:
@@ -94,6 +96,7 @@ def static(model: ModelLike, *, bar_model: str = "truss", subdivisions: int | No
     return LoadCasesResult(structure, solution)
 
 
+@numerics_checked
 def modes(model: ModelLike, *, count: int | None = None, mass: str = "consistent",
           bar_model: str = "truss", subdivisions: int | None = None,
           mass_from: str | None = None,
@@ -156,6 +159,7 @@ def _with_case_masses(structure, name: str):
     return structure.with_masses(structure.masses + added)
 
 
+@numerics_checked
 def buckling(model: ModelLike, *, count: int = 4, bar_model: str = "pinned-beam",
              subdivisions: int | None = None, case: str | None = None,
              combination: str | None = None) -> BucklingResult:

@@ -10,9 +10,11 @@ import numpy as np
 from ..errors import InputError
 from .model import ModelLike, as_structure
 from .options import choice, positive_int, real
+from .numerics import numerics_checked
 from .results import Result
 
 
+@numerics_checked
 def postcritical(model: ModelLike, *, control: str | None = None, steps: int | None = None,
                  step: float | None = None, max_load_factor: float | None = None,
                  max_displacement: float | None = None, monitor: str | None = None,

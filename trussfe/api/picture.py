@@ -13,6 +13,7 @@ from ..io.model_picture import (DEFAULT_SIZE, PIXELS_PER_SIDE, PictureResults, d
                                 read_results, results_from_document)
 from .model import ModelLike, as_structure
 from .options import is_integer, real
+from .numerics import numerics_checked
 from .results import Result
 
 
@@ -46,6 +47,7 @@ class Picture:
     size: tuple[int, int]
 
 
+@numerics_checked
 def show(model: ModelLike, png: str | os.PathLike, *,
          results: str | os.PathLike | Mapping | Result | None = None,
          case: str | None = None, color: str | None = None, scale: float | None = None, labels: bool | None = None,

@@ -13,6 +13,7 @@ from ..io.json_document import result_json
 from ..model.structure import Structure
 from .model import ModelLike, as_structure, refuse_member_loads, resolve_beside
 from .options import choice, positive_int
+from .numerics import numerics_checked
 from .results import Result
 
 #: Kinematics schemes: exact (:data:`~trussfe.mechanics.conventions.PHYSICAL`), or Lacy's
@@ -63,6 +64,7 @@ def _simulate(model: ModelLike, motion, steps, scheme: str, sections: int,
                           n_sections=sections, progress=progress, method=method)
 
 
+@numerics_checked
 def simulate(model: ModelLike, *, motion=None, steps: int | None = None,
              scheme: str = "exact", sections: int = 7, method: str = "auto",
              progress: Callable[[int, int], None] | None = None) -> SimulateResult:
@@ -106,6 +108,7 @@ def simulate(model: ModelLike, *, motion=None, steps: int | None = None,
     return SimulateResult(structure, res)
 
 
+@numerics_checked
 def actuators(model: ModelLike, *, motion=None, steps: int | None = None) -> ActuatorsResult:
     """Leadscrew and motor demands of every ``[actuators]`` entry along a motion
     (``trussfe actuators``): self-locking check (Lacy eq. 2.45), gains (eq. 3.1), peak force,

@@ -24,15 +24,13 @@ import numpy as np
 
 from .._version import __version__
 from ..allocator import tune_allocator
+from ..api.numerics import failure_message
 from ..errors import TrussfeError, one_line
 from ..io.output import output_transaction
 from ..io.toml_text import compiled_parser
 from ..threads import compute_threads
 from .options import INPUT_OPTIONS, check_paths
 
-#: What a numerical overflow in a run usually means, appended to its message.
-UNITS_HINT = ("a value is out of the range of floating-point numbers; check the units "
-              "(SI: m, N, Pa, kg, s) and the magnitudes of loads, moduli and lengths")
 
 
 class _Parser(argparse.ArgumentParser):
@@ -221,7 +219,7 @@ def _run_command(args: argparse.Namespace) -> int:
         _error("", "interrupted; no output written")
         return 130
     except (FloatingPointError, OverflowError, RuntimeWarning, np.linalg.LinAlgError) as exc:
-        _error(where, f"numerical failure ({one_line(str(exc), 200)}): {UNITS_HINT}")
+        _error(where, failure_message(exc))
         return 2
     except MemoryError:
         _error(where, "out of memory: the analysis needs more memory than this machine has; "

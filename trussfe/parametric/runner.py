@@ -21,12 +21,10 @@ from typing import Any, Iterator
 import numpy as np
 
 from ..errors import InputError, TrussfeError, one_line
+from ..api.numerics import failure_message
 from ..api.result_paths import PathError, get_values, numbers, reduce, set_value
 from .spec import TEMPLATE, Study, _catalogue_function, parse_study, with_study_file
 
-#: Error message of a run whose numbers overflowed (as the command line words it).
-_NUMERICS = ("numerical failure ({}): a value is out of the range of floating-point numbers; "
-             "check the units and magnitudes")
 
 
 class StudyInputError(InputError):
@@ -191,7 +189,8 @@ def run_one(study: Study, run_id: int, grid_point: int, sample: int, values: dic
     except TrussfeError as err:
         status, error = "error", one_line(str(err), 500)
     except (FloatingPointError, OverflowError, np.linalg.LinAlgError) as exc:
-        status, error = "error", _NUMERICS.format(one_line(str(exc), 200))
+        # (the analyses raise their own as AnalysisError; this is what reading outputs does)
+        status, error = "error", failure_message(exc)
     except MemoryError:
         status, error = "error", "out of memory"
     except RecursionError:
