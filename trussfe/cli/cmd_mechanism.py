@@ -51,6 +51,9 @@ def _order_line(doc: dict) -> str:
     """One line on the order of the infinitesimal mechanism."""
     a = doc["order_analysis"]
     if doc["order"] == "infinite":
+        if doc["self_stress_states"]:               # only bars between fixed joints
+            return ("order: infinite (a finite mechanism: its only states of self-stress are "
+                    "in bars between fixed joints)")
         return "order: infinite (a finite mechanism: no state of self-stress)"
     if doc["order"] is not None:
         return (f"order: {doc['order']} (compatible to order {doc['order']}, not "

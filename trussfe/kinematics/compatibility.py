@@ -85,3 +85,18 @@ def equilibrium_matrix(coords: np.ndarray, connectivity: np.ndarray,
     (Lacy's nodal constraint equations with the member forces taken as bar tensions).
     """
     return compatibility_matrix(coords, connectivity, free).T.tocsr()
+
+
+def anchored_bar_count(connectivity: np.ndarray, free: np.ndarray) -> int:
+    """Bars whose two joints are fixed in every direction: zero rows of B, each a state of
+    self-stress of its own that no motion changes (a four-bar's ground bar).
+
+    Examples
+    --------
+    >>> free = np.array([[False, False], [False, False], [True, True]])
+    >>> anchored_bar_count(np.array([[0, 1], [1, 2]]), free)
+    1
+    """
+    conn = np.asarray(connectivity, dtype=np.int64).reshape(-1, 2)
+    free = np.asarray(free, dtype=bool)
+    return int(np.sum(~free[conn[:, 0]].any(axis=1) & ~free[conn[:, 1]].any(axis=1)))

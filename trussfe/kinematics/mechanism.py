@@ -36,6 +36,7 @@ import scipy.sparse.linalg as spla
 from ..linalg import SingularMatrixError, factor
 from ..mechanics.geometry import member_vectors
 from .compatibility import compatibility_matrix
+from .unfolding import stress_quadrics
 
 log = logging.getLogger(__name__)
 
@@ -312,8 +313,13 @@ def _switch_branch(x_prev, x, conn, L, free, tau, h, branch, tolerance, max_iter
 
     The bifurcation point is approximated (not located to machine precision) by interpolating
     the signed smallest singular value of ``[B; τᵀ]`` between the two states and correcting
-    there; the other branch's tangent is the part of B's two-dimensional near-null space
-    orthogonal to the traced tangent.  Odd ``branch`` steps along it, even ``branch`` against.
+    there.  The other branch's tangent lies in B's two-dimensional near-null space
+    ``V = [v₁ v₂]``; it is the second root of the second-order compatibility condition
+    ``ωᵀ q(V a) = aᵀ M_ω a = 0`` (:mod:`trussfe.kinematics.unfolding`, ω the states of
+    self-stress at the point), of which the traced tangent t is one root
+    (:func:`_other_root`).  It is in general *not* orthogonal to t: the change-point
+    parallelogram's branches leave the flat state along (1, 1) and (1, −3) in the two
+    transverse coordinates.  Odd ``branch`` steps along it, even ``branch`` against.
     Returns ``(x_b, prediction, independent)`` or None.
     """
     fidx = np.flatnonzero(free.ravel())
@@ -335,15 +341,57 @@ def _switch_branch(x_prev, x, conn, L, free, tau, h, branch, tolerance, max_iter
     xb = x_prev.copy().ravel()
     xb[fidx] += res.increments
     xb = xb.reshape(n, dim)
-    _, _, vt = np.linalg.svd(compatibility_matrix(xb, conn, free).toarray(), full_matrices=True)
+    ub, _, vt = np.linalg.svd(compatibility_matrix(xb, conn, free).toarray(), full_matrices=True)
     V2 = vt[-2:].T                                         # near-null space, (f, 2)
-    u = V2 @ (V2.T @ tau)
-    w = V2[:, 0] if abs(V2[:, 0] @ u) < abs(V2[:, 1] @ u) else V2[:, 1]
-    w = w - (w @ tau) * tau / (tau @ tau)
+    # states of self-stress at the point: ρ(B) = f − 2 there, so the last b − f + 2 left
+    # singular vectors (the one born at the bifurcation and any that persist along the path)
+    Om = ub[:, max(0, fidx.size - 2):]
+    w = V2 @ _other_root(stress_quadrics(xb, conn, free, V2, Om), V2.T @ tau)
     w /= np.linalg.norm(w)
     q = int(np.argmax(np.abs(w)))
     sgn = 1.0 if branch % 2 else -1.0
     return xb, sgn * h * w / abs(w[q]), q
+
+
+def _other_root(M: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """Second root line of the binary quadrics ``aᵀ M_k a = 0`` that share the root t.
+
+    In the basis (t, t⊥), ``Q_k(α t + β t⊥) = α² Q_k(t) + 2αβ c_k + β² d_k`` with
+    ``c_k = tᵀ M_k t⊥`` and ``d_k = t⊥ᵀ M_k t⊥``; with ``Q_k(t) = 0`` the other root is
+    ``α/β = −d_k / (2 c_k)``, taken in the least-squares sense over the quadrics.  When every
+    ``c_k`` vanishes t is a double root (no transversal branch is seen at second order) and
+    t⊥ is returned.
+
+    Parameters
+    ----------
+    M : ndarray, shape (s, 2, 2)
+        The quadrics (:func:`trussfe.kinematics.unfolding.stress_quadrics`).
+    t : ndarray, shape (2,)
+        The known root (the traced tangent in the same basis).
+
+    Returns
+    -------
+    ndarray, shape (2,)
+        The other root, unit length.
+
+    Examples
+    --------
+    ``Q(a) = (3a₀ + a₁)(a₀ − a₁)/2`` has the roots (1, 1) and (1, −3):
+
+    >>> M = np.array([[[1.5, -0.5], [-0.5, -0.5]]])
+    >>> a = _other_root(M, np.array([1.0, 1.0]))
+    >>> np.round(a / a[0], 12).tolist()
+    [1.0, -3.0]
+    """
+    t = np.asarray(t, float) / np.linalg.norm(t)
+    tp = np.array([-t[1], t[0]])
+    c = np.einsum("i,kij,j->k", t, M, tp)
+    d = np.einsum("i,kij,j->k", tp, M, tp)
+    cc = float(c @ c)
+    if M.shape[0] == 0 or cc <= (1e-12 * max(float(np.abs(M).max(initial=0.0)), 1e-300)) ** 2:
+        return tp
+    a = -float(c @ d) / (2.0 * cc) * t + tp
+    return a / np.linalg.norm(a)
 
 
 #: A step whose middle state has the smallest singular value of ``[B; τᵀ]`` below this

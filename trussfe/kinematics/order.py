@@ -33,7 +33,9 @@ self-stress.  Then
 * ``m = 0``: no mechanism, no order (status ``"rigid"``);
 * ``s = 0``, ``m ≥ 1``: B has full row rank, every r_p lies in its range, every order is
   solvable — by the implicit-function theorem the assembly is a finite mechanism with m degrees
-  of freedom: order infinite (``"finite"``);
+  of freedom: order infinite (``"finite"``).  The same holds when the only states of
+  self-stress are bars between two joints fixed in every direction (zero rows of B, whose
+  lengths no motion changes);
 * ``m = 1``, ``s ≥ 1``: the series is built order by order from the mechanism shape u₁ with the
   minimum-norm solution u_p = B⁺ r_p; the first order p whose r_p is not in the range of B gives
   the order ``k = p − 1`` (``"infinitesimal"``).  With one mechanism the order does not depend on
@@ -90,7 +92,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..mechanics.geometry import member_lengths
-from .compatibility import compatibility_matrix
+from .compatibility import anchored_bar_count, compatibility_matrix
 from .rank import RankResult, rank_analysis
 
 #: Relative obstruction above which an order's equation counts as unsolvable.
@@ -231,6 +233,16 @@ def mechanism_order(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
     if s == 0:
         return MechanismOrder(math.inf, "finite", 0, max_order,
                               note="no state of self-stress: every order is solvable")
+    # A bar whose two joints are fixed in every direction is a zero row of B and its own state
+    # of self-stress; no motion changes its length (d_p = 0 at every order, so (r_p)_i = 0), and
+    # it can never obstruct an order.  Without other states B has full row rank on the rest:
+    # the implicit-function theorem applies as for s = 0 (a four-bar with its ground bar).
+    anchored = anchored_bar_count(conn, free)
+    if s == anchored:
+        return MechanismOrder(math.inf, "finite", 0, max_order,
+                              note=f"the only state(s) of self-stress are in the {anchored} "
+                                   "bar(s) between fixed joints, which no motion stretches: "
+                                   "every order is solvable")
     if m > 1:
         return MechanismOrder(None, "several_mechanisms", 0, max_order,
                               note=f"{m} infinitesimal mechanisms with {s} state(s) of "

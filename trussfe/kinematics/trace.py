@@ -57,7 +57,7 @@ import scipy.sparse as sp
 from ..budget import require
 from ..errors import AnalysisError, InputError
 from ..mechanics.geometry import member_lengths
-from .compatibility import compatibility_matrix
+from .compatibility import anchored_bar_count, compatibility_matrix
 from .mechanism import (DENSE_LIMIT, DIVERGENCE_MESSAGE, StepResult, _augmented_tangent,
                         _check_double_crossing, _chord_corrector, _dense_null,
                         _lu_smallest_singular, _switch_branch, _test_function,
@@ -133,6 +133,9 @@ class _Setup:
         ``b + drives = f``: ``[B; cᵀ]`` is square with the drives appended.
     rows : ndarray of int
         Independent rows of B for the determinant test (all rows unless over-constrained).
+    anchored : int
+        Bars whose two joints are fixed in every direction: zero rows of B that no motion
+        changes (they hold a state of self-stress of their own).
     """
 
     x0: np.ndarray
@@ -151,6 +154,7 @@ class _Setup:
     dense: bool
     square: bool
     rows: np.ndarray
+    anchored: int = 0
 
     @property
     def f(self) -> int:
@@ -215,9 +219,10 @@ def _set_up(coords, connectivity, free, drives, step, steps, tolerance, rank_tol
         _, rr, piv = sla.qr(Bt, mode="economic", pivoting=True)
         dg = np.abs(np.diag(rr))
         rows = np.sort(piv[: int(np.sum(dg > rtol * max(dg.max(), 1e-300)))])
+    anchored = anchored_bar_count(conn, free)
     return _Setup(x0=x, conn=conn, free=free, fidx=fidx, L=L, Lmax=Lmax, names=names,
                   drives=drives, dcols=dcols, S=S, rtol=rtol, h_full=h_full, h_min=h_min,
-                  dense=dense, square=square, rows=rows)
+                  dense=dense, square=square, rows=rows, anchored=anchored)
 
 
 class _StartState(NamedTuple):
@@ -301,8 +306,13 @@ class _Trace:
     def inspect_state(self, k: int, item: str) -> _StartState:
         """B at the current state; its rank and null space on the dense path (ρ(B), section 3).
 
-        Refuses a rigid assembly (nullity 0) and more drives than degrees of freedom at the
-        start.  When the motion has unfolded into a mechanism with fewer degrees of freedom
+        Refuses a rigid assembly (nullity 0), more drives than degrees of freedom at the
+        start, and fewer drives than degrees of freedom at a regular state: where B has full
+        row rank (bars between fixed joints aside) the compatible states near x form a smooth
+        manifold of dimension μ·j − ρ(B) (implicit-function theorem), so a nullity above the
+        number of drives is a mechanism with more freedoms (or rigid-body motions the
+        supports leave free), not a bifurcation point (section 4 needs a state of
+        self-stress there).  When the motion has unfolded into a mechanism with fewer degrees of freedom
         than drives (section 6: after the prescribed increments a one-degree-of-freedom finite
         mechanism), the trace continues along the tangent with the drive of largest increment,
         which reports limit points.
@@ -332,6 +342,13 @@ class _Trace:
                                                self.S[[keep]])
             self.nd = 1
             self.prev_drive_dir = None
+        if nullity is not None and nullity > self.nd and rank == B.shape[0] - su.anchored:
+            raise InputError("drive", f"the assembly has {nullity} degrees of freedom here (the "
+                                      "compatibility matrix has full row rank: a regular state, "
+                                      f"not a bifurcation point) but {self.nd} drive(s) were "
+                                      f"given; prescribe {nullity} drives, or add supports to "
+                                      "fix the joints and rigid-body motions that should not "
+                                      "move")
         return _StartState(B, rank, N, nullity)
 
     # ----------------------------------------------------------------------- predictors

@@ -79,6 +79,39 @@ def _quadric_terms(coords, conn, free, N, a):
     return q, dq
 
 
+def stress_quadrics(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarray,
+                    N: np.ndarray, Om: np.ndarray) -> np.ndarray:
+    """The quadrics ``ωᵀ q(N a) = aᵀ M_k a`` of the second-order condition (module notes).
+
+    Parameters
+    ----------
+    coords : ndarray, shape (n, dim)
+    connectivity : ndarray of int, shape (b, 2)
+    free : ndarray of bool, shape (n, dim)
+    N : ndarray, shape (f, m)
+        First-order motions (a basis of the null space of B, free coordinates).
+    Om : ndarray, shape (b, s)
+        States of self-stress.
+
+    Returns
+    -------
+    ndarray, shape (s, m, m)
+        ``M_k = Σ_b ω_kb / l_b ΔN_bᵀ ΔN_b``.
+    """
+    x = np.asarray(coords, float)
+    conn = np.asarray(connectivity, dtype=np.int64).reshape(-1, 2)
+    n, dim = x.shape
+    m = N.shape[1]
+    fidx = np.flatnonzero(np.asarray(free, bool).ravel())
+    Nf = np.zeros((n * dim, m))
+    Nf[fidx] = N
+    Nf = Nf.reshape(n, dim, m)
+    L = member_lengths(x, conn)
+    dN = Nf[conn[:, 1]] - Nf[conn[:, 0]]                   # (b, dim, m)
+    W = np.einsum("bs,bdm->sbdm", Om / L[:, None], dN)      # stress-weighted, (s, b, dim, m)
+    return np.einsum("sbdm,bdn->smn", W, dN)
+
+
 def tangent_cone(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarray, *,
                  starts: int = 200, seed: int = 0, rtol: float = 1e-8) -> TangentCone:
     """Real lines of the second-order tangent cone (the unfolding directions) at a state.
@@ -121,16 +154,7 @@ def tangent_cone(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarray,
     if s == 0:
         return TangentCone(N.T.copy(), np.ones(m, bool), m, 0)
     rng = np.random.default_rng(seed)
-    n, dim = x.shape
-    fidx = np.flatnonzero(np.asarray(free, bool).ravel())
-    Nf = np.zeros((n * dim, m))
-    Nf[fidx] = N
-    Nf = Nf.reshape(n, dim, m)
-    L = member_lengths(x, conn)
-    dN = Nf[conn[:, 1]] - Nf[conn[:, 0]]                   # (b, dim, m)
-    W = np.einsum("bs,bdm->sbdm", Om / L[:, None], dN)      # stress-weighted, (s, b, dim, m)
-    # ωᵀq(N a) = aᵀ M a with M_k = Σ_b ω_kb/l_b ΔN_bᵀ ΔN_b: the quadrics, shape (s, m, m)
-    M = np.einsum("sbdm,bdn->smn", W, dN)
+    M = stress_quadrics(x, conn, free, N, Om)
     A = rng.normal(size=(starts, m))
     A /= np.linalg.norm(A, axis=1, keepdims=True)
     for _it in range(60):                                  # Newton on all starts at once
