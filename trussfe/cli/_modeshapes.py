@@ -10,18 +10,20 @@ from ..io.vtk import write_mode_set
 
 
 def station_shapes(fe, shapes: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
-    """Mode shapes along subdivided members, or ``None`` when members are not subdivided
-    or not all subdivided alike.
+    """Mode shapes along subdivided members, or ``None`` when no member is subdivided.
+
+    Members with fewer elements than others (truss bars beside beams) have their stations
+    NaN-padded at the end of their row, as :func:`trussfe.io.vtk.station_mesh` takes them.
 
     Returns
     -------
     (xi, values) : ndarray (m, s) and ndarray (k, m, s, dim)
     """
-    k = fe.member_subdivisions
-    if k.size == 0 or k.min() < 2 or k.min() != k.max():
+    k = np.asarray(fe.member_subdivisions)
+    if k.size == 0 or k.max() < 2:
         return None
-    s = int(k[0]) + 1
-    xi = np.broadcast_to(np.linspace(0.0, 1.0, s), (k.size, s))
+    j = np.arange(int(k.max()) + 1)
+    xi = np.where(j[None, :] <= k[:, None], j[None, :] / k[:, None], np.nan)
     vals = np.stack([fe.station_displacements(shapes[:, i]) for i in range(shapes.shape[1])])
     return xi, vals
 
