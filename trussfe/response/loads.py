@@ -196,7 +196,7 @@ def motion_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies | N
         point_force=fb, point_couple=cb, nodal=nodal)
 
 
-def _hermite(s: np.ndarray, h: np.ndarray):
+def hermite(s: np.ndarray, h: np.ndarray):
     """Cubic Hermite shape functions and their x-derivatives at s = ξ/h ∈ [0, 1]."""
     s2, s3 = s * s, s * s * s
     H = np.stack([1 - 3 * s2 + 2 * s3, h * (s - 2 * s2 + s3), 3 * s2 - 2 * s3,
@@ -214,7 +214,7 @@ def _end_components(f: np.ndarray, m: np.ndarray, s: np.ndarray, h: np.ndarray,
     ``w`` (..., p); returns (..., 2, 6): ``[Fx, Fy, Fz, Mx, My, Mz]`` at each element end.
     Transverse fields: v with θz = v′, w with θy = −w′ (:mod:`trussfe.fem.discretisation`).
     """
-    H, dH = _hermite(s, h[..., None])                      # (..., p, 4)
+    H, dH = hermite(s, h[..., None])                      # (..., p, 4)
     P1 = np.stack([1 - s, s], axis=-1)                     # (..., p, 2)
     fw, mw = f * w[..., None], m * w[..., None]
     out = np.zeros(s.shape[:-1] + (2, 6))

@@ -72,12 +72,14 @@ from ..fem.discretisation import FEModel, discretise
 from ..model.bar_models import BAR_MODELS
 from ..fem.solver import factorise
 from ..linalg import SingularMatrixError, factor
+from ..mechanics.mass import mass_per_length
 from ..fem.static import section_forces as fe_section_forces
 from ..model.structure import Structure
 from ..rigid.forces import member_bodies
 from ..rigid.kinematics import Kinematics
 from ..rigid.motion import Motion
 from ..rigid.simulate import simulate
+from .loads import hermite
 from .transient_fe import assemble_block, massless_active
 
 log = logging.getLogger(__name__)
@@ -651,17 +653,107 @@ def _member_forces(B, U: np.ndarray, acc: np.ndarray, structure: Structure, nb: 
     _x, F = fe_section_forces(fe, ub, fel)                    # (nb·m, kmax+1, ...)
     m = structure.n_members
     ksub = fe.member_subdivisions
-    # Midpoint: the middle station (even k) or the mean of the two around it (odd k).
+    # Midpoint: the middle station (even k) or the mean of the two around it (odd k; exact
+    # for truss bars, whose recovered force is constant along the bar).
     lo = ksub // 2
     hi = (ksub + 1) // 2
     rows = np.arange(ksub.size)
     Fm = 0.5 * (F[rows, lo] + F[rows, hi])
+    # A frame member with an odd k has its midpoint inside its middle element, where the
+    # distributed loads make the moment vary (the mean of the end values would give 0 for k = 1
+    # and 8/9 of a parabolic moment for k = 3): recover it by the equilibrium of the half
+    # element.
+    for g in fe.groups:
+        if g.kind == "frame":
+            _odd_midpoints(fe, g, fel, ab, grav, Fm)
     N = Fm[:, 0].reshape(nb, m)
     if structure.dim == 2:
         Mm = np.abs(Fm[:, 5])
     else:
         Mm = np.hypot(Fm[:, 4], Fm[:, 5])
     return N, Mm.reshape(nb, m)
+
+
+#: Gauss–Legendre points and weights on [0, 1]; three points integrate the degree ≤ 4
+#: integrands of :func:`_odd_midpoints` exactly.
+_GAUSS_X, _GAUSS_WX = np.polynomial.legendre.leggauss(3)
+_GAUSS_S, _GAUSS_W = 0.5 * (_GAUSS_X + 1.0), 0.5 * _GAUSS_WX
+
+
+def _odd_midpoints(fe: FEModel, g, fel: np.ndarray, acc: np.ndarray, grav: np.ndarray,
+                   Fm: np.ndarray) -> None:
+    """Section forces at the midpoint of the frame members of group ``g`` whose number of
+    elements is odd, written into ``Fm`` (member, 6).
+
+    The midpoint lies at the middle of element ``j = k // 2``.  The equilibrium of the piece
+    ``(x_m, x_1]`` of that element, with ``F_1, M_1`` the force and moment on the element at
+    its end ``x_1``, gives the section force (what the end side exerts on the start side, as
+    :func:`trussfe.fem.static.section_forces`)
+
+    .. math:: F(x_m) = F_1 + \\int_{x_m}^{x_1} q, \\qquad
+              M(x_m) = M_1 + (x_1 - x_m)\\, e_x \\times F_1
+                       + \\int_{x_m}^{x_1} (\\xi - x_m)\\, e_x \\times q,
+
+    where ``q = ρA (g − a)`` is the load of :meth:`FEModel.element_forces` here: gravity and
+    the d'Alembert inertia of the acceleration ``a`` interpolated by the element's shape
+    functions (linear axially, cubic Hermite transversely, θz = v′, θy = −w′).
+
+    Parameters
+    ----------
+    fe : FEModel
+    g : _Group
+        A frame group of ``fe``.
+    fel : ndarray, shape (n_elements, 2, 6)
+        :meth:`FEModel.element_forces` with those loads.
+    acc : ndarray, shape (n_dof,)
+        Acceleration (rigid plus elastic) on the global DOFs.
+    grav : ndarray, shape (dim,)
+    Fm : ndarray, shape (n_members, 6)
+        Midpoint section forces, updated in place for the members concerned.
+    """
+    ksub = fe.member_subdivisions
+    emem = fe.element_member[g.elements]
+    local = g.elements - fe.member_elements[emem]              # element's place in its member
+    pick = np.flatnonzero((ksub[emem] % 2 == 1) & (local == ksub[emem] // 2))
+    if pick.size == 0:
+        return
+    dim = fe.ndim
+    el = g.elements[pick]
+    mem = emem[pick]
+    comp = (g.G @ acc).reshape(g.elements.size, 2, g.ncomp)[pick]    # member axes
+    h = fe.element_length[el]
+    s = fe.structure
+    mu = mass_per_length(s.density, s.area)[mem]
+    g_loc = np.einsum("eij,j->ei", fe.rotation[mem], np.asarray(grav, dtype=float)[:dim]) \
+        if np.any(grav) else np.zeros((el.size, dim))
+    # the half element s ∈ [1/2, 1] of the element's own coordinate s = (ξ − x0)/h
+    sq = 0.5 + 0.5 * _GAUSS_S
+    wq = 0.5 * _GAUSS_W
+    lin = np.stack([1.0 - sq, sq])                                      # (2, q)
+    herm, _ = hermite(np.broadcast_to(sq, (el.size, sq.size)), h[:, None])   # (el, q, 4)
+    a0, a1 = comp[:, 0], comp[:, 1]
+    # acceleration at the quadrature points, member axes: (el, q, dim)
+    a_q = np.zeros((el.size, sq.size, dim))
+    a_q[..., 0] = a0[:, None, 0] * lin[0] + a1[:, None, 0] * lin[1]
+    # the rotation component and sign of each transverse field: v with θz = v′ (the last
+    # component: [u, v, θz] in 2-D, [u, v, w, θx, θy, θz] in 3-D), w with θy = −w′
+    slopes = {1: (1.0, g.ncomp - 1), 2: (-1.0, 4)}
+    for c in range(1, dim):
+        sign, rc = slopes[c]
+        a_q[..., c] = (a0[:, None, c] * herm[..., 0] + sign * a0[:, None, rc] * herm[..., 1]
+                       + a1[:, None, c] * herm[..., 2] + sign * a1[:, None, rc] * herm[..., 3])
+    q = mu[:, None, None] * (g_loc[:, None, :] - a_q)                  # (el, q, dim)
+    Q = np.einsum("q,eqc->ec", wq, q) * h[:, None]
+    arm = (sq - 0.5)[None, :] * h[:, None]                             # ξ − x_m
+    MQ = np.einsum("q,eq,eqc->ec", wq, arm, q) * h[:, None]
+    F1 = fel[el, 1]
+    half = 0.5 * h
+    out = F1.copy()
+    out[:, :dim] += Q
+    out[:, 5] += half * F1[:, 1] + MQ[:, 1]
+    if dim == 3:
+        out[:, 4] += -half * F1[:, 2] - MQ[:, 2]
+    Fm[mem] = out
 
 
 def _frequencies(K, M, free, count: int = 6) -> np.ndarray:
