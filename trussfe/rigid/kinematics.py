@@ -129,6 +129,45 @@ def member_histories(driven: np.ndarray, members: np.ndarray, rest: np.ndarray |
     return out
 
 
+#: Relative slack of :func:`check_fixed_members` (round-off of a length written to a file).
+FIXED_LENGTH_TOLERANCE = 1e-9
+
+
+def check_fixed_members(structure: Structure, motion: Motion) -> None:
+    """Refuse a motion that changes the length of a member between two held nodes.
+
+    A member whose two nodes are held in every direction takes no part in the assembly
+    (:class:`_Pattern`: it constrains nothing), so the position solver never sees its
+    length, and the member keeps the distance of its supports whatever the motion asks.  A
+    motion that asks another length describes no assembly (Lacy section 2.3: the lengths
+    fix the positions), and computing on would pair the supports' distance with the
+    motion's length rate in the member's inertia loads (eqs. 2.3–2.5, 4.58–4.61).
+
+    Raises
+    ------
+    AnalysisError
+        Naming the first step and the member, when a driven member between held nodes
+        departs from its supports' distance by more than :data:`FIXED_LENGTH_TOLERANCE`
+        (relative).
+    """
+    pattern = _Pattern.of(structure)
+    members = np.asarray(motion.members)
+    grounded = np.flatnonzero(~pattern.loaded[members])
+    if grounded.size == 0:
+        return
+    L0 = structure.lengths()[members[grounded]]
+    off = np.abs(motion.length[:, grounded] - L0) > FIXED_LENGTH_TOLERANCE * L0
+    if not off.any():
+        return
+    k, j = (int(i) for i in np.argwhere(off)[0])
+    c = int(grounded[j])
+    raise AnalysisError(_step_item(motion, k), f"active member "
+                        f"'{structure.member_ids[int(members[c])]}' joins two supported "
+                        f"nodes {L0[j]:.6g} m apart, but the motion asks "
+                        f"{motion.length[k, c]:.6g} m: no assembly has that length (support "
+                        "one of its nodes less, or leave it out of the motion)")
+
+
 def _member_lengths(structure: Structure, motion: Motion) -> np.ndarray:
     """Member lengths at every step: passive members keep their model length, (nt, m)."""
     return member_histories(motion.length, motion.members, structure.lengths(),
@@ -160,6 +199,7 @@ def solve_motion_positions(structure: Structure, motion: Motion,
         Naming the time step and the members when no assembly exists for the lengths, or when
         the assembly passes a singular position.
     """
+    check_fixed_members(structure, motion)
     L = _member_lengths(structure, motion)
     x0 = np.array(structure.coords if coords0 is None else coords0, dtype=float)
     nt = motion.n_steps
@@ -530,6 +570,13 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     Returns
     -------
     Kinematics
+
+    Raises
+    ------
+    AnalysisError
+        A statically indeterminate truss or a mechanism, a motion for whose lengths no
+        assembly exists (:func:`check_fixed_members` among them), or a singular position
+        (naming the step).
     """
     if scheme not in ("exact", "thesis"):
         raise AnalysisError("scheme", f"unknown kinematics scheme {scheme!r}; use 'exact' or "
@@ -537,6 +584,9 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     pattern = _Pattern.of(structure)
     if pattern.m != pattern.nfree:
         raise AnalysisError(structure.source or structure.name, _count_message(pattern))
+    # positions given by the caller (a chain's bays, a block of a motion) have not been
+    # checked against the lengths of members the assembly does not see
+    check_fixed_members(structure, motion)
     X = (solve_motion_positions(structure, motion, progress=progress) if coords is None
          else coords)
     nt = X.shape[0]

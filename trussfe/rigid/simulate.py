@@ -572,15 +572,27 @@ def _actuator_histories(structure: Structure, motion: Motion, res: SimulationRes
     except ImportError:
         log.warning("actuator data present but the actuator model is not available; skipped")
         return {}
-    # Columns in motion order: the motion may list the active members in another order.
+    # Every active member, in the order of the actuator forces: an active member the motion
+    # does not name keeps its model length (docs/actuators.md, *Measured motions*), so its
+    # actuator holds the load at rest (Ẋ = Ẍ = 0) and its motor still carries the holding
+    # torque, current and voltage (Lacy section 2.9, eqs. 2.37/2.40/2.44) — as every
+    # actuator does in an analysis at rest.
     acts = [a.member for a in active_members(structure)]
-    order = [acts.index(k) for k in motion.members]
-    force = res.actuator_force[:, order]
+    moving = {int(k): j for j, k in enumerate(motion.members)}
+    rates = [np.zeros((motion.n_steps, len(acts))) for _ in range(2)]
+    for c, k in enumerate(acts):
+        if k in moving:
+            rates[0][:, c] = motion.velocity[:, moving[k]]
+            rates[1][:, c] = motion.acceleration[:, moving[k]]
+    every = Motion(time=motion.time, members=acts,
+                   length=res.kinematics.length[:, acts], velocity=rates[0],
+                   acceleration=rates[1], source=motion.source,
+                   first_step=motion.first_step)
     kwargs = {}
     params = inspect.signature(actuator_histories).parameters
     if "static_force" in params:
-        kwargs["static_force"] = res.static_actuator_force[:, order]
-    out = actuator_histories(structure, motion, force, **kwargs)
+        kwargs["static_force"] = res.static_actuator_force
+    out = actuator_histories(structure, every, res.actuator_force, **kwargs)
     if not isinstance(out, dict):
         raise AnalysisError("actuators", "the actuator model returned no histories")
     return out
