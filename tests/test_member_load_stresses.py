@@ -128,3 +128,21 @@ def test_a_propped_cantilever_shows_its_span_moment(equilibrium):
     assert np.max(np.abs(Mz)) == pytest.approx(q * L**2 / 8.0, rel=1e-9)
     assert r.max_von_mises[0] == pytest.approx(_tube_stress(q * L**2 / 8.0, 5 * q * L / 8),
                                                rel=1e-9)
+
+
+def test_a_point_load_on_a_station_is_seen_after_it_in_both_outputs(equilibrium):
+    """docs/json.md: the ``stations`` give the section just after a point load; the
+    finite-element stations (the ``_stations.vtu`` file) give the same where the load sits
+    on one of them.  Reference: statics of a simply supported member of span L = 3 m under a
+    point load (300 N along, −1000 N across) at midspan: just after it V = +500 N and N = 0
+    (A takes the axial load), M = PL/4 = 750 N·m."""
+    s = _bar({"kind": "point", "at": 0.5, "F": [300.0, -1000.0]}, "beam")
+    r = solve_static(s, subdivisions=4)
+    equilibrium(r, member_loads=s.extensions["member_loads"])
+    fe_mid = r.section_forces[0, 2]                 # station 2 of 4: the midspan
+    _, x, F = r.loaded_stations
+    j = int(np.flatnonzero(np.isclose(x[0], L / 2))[0])
+    for got in (fe_mid, F[0, j]):
+        assert got[0] == pytest.approx(0.0, abs=1e-9)
+        assert got[1] == pytest.approx(500.0, rel=1e-9)
+        assert abs(got[5]) == pytest.approx(1000.0 * L / 4.0, rel=1e-9)

@@ -125,8 +125,15 @@ def member_load_vector(fe: FEModel, loads: Sequence[MemberLoad]) -> MemberLoadVe
     d_el = first[mem[d_load]] + (np.arange(d_load.size)
                                  - np.repeat(np.cumsum(reps) - reps, reps))
     pts = np.flatnonzero(point)
-    h_m = L[mem[pts]] / k[mem[pts]]
-    j = np.clip(np.floor(a[pts] / h_m).astype(np.int64), 0, k[mem[pts]] - 1)
+    kp = k[mem[pts]]
+    h_m = L[mem[pts]] / kp
+    # a point load on an inner station goes to the element that ends there, so that the
+    # station's section force (the start of the next element) is the one just after the
+    # load, as in the statics of loaded_member_stations
+    r = a[pts] / h_m
+    on_station = np.abs(r - np.round(r)) <= AT_STATION * kp
+    j = np.where(on_station, np.round(r) - 1, np.floor(r)).astype(np.int64)
+    j = np.clip(j, 0, kp - 1)
     p_el = first[mem[pts]] + j
     xi = np.clip((a[pts] - fe.element_x[p_el, 0]) / fe.element_length[p_el], 0.0, 1.0)
     twistless = ~fe.twist_member[mem[pts]] & (np.abs(C[pts, 0]) > 0)
