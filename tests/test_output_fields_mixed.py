@@ -194,3 +194,19 @@ def test_trace_parameter_is_the_pvd_time_and_grows_for_a_negative_step(tmp_path,
         x = np.array([p["positions"][n] for n in ids])
         assert_allclose(mesh.points[:, :2], x, atol=1e-12)
         assert_allclose(mesh.point_data["displacement"][:, :2], x - start, atol=1e-12)
+
+
+def test_simulate_pvd_times_are_the_json_times(tmp_path, capsys):
+    """docs/vtk.md: the time of a step of a series is its ``.pvd`` time value; for
+    ``simulate`` it is the JSON's ``time`` of the step to the last digit (a motion of 3 s in
+    10 steps has times such as 0.3333333333333333 s, not 0.333333333)."""
+    meshes = Path(__file__).resolve().parents[1] / "meshes"
+    out = tmp_path / "vtk"
+    assert main(["simulate", str(meshes / "triangular_truss_motion_active.toml"),
+                 "--motion", str(meshes / "triangular_truss_motion_3s.toml"), "--steps", "10",
+                 "--json", str(tmp_path / "s.json"), "--vtk", str(out)]) == 0
+    capsys.readouterr()
+    doc = json.loads((tmp_path / "s.json").read_text())
+    times = [t for t, _ in read_pvd(next(out.glob("*.pvd")))]
+    assert times == doc["time"]
+    assert any(len(repr(t)) > 11 for t in times)

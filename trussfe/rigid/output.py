@@ -99,6 +99,8 @@ def write_vtk(directory: str | Path, res: SimulationResult, stem: str = "simulat
     """
     import meshio
 
+    from ..io.vtk import write_pvd
+
     s = res.structure
     X = res.kinematics.coords
     pad = np.zeros(X.shape[:2] + (3 - s.dim,))
@@ -111,7 +113,7 @@ def write_vtk(directory: str | Path, res: SimulationResult, stem: str = "simulat
     members = [a.member for a in active_members(s)]
     if members:
         act[:, members] = res.actuator_force
-    lines = []
+    entries = []
     with atomic_dir(directory) as tmp:
         for k, t in enumerate(res.time):
             name = f"{stem}_{k:05d}.vtu"
@@ -125,10 +127,9 @@ def write_vtk(directory: str | Path, res: SimulationResult, stem: str = "simulat
                            "buckling_utilisation": [utilisation[k]],
                            "actuator_force": [act[k]]})
             mesh.write(tmp / name)
-            lines.append(f'    <DataSet timestep="{t:.9g}" part="0" file="{name}"/>')
-        (tmp / f"{stem}.pvd").write_text(
-            '<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n'
-            "  <Collection>\n" + "\n".join(lines) + "\n  </Collection>\n</VTKFile>\n")
+            entries.append((float(t), name))
+        # the step times as the JSON gives them (every digit), in the one .pvd writer
+        write_pvd(tmp / f"{stem}.pvd", entries)
     return Path(directory) / f"{stem}.pvd"
 
 
