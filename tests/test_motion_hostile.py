@@ -258,3 +258,33 @@ def test_valid_summary_line_is_unchanged(capsys):
     assert out.strip() == ("triangular truss (Lacy Fig. 2.1): 50 steps; largest von Mises "
                            "2.6133e+07 Pa in member active at t = 1.5 s; smallest buckling "
                            "margin 4.86")
+
+
+def test_a_member_driven_shorter_than_its_tube_is_refused():
+    """The leadscrew tube lies between the member's end node and its base, so an active
+    member may not become shorter than its ``tube_length`` (the model reader refuses a tube
+    longer than the member at rest for the same reason): a motion to 1.8 m of the triangular
+    truss's active member, whose tube is 2.0 m and which has no stroke limits, is refused
+    naming the step, the member and the tube."""
+    from dataclasses import replace
+
+    from trussfe.models import triangular_truss
+    from trussfe.rigid.motion import Motion
+    from trussfe.rigid.simulate import simulate
+
+    s = triangular_truss(active_members=True)
+    a = s.extensions["active_members"][0]
+    free = s.with_extensions(active_members=(replace(a, min_length=np.nan,
+                                                     max_length=np.nan),))
+    L0 = float(s.lengths()[a.member])
+    t = np.linspace(0.0, 1.0, 5)
+    length = np.linspace(L0, 1.8, 5)[:, None]
+    motion = Motion(t, [a.member], length, np.full_like(length, 1.8 - L0),
+                    np.zeros_like(length))
+    with pytest.raises(InputError, match=r"step 3 \(t = 0\.75 s\): active member '\w+' is "
+                                         r"1\.975 m long, shorter than its leadscrew tube "
+                                         r"\(2 m, \[active_members\.\w+\] tube_length\)"):
+        simulate(free, motion)
+    ok = Motion(t, [a.member], np.linspace(L0, 2.0, 5)[:, None],
+                np.full((5, 1), 2.0 - L0), np.zeros((5, 1)))
+    assert np.all(np.isfinite(simulate(free, ok).midpoint_axial_force))

@@ -111,7 +111,8 @@ def check_stroke(structure: Structure, motion: Motion) -> None:
     """Raise :class:`InputError` when ``motion`` drives an active member outside its stroke.
 
     The stroke limits are the ``min_length``/``max_length`` of ``[active_members]``
-    (:class:`~trussfe.model.active.ActiveMember`); a member without them is not checked.  A
+    (:class:`~trussfe.model.active.ActiveMember`); a member without them is checked only
+    against its ``tube_length``, which it may not become shorter than.  A
     length within 1e-9 (relative) of a limit counts as on it, so a motion generated to end
     exactly at a limit is not refused for its last bit.
 
@@ -125,28 +126,40 @@ def check_stroke(structure: Structure, motion: Motion) -> None:
     trussfe.errors.InputError: motion: step 1 (t = 1 s): active member 'active' is 4.2 m long, \
 beyond its stroke 2.5-4.1 m ([active_members.active] min_length, max_length)
     """
-    limits = {a.member: (a.min_length, a.max_length)
-              for a in structure.extensions.get("active_members", ())}
+    actives = {a.member: a for a in structure.extensions.get("active_members", ())}
     item = f"{motion.source}: motion" if motion.source else "motion"
     first = None
     for j, k in enumerate(np.asarray(motion.members).tolist()):
-        lo, hi = limits.get(k, (math.nan, math.nan))
+        a = actives.get(k)
+        lo, hi = (a.min_length, a.max_length) if a is not None else (math.nan, math.nan)
+        # the leadscrew tube lies between the member's end node and the base: a member
+        # shorter than its tube would put the tube behind its start node (the model file's
+        # tube_length is refused when longer than the member at rest, for the same reason)
+        tube = a.tube_length if a is not None else math.nan
         L = motion.length[:, j]
         out = np.zeros(L.shape, dtype=bool)
         if np.isfinite(lo):
             out |= L < lo * (1.0 - STROKE_TOLERANCE)
         if np.isfinite(hi):
             out |= L > hi * (1.0 + STROKE_TOLERANCE)
+        if np.isfinite(tube):
+            out |= L < tube * (1.0 - STROKE_TOLERANCE)
         if out.any():
             i = int(np.argmax(out))
             if first is None or i < first[0]:
-                first = (i, j, k, lo, hi)
+                first = (i, j, k, lo, hi, tube)
     if first is not None:
-        i, j, k, lo, hi = first
+        i, j, k, lo, hi, tube = first
         name = structure.member_ids[k]
-        side = "short of" if motion.length[i, j] < lo * (1.0 - STROKE_TOLERANCE) else "beyond"
-        raise InputError(item, f"step {i} (t = {motion.time[i]:g} s): active member '{name}' "
-                         f"is {motion.length[i, j]:.6g} m long, {side} its stroke {lo:g}-{hi:g}"
+        length = motion.length[i, j]
+        where = (f"step {i} (t = {motion.time[i]:g} s): active member '{name}' is "
+                 f"{length:.6g} m long")
+        if np.isfinite(tube) and length < tube * (1.0 - STROKE_TOLERANCE) \
+                and not (np.isfinite(lo) and length < lo * (1.0 - STROKE_TOLERANCE)):
+            raise InputError(item, f"{where}, shorter than its leadscrew tube ({tube:g} m, "
+                             f"[active_members.{name}] tube_length)")
+        side = "short of" if length < lo * (1.0 - STROKE_TOLERANCE) else "beyond"
+        raise InputError(item, f"{where}, {side} its stroke {lo:g}-{hi:g}"
                          f" m ([active_members.{name}] min_length, max_length)")
 
 
