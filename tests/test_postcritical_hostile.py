@@ -136,3 +136,15 @@ def test_subdivisions_from_the_model_file_name_the_file(tmp_path, monkeypatch, c
     line = _one_error_line(capsys.readouterr().err)
     assert rc == 2
     assert line.startswith(f"trussfe: error: {model}: postcritical.subdivisions: ")
+
+
+def test_a_model_with_load_cases_is_told_what_the_path_follows(capsys):
+    """A model with ``[load_cases]`` has no ``[loads]`` (the reader refuses both), and the
+    post-critical path follows ``[loads]``: the one line says so and what to do, instead of
+    only "no load pattern"."""
+    model = mesh_path("loads_closed_forms.toml")
+    rc = main(["postcritical", str(model)])
+    line = _one_error_line(capsys.readouterr().err)
+    assert rc == 2
+    assert line.startswith(f"trussfe: error: {model}: [loads]: no load pattern")
+    assert "[load_cases]" in line and "give the case to follow as [loads]" in line

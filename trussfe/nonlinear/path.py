@@ -486,9 +486,12 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
     free = np.flatnonzero(m.free)
     f = m.load[free]
     if np.linalg.norm(f) == 0.0:
+        cases = ("; the post-critical analysis follows [loads], which a model with "
+                 "[load_cases] has none of: give the case to follow as [loads] of a model "
+                 "without [load_cases]" if "load_cases" in s.extensions else "")
         raise InputError(f"{s.source or s.name}: [loads]",
                          "no load pattern on a free degree of freedom: give the reference "
-                         "loads that the load factor λ scales")
+                         f"loads that the load factor λ scales{cases}")
     if monitor is None:
         fl = np.abs(m.load[: s.n_nodes * s.dim])
         # the most loaded translation; with moments only, the most loaded rotation
