@@ -193,3 +193,35 @@ def test_show_signature_in_python_md_lists_case():
     documented = text[start:text.index(")`", start)]
     for name in inspect.signature(trussfe.show).parameters:
         assert re.search(rf"\b{name}\b", documented), name
+
+
+@pytest.mark.parametrize("call, option", [
+    (lambda: trussfe.static(STATIC, all_cases="yes"), "--all"),
+    (lambda: trussfe.static(STATIC, all_cases=1), "--all"),
+    (lambda: trussfe.trace(FOURBAR, drive="2:y", step=0.01, steps=2, frozen="no"), "--frozen"),
+    (lambda: trussfe.postcritical(VON_MISES, branch=3), "--branch"),
+], ids=["all=yes", "all=1", "frozen=no", "branch=3"])
+def test_yes_no_options_take_true_or_false_only(call, option):
+    """docs/python.md: a bad value raises InputError naming the option.  A yes/no option
+    given a string or a number is refused — ``frozen="no"`` would otherwise run frozen."""
+    with pytest.raises(trussfe.InputError, match=rf"^{option}: expected True or False"):
+        call()
+
+
+def test_numpy_bools_are_yes_no_values():
+    """A numpy bool is a yes/no value: ``all_cases=np.False_`` is a plain static run, the
+    same forces as without the option."""
+    assert np.array_equal(trussfe.static(STATIC, all_cases=np.False_).axial_force,
+                          trussfe.static(STATIC).axial_force)
+
+
+@pytest.mark.parametrize("call", [
+    lambda: trussfe.modes(STATIC, progress=3),
+    lambda: trussfe.trace(FOURBAR, drive="2:y", step=0.01, steps=2, progress="bar"),
+    lambda: trussfe.postcritical(VON_MISES, progress=True),
+], ids=["modes", "trace", "postcritical"])
+def test_progress_that_cannot_be_called_is_refused_before_the_run(call):
+    """docs/python.md: ``progress`` is a callable ``progress(done, total)``; anything else is
+    refused up front (it failed with a TypeError at its first call, mid-run)."""
+    with pytest.raises(trussfe.InputError, match=r"^progress: expected a callable"):
+        call()

@@ -11,7 +11,7 @@ import numpy as np
 from ..io.json_document import result_json
 from ..model.bar_models import BAR_MODELS
 from .model import ModelLike, as_structure, refuse_member_loads
-from .options import choice, positive_int, real
+from .options import choice, positive_int, progress_callback, real
 from .numerics import numerics_checked
 from .results import Result
 from .rigid_body import SCHEMES, load_motion_for
@@ -59,6 +59,7 @@ def elastic(model: ModelLike, *, motion=None, steps: int | None = None,
     choice("--scheme", scheme, SCHEMES)
     sections = positive_int("--sections", sections, optional=False)
     subdivisions = positive_int("--subdivisions", subdivisions)
+    progress = progress_callback(progress)
     structure = refuse_member_loads(as_structure(model), "elastic")
     mot = load_motion_for(structure, motion, steps)
     sim, resp, cmp = simulate_elastic(structure, mot, n_sections=sections,
@@ -114,6 +115,7 @@ def transient(model: ModelLike, *, motion, steps: int | None = None, dt: float |
     subdivisions = positive_int("--subdivisions", subdivisions)
     dt = real("--dt", dt, positive=True)
     t_end = real("--t-end", t_end, positive=True)
+    progress = progress_callback(progress)
     structure = refuse_member_loads(as_structure(model), "transient")
     mot = load_motion_for(structure, motion, steps, required=True)
     return TransientResult(structure, transient_response(

@@ -13,7 +13,8 @@ import numpy as np
 from ..errors import InputError
 from ..io.json_document import result_json
 from .model import ModelLike, as_structure
-from .options import nonneg_int, positive_int, real, relative_tolerance
+from .options import (flag, nonneg_int, positive_int, progress_callback, real,
+                      relative_tolerance)
 from .numerics import numerics_checked
 from .results import Result
 
@@ -111,6 +112,8 @@ def trace(model: ModelLike, *, drive: str | Sequence[str], step: float | Sequenc
     steps = positive_int("--steps", steps, optional=False)
     branch = nonneg_int("--branch", branch)
     tolerance = relative_tolerance("--tolerance", tolerance, optional=False)
+    frozen = flag("--frozen", frozen)
+    progress = progress_callback(progress)
     structure = as_structure(model)
     r = trace_structure(structure, drives, steps_ if len(steps_) > 1 else steps_[0], steps,
                         branch=branch, tolerance=tolerance, newton=not frozen,

@@ -11,7 +11,7 @@ from ..linalg.pardiso import available as pardiso_available
 from ..fem.load_cases import load_cases_json, solve_load_cases
 from ..fem.static import solve_static
 from .model import ModelLike, as_structure
-from .options import choice, positive_int
+from .options import choice, flag, positive_int, progress_callback
 from .numerics import numerics_checked
 from .results import Result
 
@@ -60,6 +60,7 @@ def static(model: ModelLike, *, bar_model: str = "truss", subdivisions: int | No
         The structure is a mechanism.
     """
     subdivisions = positive_int("--subdivisions", subdivisions)
+    all_cases = flag("--all", all_cases)
     choice("--solver", solver, SOLVERS)
     chosen = [o for o, v in (("--case", case), ("--combination", combination),
                              ("--all", all_cases)) if v not in (None, False)]
@@ -129,6 +130,7 @@ def modes(model: ModelLike, *, count: int | None = None, mass: str = "consistent
     """
     count = positive_int("--count", count)
     subdivisions = positive_int("--subdivisions", subdivisions)
+    progress = progress_callback(progress)
     structure = as_structure(model)
     if mass_from is not None:
         structure = _with_case_masses(structure, mass_from)

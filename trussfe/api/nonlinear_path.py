@@ -9,7 +9,7 @@ import numpy as np
 
 from ..errors import InputError
 from .model import ModelLike, as_structure
-from .options import choice, positive_int, real
+from .options import choice, flag, positive_int, progress_callback, real
 from .numerics import numerics_checked
 from .results import Result
 
@@ -79,6 +79,8 @@ def postcritical(model: ModelLike, *, control: str | None = None, steps: int | N
         for name, v in (("step", step), ("max_load_factor", max_load_factor),
                         ("max_displacement", max_displacement), ("max_step", max_step)))
     imperfection = real("--imperfection", imperfection, nonneg=True)
+    branch = flag("--branch", branch, optional=True)
+    progress = progress_callback(progress)
     if monitor is not None and not isinstance(monitor, str):
         raise InputError("--monitor", f"expected NODE:AXIS (e.g. 3:y), got {monitor!r}")
     structure = as_structure(model)

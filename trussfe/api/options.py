@@ -87,3 +87,23 @@ def number_problem(x: float, *, positive: bool = False, nonneg: bool = False,
 def relative_tolerance(option: str, value: Any, *, optional: bool = True) -> float | None:
     """A relative tolerance, 0 < tol < 1 (docs/bad-input.md, *Options*)."""
     return real(option, value, positive=True, below=1.0, optional=optional)
+
+
+def flag(option: str, value: Any, *, optional: bool = False) -> bool | None:
+    """A yes/no option: ``True`` or ``False`` (numpy's bool too; ``None`` passes when
+    ``optional``) — a string such as ``"no"`` is refused, not taken as true."""
+    if value is None and optional:
+        return None
+    import numpy as np
+
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    raise InputError(option, f"expected True or False, got {value!r}")
+
+
+def progress_callback(value: Any):
+    """``None`` or a callable ``progress(done, total)``, checked before the run starts."""
+    if value is None or callable(value):
+        return value
+    raise InputError("progress", f"expected a callable progress(done, total) or None, got "
+                                 f"{value!r}")

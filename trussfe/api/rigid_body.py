@@ -12,7 +12,7 @@ from ..errors import InputError
 from ..io.json_document import result_json
 from ..model.structure import Structure
 from .model import ModelLike, as_structure, refuse_member_loads, resolve_beside
-from .options import choice, positive_int
+from .options import choice, positive_int, progress_callback
 from .numerics import numerics_checked
 from .results import Result
 
@@ -58,6 +58,7 @@ def _simulate(model: ModelLike, motion, steps, scheme: str, sections: int,
     choice("--scheme", scheme, SCHEMES)
     choice("--method", method, METHODS)
     sections = positive_int("--sections", sections, optional=False)
+    progress = progress_callback(progress)
     structure = refuse_member_loads(as_structure(model), "simulate")
     mot = load_motion_for(structure, motion, steps)
     return structure, run(structure, mot, conventions=Conventions.from_scheme(scheme),
