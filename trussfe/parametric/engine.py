@@ -232,8 +232,11 @@ class StudyRun:
                                      "reduce": o.reduce, "count": int(x.size)}
             if x.size:
                 q = np.percentile(x, [5, 50, 95])
+                # the sample standard deviation (ddof = 1) of a single value has no value
+                # (numpy gives nan, pandas NaN): null, as JSON writes "no value", never 0,
+                # which would claim the output does not vary
                 stats.update(mean=float(x.mean()), std=float(x.std(ddof=1)) if x.size > 1
-                             else 0.0, min=float(x.min()), max=float(x.max()),
+                             else None, min=float(x.min()), max=float(x.max()),
                              p05=float(q[0]), median=float(q[1]), p95=float(q[2]))
             outputs[o.name] = stats
         params = {}

@@ -22,7 +22,8 @@ import numpy as np
 
 from ..errors import InputError, TrussfeError, one_line
 from ..api.numerics import failure_message
-from ..api.result_paths import PathError, get_values, numbers, reduce, set_value
+from ..api.result_paths import (PathError, get_value, get_values, numbers, reduce,
+                                set_value)
 from .spec import TEMPLATE, Study, _catalogue_function, parse_study, with_study_file
 
 
@@ -45,11 +46,32 @@ def _apply(data: dict, study: Study, values: dict, target: str, file_item: str) 
             if t != target:
                 continue
             try:
-                set_value(out, path, p.written(values[p.name], k), new_tables=new)
+                base = None
+                if p.relative and p.bases[k] is None:
+                    base = _run_base(data, path, p.name)
+                set_value(out, path, p.written(values[p.name], k, base), new_tables=new)
             except PathError as err:
                 raise InputError(f"parameters.{p.name}", f"path '{path}' is not in the "
                                  f"{file_item}: {err}") from None
     return out
+
+
+def _run_base(data: dict, path: str, name: str) -> float:
+    """The number at ``path`` in this run's model tables: the base of a ``relative``
+    parameter whose model is a catalogue structure (no file to read it from beforehand).
+
+    Raises
+    ------
+    PathError
+        The model has no such path.
+    InputError
+        The path holds no number.
+    """
+    v = get_value(data, path)
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+        raise InputError(f"parameters.{name}", f"relative: path '{path}' holds {v!r}, "
+                                               "not a number")
+    return v
 
 
 def build_inputs(study: Study, values: dict) -> tuple[Any, dict]:

@@ -46,7 +46,9 @@ class Parameter:
 
     ``paths`` are ``(target, path)`` pairs, ``target`` one of ``"model"``, ``"motion"``,
     ``"catalogue"``; the value written at each is ``factor × value`` (``base × factor ×
-    value`` when ``relative``, ``base`` the value the path holds in the file).
+    value`` when ``relative``, ``base`` the value the path holds in the file).  A model path
+    of a catalogue structure has no file: its base is ``None`` here and is read, run by run,
+    from the model the structure's arguments build (``written``'s ``base``).
     """
 
     name: str
@@ -83,10 +85,22 @@ class Parameter:
         values = a["values"]
         return values[int(rng.integers(len(values)))]
 
-    def written(self, value: Any, k: int) -> Any:
-        """What is written at ``paths[k]`` for the column value ``value``."""
+    def written(self, value: Any, k: int, base: Any = None) -> Any:
+        """What is written at ``paths[k]`` for the column value ``value``.
+
+        Parameters
+        ----------
+        value : Any
+            The run's value of the parameter (its column).
+        k : int
+            Which of ``paths``.
+        base : float, optional
+            With ``relative``: the value the path holds in this run's model, used where the
+            study file gives no file to read it from (``bases[k]`` is ``None``).
+        """
         if self.relative:
-            return self.bases[k] * self.factor * value
+            b = self.bases[k] if self.bases[k] is not None else base
+            return b * self.factor * value
         if self.factor != 1.0:
             return self.factor * value
         return value
@@ -410,7 +424,10 @@ def _parameters(raw, model_data, motion_data, catalogue, catalogue_args, motion_
             raise _err(item, "factor and relative need numeric values")
         bases = ()
         if relative:
-            bases = tuple(_base_value(t, p, model_data, motion_data, catalogue,
+            # a catalogue structure's model exists only once its arguments are known (they
+            # may be parameters too): its values are read run by run (runner._apply)
+            bases = tuple(None if t == "model" and model_data is None else
+                          _base_value(t, p, model_data, motion_data, catalogue,
                                       catalogue_args, item) for t, p in targets)
         out.append(Parameter(name=name, paths=tuple(targets), values=values, distribution=dist,
                              args=args, factor=float(factor), relative=relative, bases=bases))
@@ -547,16 +564,30 @@ def _range_count(spec: dict, item: str) -> int:
 
 
 def _range(spec: dict, item: str) -> tuple:
+    """The grid values of a ``from``/``to`` range (docs/studies.md).
+
+    ``count = n`` gives n values evenly spaced from ``from`` to ``to``, both ends exact;
+    ``step = s`` gives ``from``, ``from + s``, ... up to ``to`` and never past it.
+
+    Notes
+    -----
+    ``from + (to - from)`` is not always ``to`` in floating point (0.3 + 0.6 is
+    0.9000000000000001), and ``from + k × step`` can land just past ``to`` (0.1 + 2 × 0.1 is
+    0.30000000000000004): a value past ``to`` by rounding can be outside what the model
+    accepts, so such a last value is ``to`` itself, as ``numpy.linspace`` gives its end point.
+    """
     n = _range_count(spec, item)
     lo, hi = spec["from"], spec["to"]
     if "count" in spec:
         if n == 1:
             return (lo,)
-        return tuple(lo + (hi - lo) * k / (n - 1) for k in range(n))
+        return tuple(lo + (hi - lo) * k / (n - 1) for k in range(n - 1)) + (float(hi),)
     step = spec["step"]
     vals = [lo + k * step for k in range(n)]
     if all(isinstance(x, int) for x in (lo, hi, step)):
         vals = [int(v) for v in vals]
+    elif (vals[-1] - hi) * step > 0:        # past ``to`` by rounding only (_range_count)
+        vals[-1] = hi
     return tuple(vals)
 
 
