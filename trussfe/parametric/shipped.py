@@ -10,6 +10,7 @@ by hand with the run's values, or against the physics the study is about.
 """
 from __future__ import annotations
 
+import math
 import tempfile
 import tomllib
 from pathlib import Path
@@ -48,7 +49,19 @@ def _rows(study: Study) -> list[dict]:
 
 
 def _relative(a: float, b: float) -> float:
+    """|a − b| / |b|; NaN when either is not a finite number, so that a missing or NaN
+    value reaches the validation check as NaN (which fails) instead of vanishing in a
+    comparison."""
+    if not (math.isfinite(a) and math.isfinite(b)):
+        return math.nan
     return abs(a - b) / max(abs(b), 1e-300)
+
+
+def _largest(values) -> float:
+    """The largest of ``values``, NaN if any is NaN (the builtin ``max`` drops a NaN that is
+    not first)."""
+    values = list(values)
+    return math.nan if any(math.isnan(v) for v in values) else max(values, default=0.0)
 
 
 def chain_length(folder: Path) -> dict:
@@ -58,20 +71,21 @@ def chain_length(folder: Path) -> dict:
     from ..models import TABLE_LOAD, double_octahedral_chain
 
     rows = _rows(small_study("chain_length.toml", folder))
-    f_err = u_err = 0.0
+    f_errs, u_errs = [], []
     for row in rows:
         n = row["n_bays"]
         s = double_octahedral_chain(n, tip_load=TABLE_LOAD)
         f = float(api.modes(s, count=1).frequencies_hz[0])
         uz = api.static(s).to_dict()["nodes"][f"b{n}.N7"]["displacement"][2]
-        f_err = max(f_err, _relative(row["first_frequency"], f))
-        u_err = max(u_err, _relative(row["tip_deflection"], uz))
+        f_errs.append(_relative(row["first_frequency"], f))
+        u_errs.append(_relative(row["tip_deflection"], uz))
+    f_err, u_err = _largest(f_errs), _largest(u_errs)
     freq = [r["first_frequency"] for r in rows]
     tip = [r["tip_deflection"] for r in rows]
     return {"runs_ok": sum(r["status"] == "ok" for r in rows), "frequency_vs_api": f_err,
             "deflection_vs_api": u_err,
-            "frequency_not_falling": sum(b >= a for a, b in zip(freq, freq[1:])),
-            "deflection_not_rising": sum(b <= a for a, b in zip(tip, tip[1:]))}
+            "frequency_not_falling": sum(not b < a for a, b in zip(freq, freq[1:])),
+            "deflection_not_rising": sum(not b > a for a, b in zip(tip, tip[1:]))}
 
 
 def slew_duration_payload(folder: Path) -> dict:
@@ -97,8 +111,10 @@ def slew_duration_payload(folder: Path) -> dict:
     return {"runs_ok": sum(r["status"] == "ok" for r in rows),
             "voltage_vs_api": _relative(volts[6.0, 20.0], direct),
             "supply": supply,
-            "over_supply_in_6s": sum(v > supply for (t, _), v in volts.items() if t == 6.0),
-            "within_supply_in_2s": sum(v <= supply for (t, _), v in volts.items() if t == 2.0),
+            "over_supply_in_6s": sum(not v <= supply for (t, _), v in volts.items()
+                                     if t == 6.0),
+            "within_supply_in_2s": sum(not v > supply for (t, _), v in volts.items()
+                                       if t == 2.0),
             "payload_raises_force": int(force[2.0, 20.0] > force[2.0, 0.0]
                                         and force[6.0, 20.0] > force[6.0, 0.0])}
 
@@ -119,7 +135,7 @@ def dome_imperfection(folder: Path) -> dict:
     mech = [e["load_factor"] for e in doc["events"] if e["kind"] == "mechanism"]
     return {"runs_ok": sum(x["status"] == "ok" for x in rows),
             "mechanism_load_vs_api": _relative(r["mechanism_load"], mech[0]),
-            "mechanism_below_first_limit": sum(x["mechanism_load"] < x["first_limit_load"]
+            "mechanism_below_first_limit": sum(not x["mechanism_load"] >= x["first_limit_load"]
                                                for x in rows),
             "draws_outside_ranges": sum(not (0.0 <= x["imperfection"] <= 0.015)
                                         or not all(0.9 <= x[m] <= 1.1
