@@ -38,9 +38,11 @@ def _two_bar(mass=5.0):
         "supports": {"O": ["x", "y"], "C": ["x", "y"]},
         "masses": {"B": mass}})
     L = float(s.lengths()[0])
+    # the tube is massless: its length (half the member's, so that the motion never draws
+    # the member shorter than it) changes no force
     return s.with_extensions(active_members=[ActiveMember(
         member=0, base_mass=0.0, base_length=0.1, base_cg=0.0, base_inertia=0.0,
-        tube_length=L)])
+        tube_length=0.5 * L)])
 
 
 def _sine(s, amp, freq, duration, dt):

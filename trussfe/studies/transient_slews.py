@@ -54,9 +54,11 @@ def sdof_bar(length: float = 1.0, mass: float = 10.0, EA: float = 1.0e5) -> Stru
     s = build_structure([[0.0, 0.0], [length, 0.0]], [(0, 1)], section=sec, material=mat,
                         supports={0: "xy", 1: "y"}, masses={1: mass},
                         node_ids=["O", "P"], member_ids=["bar"], name="single-DOF active bar")
+    # base and tube carry no mass, so their lengths change no force; the tube is half the bar,
+    # so that a motion may shorten the bar (never below its tube) as well as lengthen it
     return s.with_extensions(active_members=[ActiveMember(
         member=0, base_mass=0.0, base_length=length, base_cg=0.0, base_inertia=0.0,
-        tube_length=length)])
+        tube_length=0.5 * length)])
 
 
 def cycloidal_motion(structure: Structure, stroke: float, duration: float, dt: float,
