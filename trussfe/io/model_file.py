@@ -168,6 +168,12 @@ def _section_properties(item: str, raw: dict, tube_keys, expl_keys) -> Section:
         if d >= D:
             raise InputError(f"{item}.inner_diameter",
                              f"inner diameter {d} must be smaller than outer diameter {D}")
+        if "c" in raw:
+            c = _number(raw["c"], f"{item}.c", positive=True)
+            if abs(c - D / 2.0) > 1e-12 * D:
+                raise InputError(f"{item}.c", f"a tube's outer-fibre distance is "
+                                 f"outer_diameter / 2 = {D / 2.0!r} m, computed; got {c!r}: "
+                                 "remove c, or give explicit properties (area, Iy, ...)")
         return Section.tube(name, D, d)
     if "inner_diameter" in raw:
         raise InputError(f"{item}.inner_diameter", "inner_diameter needs outer_diameter")
@@ -287,11 +293,38 @@ def parse_model(data: dict, base_dir: Path | str = ".", source: str = "") -> Str
         _source.reset(token)
 
 
+#: Core tables keyed by ids or names.
+_KEYED_TABLES = ("materials", "sections", "nodes", "members", "supports", "loads", "masses",
+                 "groups", "springs")
+
+
+def _string_keys(data: dict) -> dict:
+    """``data`` with the keys of its id tables as strings, each id once.
+
+    A file's keys are strings already; a dict built in Python may hold ``1`` and ``"1"``,
+    which would be two nodes (or members, or loads on one node) of the same id.
+    """
+    out = data
+    for name in _KEYED_TABLES:
+        t = data.get(name)
+        if not isinstance(t, dict) or set(map(type, t)) <= {str}:
+            continue
+        keyed: dict = {}
+        for k, v in t.items():
+            if str(k) in keyed:
+                raise InputError(f"{name}.{k}", f"'{k}' is given twice in [{name}] (an id is "
+                                                "a string: 1 and \"1\" are the same id)")
+            keyed[str(k)] = v
+        out = {**out, name: keyed}
+    return out
+
+
 def _parse_model(data: dict, base_dir: Path, source: str) -> Structure:
     allowed = CORE_TABLES + tuple(EXTENSION_TABLES)
     for key in data:
         if key not in allowed:
             raise InputError(f"[{key}]", f"unknown table '{key}'{_suggest(key, allowed)}")
+    data = _string_keys(data)
 
     model = _table(data, "model", required=True)
     _check_keys(model, ("name", "dimension", "gravity", "mesh"), "model")
@@ -310,10 +343,18 @@ def _parse_model(data: dict, base_dir: Path, source: str) -> Structure:
     sections = {k: parse_section(k, v) for k, v in _table(data, "sections").items()}
 
     if "mesh" in model:
+        for key in ("nodes", "members"):
+            if key in data:
+                raise InputError(f"[{key}]", f"the geometry comes from [model] mesh = "
+                                 f"'{model['mesh']}': remove [{key}] (or the mesh)")
         (node_ids, coords, member_ids, conn, secs, mats, beam, rel, orient,
          group_code, axis_rel) = _mesh_geometry(str(model["mesh"]), base_dir, dim, data, sections,
                                       materials)
     else:
+        if _table(data, "groups"):
+            raise InputError("[groups]", "groups give the properties of a mesh's cell sets, "
+                             "and this model has no [model] mesh: name the section and "
+                             "material in each member of [members]")
         nodes = _table(data, "nodes", required=True)
         if not nodes:
             raise InputError("[nodes]", "no nodes defined")
@@ -371,6 +412,9 @@ def _parse_model(data: dict, base_dir: Path, source: str) -> Structure:
                   bending_axis_releases=axis_rel,
                   supports=supports, loads=loads, masses=masses, gravity=gravity,
                   orientation=orient, source=source, member_groups=group_code)
+    if dim == 3 and np.isfinite(orient).any():
+        from ..mechanics.geometry import local_axes
+        local_axes(s)                       # an orientation along its member: InputError
     # the node tables that refer to the supports, and the load cases (read against the model
     # of the core tables: a settlement must sit on a support, a heated member needs α)
     nodal = {}
@@ -573,6 +617,10 @@ def _mesh_geometry(mesh_name, base_dir, dim, data, sections, materials):
         else:
             raise InputError("[groups]", "a mesh model needs [groups.NAME] = { section, "
                                          "material } for its cell sets (or 'default')")
+    for gname in groups:                    # names[0] is "default"
+        if gname not in names:
+            raise InputError(f"groups.{gname}", f"the mesh has no cell set (or Gmsh physical "
+                             f"tag) '{gname}'{_suggest(str(gname), names)}")
     used = np.unique(code)
     sec_of, mat_of = {}, {}
     beam_of = np.zeros(len(names), dtype=bool)

@@ -135,6 +135,15 @@ def model_toml(structure: Structure, *, mesh: str | None = None, header: str = "
     lines = [f"# {ln}" if ln else "#" for ln in header.splitlines()]
     if lines:
         lines.append("")
+    node_ids = s.node_ids if mesh is None else [str(i) for i in range(s.n_nodes)]
+    member_ids = s.member_ids if mesh is None else [str(i) for i in range(s.n_members)]
+    # a top-level array: before the first table, as TOML requires
+    member_loads = s.extensions.get("member_loads")
+    if member_loads:
+        lines.append("member_loads = [")
+        lines += [f"  {toml_value(_member_load_entry(ml, member_ids))},"
+                  for ml in member_loads]
+        lines += ["]", ""]
     lines += ["[model]", f"name = {_string(s.name)}", f"dimension = {s.dim}"]
     if np.any(s.gravity != 0):
         lines.append(f"gravity = {toml_value(list(s.gravity))}")
@@ -157,7 +166,6 @@ def model_toml(structure: Structure, *, mesh: str | None = None, header: str = "
             lines += [f"[sections.{toml_key(sec_names[i])}]"]
             lines += [f"{k} = {toml_value(v)}" for k, v in _section_table(sec).items()]
             lines.append("")
-    node_ids = s.node_ids if mesh is None else [str(i) for i in range(s.n_nodes)]
 
     def member_props(i: int) -> dict:
         d = {"section": sec_names[i], "material": mat_names[i]}
@@ -216,8 +224,9 @@ def model_toml(structure: Structure, *, mesh: str | None = None, header: str = "
                      {"mass": s.masses[i], "inertia": list(inertia[i])})
             lines.append(f"{toml_key(node_ids[i])} = {toml_value(value)}")
         lines.append("")
-    lines += _load_case_lines(s, node_ids)
-    written = {"load_cases", "springs", "rotary_inertia"}
+    lines += _load_case_lines(s, node_ids, member_ids)
+    lines += _extension_lines(s, node_ids, member_ids)
+    written = {"load_cases", "springs", "rotary_inertia", "member_loads", *_EXTENSION_WRITERS}
     others = [k for k in s.extensions if k not in written]
     if others:
         log.warning("extension tables %s are not written", ", ".join(others))
@@ -253,7 +262,7 @@ def _member_load_entry(ml, member_ids) -> dict:
     return d
 
 
-def _load_case_lines(s: Structure, node_ids) -> list[str]:
+def _load_case_lines(s: Structure, node_ids, member_ids) -> list[str]:
     """``[springs]``, ``[load_cases.NAME]`` and ``[combinations]`` of a model."""
     lines: list[str] = []
     springs = s.extensions.get("springs")
@@ -282,12 +291,12 @@ def _load_case_lines(s: Structure, node_ids) -> list[str]:
         for key, values, value_key in (("temperature", case.delta_T, "delta_T"),
                                        ("initial_strain", case.initial_strain, "strain"),
                                        ("length_error", case.length_error, "delta")):
-            entries = _member_entries(values, s.member_ids, value_key)
+            entries = _member_entries(values, member_ids, value_key)
             if entries:
                 lines.append(f"{key} = {toml_value(entries)}")
         if case.member_loads:
             lines.append("member_loads = "
-                         + toml_value([_member_load_entry(ml, s.member_ids)
+                         + toml_value([_member_load_entry(ml, member_ids)
                                        for ml in case.member_loads]))
         lines.append("")
     if table.combinations:
@@ -295,6 +304,111 @@ def _load_case_lines(s: Structure, node_ids) -> list[str]:
         for combo in table.combinations:
             lines.append(f"{toml_key(combo.name)} = {toml_value(dict(combo.factors))}")
         lines.append("")
+    return lines
+
+
+def _table_lines(header: str, values: dict) -> list[str]:
+    return [header, *(f"{toml_key(k)} = {toml_value(v)}" for k, v in values.items()), ""]
+
+
+def _finite(d: dict) -> dict:
+    """``d`` without its ``nan`` values (the keys a table leaves to their default)."""
+    return {k: v for k, v in d.items() if not (isinstance(v, float) and math.isnan(v))}
+
+
+def _active_member_lines(s: Structure, node_ids, member_ids) -> list[str]:
+    lines: list[str] = []
+    for a in s.extensions["active_members"]:
+        lines += _table_lines(f"[active_members.{toml_key(member_ids[a.member])}]", _finite({
+            "base_mass": a.base_mass, "base_length": a.base_length, "base_cg": a.base_cg,
+            "base_inertia": a.base_inertia, "tube_length": a.tube_length,
+            "min_length": a.min_length, "max_length": a.max_length}))
+    return lines
+
+
+def _degrees(angle: float) -> float:
+    """The angle in degrees that the reader's ``math.radians`` turns back into ``angle``."""
+    d = math.degrees(angle)
+    for candidate in (d, math.nextafter(d, math.inf), math.nextafter(d, -math.inf)):
+        if math.radians(candidate) == angle:
+            return candidate
+    return d
+
+
+def _actuator_lines(s: Structure, node_ids, member_ids) -> list[str]:
+    lines: list[str] = []
+    for a in s.extensions["actuators"]:
+        d = {"leadscrew_gain": a.leadscrew_gain, "mean_diameter": a.mean_diameter,
+             "thread": a.thread}
+        if a.thread != "square":
+            d["thread_angle"] = _degrees(a.thread_angle)
+        d.update({"friction": a.friction, "gearhead_gain": a.gearhead_gain,
+                  "armature_inertia": a.armature_inertia, "resistance": a.resistance,
+                  "torque_constant": a.torque_constant,
+                  "back_emf_constant": a.back_emf_constant, "max_speed": a.max_speed,
+                  "max_voltage": a.max_voltage,
+                  "require_self_locking": bool(a.require_self_locking),
+                  "convention": a.convention})
+        lines += _table_lines(f"[actuators.{toml_key(member_ids[a.member])}]", _finite(d))
+    return lines
+
+
+def _strength(force: float, area: float, material_strength: float) -> float | None:
+    """The yield strength that gives the yield force ``force`` on ``area`` as the reader
+    computes it (``None``: the material's own)."""
+    if area * material_strength == force:
+        return None
+    f = force / area
+    for candidate in (f, math.nextafter(f, math.inf), math.nextafter(f, -math.inf)):
+        if area * candidate == force:
+            return candidate
+    return f
+
+
+def _failure_lines(s: Structure, node_ids, member_ids) -> list[str]:
+    from ..model.failure import BUCKLING, YIELD
+
+    laws = s.extensions["failure"]
+    lines = ["[failure]", ""]
+    for i in np.flatnonzero(laws.any):
+        d: dict = {}
+        if laws.buckling[i]:
+            d["buckling"] = BUCKLING[int(laws.buckling[i])]
+            d["critical_load"] = float(laws.critical_load[i])
+            if d["buckling"] == "softening":
+                d["residual"] = float(laws.residual[i])
+                d["softening_strain"] = float(laws.softening_strain[i])
+        if laws.yield_mode[i]:
+            d["yield"] = YIELD[int(laws.yield_mode[i])]
+            f = _strength(float(laws.yield_force[i]), float(s.area[i]),
+                          float(s.yield_strength[i]))
+            if f is not None:
+                d["yield_strength"] = f
+        if np.isfinite(laws.fracture_strain[i]):
+            d["fracture_strain"] = float(laws.fracture_strain[i])
+        lines += _table_lines(f"[failure.members.{toml_key(member_ids[i])}]", d)
+    return lines
+
+
+def _postcritical_lines(s: Structure, node_ids, member_ids) -> list[str]:
+    options = s.extensions["postcritical"].options()
+    if "monitor" in options:                    # NODE:AXIS, by the ids written
+        node, _, axis = options["monitor"].rpartition(":")
+        options["monitor"] = f"{node_ids[s.node_index(node)]}:{axis}"
+    return _table_lines("[postcritical]", options)
+
+
+#: Writers of the extension tables (besides load cases, springs, rotary inertia and member
+#: loads), in the reader's order.
+_EXTENSION_WRITERS = {"active_members": _active_member_lines, "actuators": _actuator_lines,
+                      "failure": _failure_lines, "postcritical": _postcritical_lines}
+
+
+def _extension_lines(s: Structure, node_ids, member_ids) -> list[str]:
+    lines: list[str] = []
+    for key, writer in _EXTENSION_WRITERS.items():
+        if s.extensions.get(key) is not None:
+            lines += writer(s, node_ids, member_ids)
     return lines
 
 
@@ -317,6 +431,10 @@ def _mesh_groups(s: Structure) -> dict[str, np.ndarray]:
         + s.releases[:, 0] * 2 + s.releases[:, 1]
     key = key * 4 + s.torsion_releases[:, 0] * 2 + s.torsion_releases[:, 1]
     key = key * 16 + s.bending_axis_releases.reshape(-1, 4) @ np.array([8, 4, 2, 1])
+    # a group carries one orientation vector: members with other vectors form other groups
+    orient = np.where(np.isfinite(s.orientation), s.orientation, np.inf)
+    _, orient_code = np.unique(orient.reshape(s.n_members, -1), axis=0, return_inverse=True)
+    key = key * (int(orient_code.max(initial=0)) + 1) + orient_code.reshape(-1)
     uniq, first, inverse = np.unique(key, return_index=True, return_inverse=True)
     if len(uniq) == 1:
         return {"default": np.arange(s.n_members)}
