@@ -404,6 +404,40 @@ def test_rotary_inertia_at_a_pin_joint_is_refused_by_modes():
         trussfe.modes(s, count=1)
 
 
+
+def test_a_spring_on_a_pin_joints_rotation_names_the_model_file(tmp_path, capsys):
+    """docs/bad-input.md: one line naming the file and the item.  A spring on the rotation
+    of a pin joint is refused by the analysis (the reader cannot know which joints are
+    pinned before the members are discretised), with the model file before the item."""
+    from trussfe.cli import main
+    f = tmp_path / "pinned.toml"
+    f.write_text("""[model]
+dimension = 2
+[materials.st]
+E = 2.0e11
+[sections.t]
+area = 1e-4
+[nodes]
+A = [0.0, 0.0]
+B = [1.0, 0.0]
+C = [0.5, 0.5]
+[members]
+AB = { nodes = ["A", "B"], section = "t", material = "st" }
+AC = { nodes = ["A", "C"], section = "t", material = "st" }
+BC = { nodes = ["B", "C"], section = "t", material = "st" }
+[supports]
+A = ["x", "y"]
+B = ["y"]
+[springs]
+B = { rz = 1000.0 }
+[loads]
+C = [0.0, -100.0]
+""")
+    assert main(["static", str(f)]) == 2
+    err = capsys.readouterr().err
+    assert err == (f"trussfe: error: {f}: springs.B: acts on rotation rz, which this node does "
+                   "not have (a pin joint: no beam is rigidly attached); remove it\n")
+
 def test_written_model_keeps_its_cases(tmp_path):
     """write_model writes [springs], rotary inertia, [load_cases] and [combinations]: the
     model read back gives the same results case by case."""

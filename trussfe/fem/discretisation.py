@@ -452,9 +452,11 @@ class FEModel:
             from ..model.structure import DOF_NAMES
             i, c = np.argwhere(lost)[0]
             names = DOF_NAMES[self.ndim][-values.shape[1]:]
-            raise InputError(f"{item}.{self.structure.node_ids[i]}",
+            err = InputError(f"{item}.{self.structure.node_ids[i]}",
                              f"acts on rotation {names[c]}, which this node does not have (a "
                              "pin joint: no beam is rigidly attached); remove it")
+            # the model file where there is one, as the reader's errors name it
+            raise err.with_file(self.structure.source) if self.structure.source else err
         diag = np.zeros(self.n_dof)
         ok = gd >= 0
         np.add.at(diag, gd[ok], values[ok])
