@@ -11,6 +11,12 @@ from __future__ import annotations
 MAX_MESSAGE_CHARS = 2000
 
 
+#: What a number out of range usually means (a modulus or length in another unit), for the
+#: messages of overflows and of stiffnesses singular without a mechanism.
+UNITS_ADVICE = ("check the units (SI: m, N, Pa, kg, s) and the magnitudes of loads, moduli, "
+                "sections and lengths")
+
+
 def one_line(text: str, limit: int = MAX_MESSAGE_CHARS) -> str:
     """``text`` with control characters escaped (``\\n``, ``\\t``, ``\\x1b``) and cut to
     ``limit`` characters, so that a message is always one line of a terminal's log.

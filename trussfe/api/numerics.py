@@ -17,11 +17,10 @@ from typing import Any, Callable, TypeVar
 
 import numpy as np
 
-from ..errors import AnalysisError, one_line
+from ..errors import UNITS_ADVICE, AnalysisError, one_line
 
 #: What a numerical overflow in a run usually means, appended to its message.
-UNITS_HINT = ("a value is out of the range of floating-point numbers; check the units "
-              "(SI: m, N, Pa, kg, s) and the magnitudes of loads, moduli and lengths")
+UNITS_HINT = f"a value is out of the range of floating-point numbers; {UNITS_ADVICE}"
 
 F = TypeVar("F", bound=Callable[..., Any])
 

@@ -9,19 +9,21 @@ are and which nodes move in them.
 """
 from __future__ import annotations
 
+import dataclasses
 import logging
 import time
 
 import numpy as np
 import scipy.sparse as sp
 
-from ..errors import MechanismError
+from ..errors import UNITS_ADVICE, MechanismError
 from ..linalg import SINGULAR_PIVOT, Factor, FreeBlock, factor, free_submatrix
 from ..linalg.factor import PARDISO_MIN_DOF, banded_limit
 from ..linalg.ordering import Points
 from ..linalg.rank import DENSE_LIMIT, stiffness_null_space
 
 log = logging.getLogger(__name__)
+
 
 
 def factorise(K: sp.spmatrix, free: np.ndarray, fe=None, item: str = "structure",
@@ -59,11 +61,80 @@ def factorise(K: sp.spmatrix, free: np.ndarray, fe=None, item: str = "structure"
         # where the DOFs sit: PARDISO's Cholesky orders them by geometric nested dissection
         every = fe.dof_points()
         points = Points(every.of_unknown[free], every.coords)
-    fac = factor(block, "spd", backend, singular="flag", points=points)
+    scale = rotation_scale(fe, free) if fe is not None else None
+    if scale is None:
+        fac = factor(block, "spd", backend, singular="flag", points=points)
+    else:
+        # the pivot test compares translational and rotational pivots: measure rotations in
+        # a length of the model, so that its outcome does not depend on the unit of length
+        fac = _scaled_factor(block.tocsr(), scale, backend, points)
     if fac.is_singular:
         _raise_mechanism(block.tocsr(), free, fe, item)
     log.debug("factorised %d free DOFs (%s)", free.size, fac.backend)
     return fac
+
+
+def rotation_scale(fe, free: np.ndarray) -> np.ndarray | None:
+    """Scale of the free DOFs that turns every rotation into a length: ``1/L`` on the
+    rotations, 1 on the translations, with ``L`` the median member length rounded to a
+    power of two.
+
+    A stiffness holds translational entries (N/m) and rotational ones (N·m/rad), whose ratio
+    changes with the unit of length as ``L²`` — in SI units the rotational pivots of a beam
+    10 µm long are 1e-10 of its axial ones, in µm units 1e2 times them.  The relative pivot
+    test of :mod:`trussfe.linalg.tolerance` therefore refused a sound micro-scale frame in
+    SI units and accepted it in µm.  In ``S K S`` with this scale the ratio of a member's
+    rotational to axial stiffness is its slenderness ``(r/L)²``, the same in every
+    consistent unit system and for every geometrically similar structure (to the factor of
+    at most 2 of the rounding of ``L``).
+
+    Parameters
+    ----------
+    fe : FEModel
+    free : ndarray of int
+        Free DOFs.
+
+    Returns
+    -------
+    ndarray, shape (free.size,), or None
+        None when no free DOF is a rotation (a truss: every entry is N/m already).
+    """
+    rot = np.zeros(fe.n_dof, dtype=bool)
+    dim = fe.structure.dim
+    for dofs in (fe.node_dofs[:, dim:], fe.private_dofs, fe.interior_dofs[:, dim:]):
+        rot[dofs[dofs >= 0]] = True
+    rot = rot[free]
+    if not rot.any():
+        return None
+    lengths = fe.structure.lengths()
+    length = float(np.median(lengths)) if lengths.size else 1.0
+    # a power of two: the scaling is exact in floating point, and a model whose members are
+    # 0.7–1.4 units long (most SI models) is factorised exactly as without it
+    return np.where(rot, 2.0 ** -np.round(np.log2(length)), 1.0)
+
+
+def _scaled_factor(Kff: sp.csr_matrix, scale: np.ndarray, backend: str,
+                   points: Points | None) -> Factor:
+    """Factor of ``K_ff`` from the factorisation of ``S K_ff S`` (``S = diag(scale)``): its
+    singularity test and inertia are those of the scaled matrix (a congruence keeps the
+    inertia), its solves and their refinement those of ``K_ff`` (``x = S (S K S)⁻¹ S b``)."""
+    S = sp.diags(scale)
+    inner = factor((S @ Kff @ S).tocsr(), "spd", backend, singular="flag", points=points)
+    if inner.is_singular:
+        return inner
+    col = scale[:, None]
+
+    def solve(b):
+        s = col if np.ndim(b) == 2 else scale
+        return s * inner._solve(s * b)
+
+    def solve_transposed(b):
+        s = col if np.ndim(b) == 2 else scale
+        return s * inner._solve_transposed(s * b)
+
+    return dataclasses.replace(
+        inner, matrix=Kff, _solve=solve, residuals=[],
+        _solve_transposed=None if inner._solve_transposed is None else solve_transposed)
 
 
 def joint_dofs_only(fe) -> bool:
@@ -129,7 +200,8 @@ def _raise_mechanism(Kff, free, fe, item):
         raise MechanismError(item, "the stiffness matrix is numerically singular (a pivot "
                              f"below {SINGULAR_PIVOT:g} of the largest) although no exact "
                              "mechanism was found: the structure is too flexible for a "
-                             "reliable linear solution; add supports or members",
+                             "reliable linear solution, or its numbers are out of range; "
+                             f"{UNITS_ADVICE}; add supports or members",
                              mechanisms=0, moving_nodes=[])
     moving = _moving_nodes(V, free, fe)
     shown = ", ".join(moving[:20]) + (" ..." if len(moving) > 20 else "")

@@ -390,9 +390,8 @@ def write_json(path: str | Path, data: dict) -> None:
     if tx is not None and tx.finite_only:
         hit = first_non_finite(data)
         if hit:
-            from ..errors import AnalysisError
+            from ..errors import UNITS_ADVICE, AnalysisError
             raise AnalysisError(f"result {hit[0]}", f"is {hit[1]}, not a finite number: a "
-                                "value overflowed; check the units (SI: m, N, Pa, kg, s) and "
-                                "the magnitudes in the model")
+                                f"value overflowed; {UNITS_ADVICE}")
     with atomic_path(path) as tmp:
         tmp.write_text(json.dumps(plain(data), indent=1, allow_nan=False))
