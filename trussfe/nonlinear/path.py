@@ -32,7 +32,7 @@ from typing import Callable
 
 import numpy as np
 
-from ..errors import AnalysisError, InputError, MechanismError
+from ..errors import UNITS_ADVICE, AnalysisError, InputError, MechanismError
 from ..linalg import SingularMatrixError, factor
 from ..linalg.eigen import nearest_zero_mode
 from ..model.postcritical import CONTROLS
@@ -249,7 +249,7 @@ class _Stepper:
                 if not modified or rn > refactor_ratio * rprev:
                     if K is None:
                         K = self.eval(uf)[2]
-                    fac = factor(K, "symmetric")
+                    fac = _tangent_factor(K)
                     fresh = fac
                     dt_fac = fac.solve(f, refine=False)
                 rprev = rn
@@ -307,6 +307,32 @@ def _dead_load_state(st, max_cuts: int) -> np.ndarray:
             continue
         uf, t = new[0], new[1]
     return uf
+
+
+def _tangent_factor(K):
+    """Factor of a tangent for the steps: ``P K Pᵀ = L D Lᵀ`` with diagonal pivots (which
+    gives the inertia), else LU with partial pivoting (inertia unknown).
+
+    Diagonal pivoting can break down — a pivot that vanishes although ``K`` is regular — on
+    an indefinite tangent, and on the unsymmetric tangent of a 3-D beam under a moment of
+    fixed direction (docs/postcritical.md, *Moments*): a cantilever rolled up by an end
+    moment under arc-length control met one such pivot at every state near λ = 0.97 of
+    ``M = 2πEI/L`` and the path stopped there.  Partial pivoting tells such a breakdown from
+    a singular tangent, which it still refuses (:class:`SingularMatrixError`).
+
+    Parameters
+    ----------
+    K : scipy.sparse matrix
+        The tangent on the free DOFs.
+
+    Returns
+    -------
+    trussfe.linalg.Factor
+    """
+    try:
+        return factor(K, "symmetric")
+    except SingularMatrixError:
+        return factor(K, "general")
 
 
 def _inertia(fac) -> int | None:
@@ -518,9 +544,7 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
             # rigid by its geometry, singular by its numbers (a modulus of 1e-320 Pa)
             raise MechanismError(s.source or s.name, "the tangent stiffness of the unloaded "
                                  "structure is numerically singular although its geometry is "
-                                 "rigid; check the units (SI: m, N, Pa, kg, s) and the "
-                                 "magnitudes of the moduli and sections", mechanisms=0
-                                 ) from None
+                                 f"rigid; {UNITS_ADVICE}", mechanisms=0) from None
         raise MechanismError(s.source or s.name, f"the unloaded structure is a mechanism "
                              f"({nm} independent mechanism(s)); a post-critical analysis "
                              "needs a stiff start — see 'trussfe mechanism'",
@@ -609,7 +633,7 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
         # away from the converged state) serves the next predictor and the inertia count
         try:
             fac1 = checked or (fac_new if fac_new is not None
-                               else factor(st.eval(uf1)[2], "symmetric"))
+                               else _tangent_factor(st.eval(uf1)[2]))
             neg1 = _inertia(fac1)
         except SingularMatrixError:
             fac1, neg1 = None, None
@@ -716,7 +740,7 @@ def _attempt(st, uf, lam, fac, dss, direction, prev, mode, du_prev, neg, max_cut
         new = st.step(uf, lam, fac, dss, direction, prev, mode)
         if new is not None and arc and cut < max_cuts:
             try:
-                f1 = new[4] if new[4] is not None else factor(st.eval(new[0])[2], "symmetric")
+                f1 = new[4] if new[4] is not None else _tangent_factor(st.eval(new[0])[2])
             except SingularMatrixError:
                 f1 = None
             neg1 = _inertia(f1)
