@@ -46,11 +46,12 @@ def _local_axes(axis, orientation=None):
                          ids=["x-1", "x-2", "y-1", "z-1", "oblique-1"])
 def test_arc_length_rolls_a_3d_cantilever_into_full_circles(turns, axis):
     """Cantilever along ``axis`` (x, y, z, oblique) under an end moment
-    ``M = 2π·turns·EI_z/L`` about its local z axis (fixed direction), 16 elements, arc-length control (the default control): the path reaches
-    the full load and every path point lies on the closed-form arc, tip at
-    ``(L/φ)(sin φ e1 + (1 − cos φ) e3 × e1)``, to 2e-5 L.  (The diagonal-pivot LDLᵀ of the
-    tangent broke down — a vanishing pivot of a regular, slightly unsymmetric tangent — as the
-    tip rotation approached 2π, and the path stopped at λ = 0.970 (one turn) or 0.485 (two).)"""
+    ``M = 2π·turns·EI_z/L`` about its local z axis (fixed direction), 16 elements,
+    arc-length control (the default control): the path reaches the full load and every path
+    point lies on the closed-form arc, tip at ``(L/φ)(sin φ e1 + (1 − cos φ) e3 × e1)``, to
+    2e-5 L.  Without the LU fallback the diagonal-pivot LDLᵀ of the tangent breaks down — a
+    vanishing pivot of a regular, slightly unsymmetric tangent — as the tip rotation nears
+    2π, and the path stops at λ = 0.970 (one turn) or 0.485 (two)."""
     R0 = _local_axes(list(axis))
     EI = MAT.E * SEC.Iz
     M = 2 * np.pi * turns * EI
