@@ -31,6 +31,7 @@ from dataclasses import dataclass, field
 from typing import Callable
 
 import numpy as np
+import scipy.sparse as sp
 
 from ..errors import UNITS_ADVICE, AnalysisError, InputError, MechanismError
 from ..linalg import SingularMatrixError, factor
@@ -129,11 +130,17 @@ class _Stepper:
         self.m = model
         self.control = control
         self.free = np.flatnonzero(model.free)
+        #: length per radian of the free DOFs: 1 on translations, a length of the model on
+        #: rotations (:func:`rotation_length`), so that displacement norms are lengths and
+        #: residual norms forces in every consistent unit system
+        self.w = np.ones(model.ndof)
+        self.w[model.n_points * model.dim:] = rotation_length(model)
+        self.w = self.w[self.free]
         self.f = model.load[self.free]
-        self.fn = np.linalg.norm(self.f)
+        self.fn = self.rnorm(self.f)
         #: constant dead load (gravity) under the scaled pattern λ f
         self.fd = model.dead[self.free]
-        self.fdn = np.linalg.norm(self.fd)
+        self.fdn = self.rnorm(self.fd)
         self.c = int(np.searchsorted(self.free, monitor)) if monitor >= 0 else -1
         self.tol = tol
         self.max_iter = max_iter
@@ -144,12 +151,32 @@ class _Stepper:
         #: free DOFs up to which every Newton iteration refactorises the tangent
         self.full_newton_size = 2000
 
+    def dnorm(self, du) -> float:
+        """Norm of a displacement vector of the free DOFs, rotations as lengths (m)."""
+        return float(np.linalg.norm(self.w * du))
+
+    def dot(self, a, b) -> float:
+        """Inner product of two displacement vectors in the metric of :meth:`dnorm`."""
+        return float((self.w * a) @ (self.w * b))
+
+    def rnorm(self, r) -> float:
+        """Norm of a force vector of the free DOFs, moments as forces (N)."""
+        return float(np.linalg.norm(r / self.w))
+
+    def scaled_tangent(self, K):
+        """``S K S`` with ``S = 1/w``: the tangent in the DOFs of :meth:`dnorm` (its
+        eigenvalues and eigenvectors do not depend on the units)."""
+        if np.all(self.w == 1.0):
+            return K
+        S = sp.diags(1.0 / self.w)
+        return (S @ K @ S).tocsr()
+
     def unloaded_eigenvalue(self) -> float:
         """|eigenvalue nearest zero| of the tangent of the unloaded structure (the scale of
         "singular" for the critical points), computed once."""
         if not hasattr(self, "_w0"):
             K0 = self.m.reference_tangent()[self.free][:, self.free]
-            self._w0 = abs(nearest_zero_mode(K0)[0])
+            self._w0 = abs(nearest_zero_mode(self.scaled_tangent(K0))[0])
         return self._w0
 
     def full(self, uf):
@@ -208,10 +235,10 @@ class _Stepper:
         else:
             sign = 1.0
             if du_prev is not None:
-                sign = 1.0 if du_prev @ ut >= 0.0 else -1.0
+                sign = 1.0 if self.dot(du_prev, ut) >= 0.0 else -1.0
             elif direction is not None:
                 sign = float(direction)
-            dlam = sign * ds / np.linalg.norm(ut)
+            dlam = sign * ds / self.dnorm(ut)
         return dlam * ut, dlam, ut, mode
 
     def corrector(self, uf0, lam0, fac0, du, dlam, ut, mode, fac_iter=None,
@@ -220,7 +247,7 @@ class _Stepper:
         step's constraint (load: fixed λ; displacement: fixed monitored DOF; arc-length:
         Crisfield's cylinder ``‖Δu‖ = ‖du‖``).  Returns the :meth:`step` tuple or None."""
         f = self.f
-        ds_arc = np.linalg.norm(du)
+        ds_arc = self.dnorm(du)
         # load and displacement control may converge to a remote equilibrium beyond a limit
         # point (a dynamic snap); such a step is refused (and cut) rather than followed
         jump = _JUMP_FACTOR * max(ds_arc, 1e-12 * self.size) if mode in ("load",
@@ -240,9 +267,9 @@ class _Stepper:
             scale = self.fn * max(abs(lam), self.lam_unit) + self.fdn
             if not np.all(np.isfinite(R)):
                 return None
-            rn = np.linalg.norm(R)
+            rn = self.rnorm(R)
             if rn <= self.tol * scale:
-                if np.linalg.norm(du) > jump:
+                if self.dnorm(du) > jump:
                     return None
                 return uf, lam, res, it, fresh
             try:
@@ -262,26 +289,45 @@ class _Stepper:
             elif mode == "displacement":
                 dl = -dr[self.c] / dt[self.c]
             else:
-                a = dt @ dt
+                a = self.dot(dt, dt)
                 w = du + dr
-                b = 2.0 * dt @ w
-                cc = w @ w - ds_arc ** 2
+                b = 2.0 * self.dot(dt, w)
+                cc = self.dot(w, w) - ds_arc ** 2
                 disc = b * b - 4 * a * cc
                 if disc < 0:
                     return None
                 roots = ((-b + np.sqrt(disc)) / (2 * a), (-b - np.sqrt(disc)) / (2 * a))
-                dl = max(roots, key=lambda r: (w + r * dt) @ du)
+                dl = max(roots, key=lambda r: self.dot(w + r * dt, du))
             corr = dr + dl * dt
             du = du + corr
             dlam += dl
             # the correction applies to the current iterate (rotations: composed with it)
             uf = uf0 + du if self.m.additive else self.add(uf, corr)
             # round-off floor of the residual: accept when the correction is negligible
-            if np.linalg.norm(corr) <= 1e-13 * (np.linalg.norm(uf) + self.size):
-                if np.linalg.norm(du) > jump:
+            if self.dnorm(corr) <= 1e-13 * (self.dnorm(uf) + self.size):
+                if self.dnorm(du) > jump:
                     return None
                 return (uf, lam0 + dlam, self.m.evaluate(self.full(uf)), it, fresh)
         return None
+
+
+def rotation_length(model: NonlinearModel) -> float:
+    """The length (m) per radian in which the path following measures rotations.
+
+    A displacement vector of a beam model holds lengths (m) and angles (rad), a residual
+    forces (N) and moments (N·m): their plain norms change with the unit of length, and so
+    would the arc length, the convergence test and the step control.  With rotations times
+    this length (and moments divided by it) every norm is a length or a force, the same in
+    every consistent unit system and for geometrically similar structures.  It is the median
+    length of the members modelled as beams (every member when none is), exactly — not
+    rounded like :func:`trussfe.fem.solver.rotation_scale`, so that a scaled model follows
+    the same path to round-off; 1 m members (most SI models) are measured as before.
+    """
+    s = model.structure
+    lengths = s.lengths()
+    beams = np.unique(model.b_member) if len(model.b_member) else np.arange(s.n_members)
+    length = float(np.median(lengths[beams])) if beams.size else 0.0
+    return length if np.isfinite(length) and length > 0.0 else 1.0
 
 
 def _dead_load_state(st, max_cuts: int) -> np.ndarray:
@@ -359,7 +405,7 @@ def _next_step(ds: float, iterations: int, ds_max: float, control: str) -> float
 
 
 def _next_sign(sign: float, neg0: int | None, neg1: int | None, limit_point: bool,
-               ut1: np.ndarray | None, du: np.ndarray) -> float:
+               ut1: np.ndarray | None, du: np.ndarray, dot=np.dot) -> float:
     """Arc-length: the sign of the load increment of the next predictor.
 
     Between limit points the load factor is monotonic along the path, and at a limit point it
@@ -372,7 +418,7 @@ def _next_sign(sign: float, neg0: int | None, neg1: int | None, limit_point: boo
         return -sign if limit_point and (neg1 - neg0) % 2 == 1 else sign
     if ut1 is None:
         return sign
-    return 1.0 if ut1 @ du >= 0.0 else -1.0
+    return 1.0 if dot(ut1, du) >= 0.0 else -1.0
 
 
 #: Why a path cannot start from a tangent whose pivots passed but whose solve is not finite.
@@ -388,7 +434,7 @@ DEFAULT_STEP_FRACTION = 1.0 / 1000.0
 
 
 def default_step(control: str, steps: int, size: float, ut: np.ndarray, c: int,
-                 max_load_factor: float | None) -> float:
+                 max_load_factor: float | None, norm=np.linalg.norm) -> float:
     """The first increment when none is given, derived from the structure.
 
     * load control: ``max_load_factor / steps`` (1/steps without a maximum);
@@ -400,11 +446,12 @@ def default_step(control: str, steps: int, size: float, ut: np.ndarray, c: int,
       more than a tenth of the linear response to it.
 
     ``ut`` is the linear displacement per unit load factor (free DOFs), ``c`` the monitored
-    one's index in it.
+    one's index in it, ``norm`` the displacement norm of the arc length
+    (:meth:`_Stepper.dnorm`).
     """
     if control == "load":
         return (max_load_factor if max_load_factor is not None else 1.0) / steps
-    linear = np.abs(ut[c]) if control == "displacement" else np.linalg.norm(ut)
+    linear = np.abs(ut[c]) if control == "displacement" else norm(ut)
     step = DEFAULT_STEP_FRACTION * size
     if max_load_factor is not None:
         step = min(step, max_load_factor * linear / 10.0)
@@ -556,14 +603,14 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
         # pivot test, yet the solve overflowed: no step can start from this tangent
         raise AnalysisError(s.source or s.name, UNSOLVABLE_START) from None
     if control == "displacement":
-        if abs(ut[st.c]) <= 1e-12 * np.abs(ut).max():
+        if abs(st.w[st.c] * ut[st.c]) <= 1e-12 * np.abs(st.w * ut).max():
             raise InputError("monitor", "the reference load does not move the monitored "
                                         "displacement: choose another for displacement control")
         st.dsign = float(np.sign(ut[st.c]))
     if step is None:
-        step = default_step(control, steps, st.size, ut, st.c, max_load_factor)
+        step = default_step(control, steps, st.size, ut, st.c, max_load_factor, st.dnorm)
     st.lam_unit = abs(step / ut[st.c]) if control == "displacement" else (
-        abs(step) if control == "load" else abs(step) / np.linalg.norm(ut))
+        abs(step) if control == "load" else abs(step) / st.dnorm(ut))
 
     def record(uf_, lam_, res_, neg, stage="equilibrium"):
         out.path.append(PathPoint(lam_, st.full(uf_), m.member_axial_forces(res_),
@@ -595,7 +642,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                 >= max_failures:
             out.termination = f"reached {max_failures} member failure events"
             break
-        if max_displacement is not None and abs(uf[st.c]) >= max_displacement:
+        # (to round-off: a path whose steps end on the limit stops there in every unit)
+        if max_displacement is not None and abs(uf[st.c]) >= max_displacement * (1 - 1e-12):
             out.termination = f"reached the maximum displacement {max_displacement:g} m"
             break
         dss = ds
@@ -694,9 +742,9 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
             ut1 = fac1.solve(st.f)
             if mode == "branch":
                 # the first step on a new branch: its load sense is the one it took
-                sign = 1.0 if ut1 @ (uf1 - uf) >= 0.0 else -1.0
+                sign = 1.0 if st.dot(ut1, uf1 - uf) >= 0.0 else -1.0
             else:
-                sign = _next_sign(sign, neg, neg1, limit, ut1, uf1 - uf)
+                sign = _next_sign(sign, neg, neg1, limit, ut1, uf1 - uf, st.dot)
         du_prev = uf1 - uf
         uf, lam, res = uf1, lam1, res1
         point = record(uf, lam, res, neg1)
@@ -748,7 +796,7 @@ def _attempt(st, uf, lam, fac, dss, direction, prev, mode, du_prev, neg, max_cut
             # without a critical point in the step neither the displacement increment nor
             # the load increment may turn against the path's direction
             turned = not _crossed(neg, neg1) and (
-                (du_prev is not None and (new[0] - uf) @ du_prev < 0.0)
+                (du_prev is not None and st.dot(new[0] - uf, du_prev) < 0.0)
                 or (direction * dl < 0.0 and abs(dl) > 1e-9 * max(abs(lam), st.lam_unit)))
             several = _crossed(neg, neg1) and abs(neg1 - neg) > 1 and cut < max_cuts // 2
             if not (turned or several):
@@ -885,8 +933,10 @@ def _critical_point(st, m, out, uf, lam, fac, dss, direction, du_prev, mode, neg
 
 def _classify(st, uf, neg0, neg1):
     """Limit point (the critical mode does work on the load) or bifurcation (it does not)."""
-    w, phi = nearest_zero_mode(st.eval(uf)[2])
-    ratio = abs(phi @ st.f) / (np.linalg.norm(st.f) * np.linalg.norm(phi))
+    w, phi = nearest_zero_mode(st.scaled_tangent(st.eval(uf)[2]))
+    # φ of the scaled tangent (rotations as lengths) back to DOFs: ‖w φ‖ = 1
+    phi = phi / st.w
+    ratio = abs(phi @ st.f) / (st.rnorm(st.f) * st.dnorm(phi))
     kind = "limit_point" if ratio > _BIFURCATION_RATIO else "bifurcation"
     return kind, (f"negative eigenvalues {neg0} -> {neg1}; |phi.f|/(|phi||f|) = "
                   f"{ratio:.2e}"), phi, w
@@ -1018,7 +1068,7 @@ def _release(st, uf0, lam, event_tolerance=1e-6, min_increment=1.0 / 4096):
     res, fint, _ = st.eval(uf0, tangent=False)
     r0 = fint - lam * st.f - st.fd
     scale = st.fn * max(abs(lam), st.lam_unit)
-    if np.linalg.norm(r0) <= st.tol * scale:
+    if st.rnorm(r0) <= st.tol * scale:
         return uf0, m.evaluate(st.full(uf0)), False
     mg_start = m.margins(res)
 
@@ -1030,7 +1080,7 @@ def _release(st, uf0, lam, event_tolerance=1e-6, min_increment=1.0 / 4096):
         for _ in range(2 * st.max_iter if modified else st.max_iter):
             r, fi, K = st.eval(u, tangent=not modified)
             R = fi - lam * st.f - st.fd - target * r0
-            rn = np.linalg.norm(R)
+            rn = st.rnorm(R)
             if rn <= st.tol * scale:
                 return u, r
             try:
