@@ -237,3 +237,27 @@ def test_a_relative_catalogue_path_that_holds_no_number_is_refused(tmp_path):
     with pytest.raises(trussfe.InputError, match="study.toml: parameters.E: relative: path "
                                                  "'model.name' holds .*not a number"):
         read_study(f)
+
+
+def test_reductions_treat_nulls_as_studies_md_says():
+    """docs/studies.md: a JSON null is NaN; max, min, absmax, mean and sum leave NaN out (NaN
+    only when every value is), first and last give the item as it is, count counts the
+    items matched; a reduction over nothing is NaN (count: 0).  Reference: numpy's
+    nan-aware reductions on the same values."""
+    import math
+
+    import numpy as np
+
+    from trussfe.api.result_paths import reduce
+
+    values = [math.nan, -4.0, 3.0, math.nan]
+    a = np.array(values)
+    assert reduce(values, "max") == np.nanmax(a) == 3.0
+    assert reduce(values, "min") == np.nanmin(a) == -4.0
+    assert reduce(values, "absmax") == 4.0
+    assert reduce(values, "mean") == np.nanmean(a) == -0.5
+    assert reduce(values, "sum") == np.nansum(a) == -1.0
+    assert math.isnan(reduce(values, "first")) and math.isnan(reduce(values, "last"))
+    assert reduce(values, "count") == 4.0
+    assert math.isnan(reduce([math.nan, math.nan], "max"))
+    assert math.isnan(reduce([], "mean")) and reduce([], "count") == 0.0
