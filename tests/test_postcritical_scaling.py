@@ -97,9 +97,9 @@ def _assert_same_path(name: str, scale: str, located_rtol: float):
 @pytest.mark.parametrize("scale", ["1e-4", "1e4", "mm"])
 def test_von_mises_path_is_unit_free(scale):
     """The two-bar truss: 66 points, limit points at ±381.087 and the stop at the largest
-    displacement (a step ends on it, to round-off) in every unit system — at s = 1e-4 the
-    path used to take one step more (to λ = 2060) when the last step ended 1 ulp short of
-    the largest displacement."""
+    displacement (a step ends on it, to round-off) in every unit system — an exact stop test
+    would take one step more at s = 1e-4 (to λ = 2060), where the last step ends 1 ulp short
+    of the largest displacement."""
     term = _assert_same_path("postcritical_von_mises", scale, located_rtol=1e-5)
     lam, _, ev, _ = _run("postcritical_von_mises", scale)
     assert len(lam) == 66
