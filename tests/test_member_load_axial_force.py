@@ -54,7 +54,7 @@ def test_midpoint_axial_force_under_non_uniform_axial_member_loads(member_type, 
     conventions*; ``StaticResult.axial_force``).  Reference: statics of a member pinned at A
     and free to slide at B — a point load at 0.3 L and a load rising linearly along the
     member leave N(L/2) = ∫_{L/2}^{L} q = 900 N.  The mean of the end values (1100 N) is the
-    midpoint value only when N is linear along the member; trussfe reported the mean."""
+    midpoint value only when N is linear along the member, which it is not here."""
     s = _axially_loaded(member_type)
     r = solve_static(s, bar_model=bar_model, subdivisions=k)
     equilibrium(r, member_loads=s.extensions["member_loads"])

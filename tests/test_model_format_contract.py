@@ -86,7 +86,7 @@ EXTENSION_MODELS = [
 def test_writer_reads_back_extension_tables(tmp_path, name):
     """model-format.md, *Writing model files*: the file written "reads back exactly"; the
     extension tables (member loads, active members, actuators, failure laws, post-critical
-    settings) are part of the model (they were left out with a log line)."""
+    settings) are part of the model and are written too."""
     s = read_model(ROOT / name)
     assert s.extensions, name
     r = read_model(write_model(s, tmp_path / "m.toml"))
@@ -295,7 +295,8 @@ material = "al"
 
 def test_groups_need_a_mesh():
     """model-format.md: [groups.NAME] gives properties per cell set of *mesh models*; beside
-    [members] it was ignored unchecked (here it names a section that does not exist)."""
+    [members] it would be ignored unchecked (here it names a section that does not exist),
+    so it is refused."""
     d = _frame()
     d["groups"] = {"default": {"section": "nosuch", "material": "steel"}}
     with pytest.raises(InputError, match=r"^\[groups\]: .*no \[model\] mesh"):
@@ -305,7 +306,8 @@ def test_groups_need_a_mesh():
 @pytest.mark.parametrize("table", ["nodes", "members"])
 def test_mesh_model_refuses_nodes_and_members_tables(tmp_path, table):
     """model-format.md: `[model] mesh` "reads the nodes and members from" the mesh; a
-    [nodes] or [members] table beside it was ignored, even one naming an undefined node."""
+    [nodes] or [members] table beside it would be ignored, even one naming an undefined
+    node, so it is refused."""
     extra = {"nodes": '[nodes]\nA = [0.0, 0.0]\n',
              "members": '[members]\nX = { nodes = ["A", "B"], section = "thin", '
                         'material = "al" }\n'}[table]

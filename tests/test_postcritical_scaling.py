@@ -124,8 +124,8 @@ def test_euler_column_path_is_unit_free(scale):
 
 @pytest.mark.parametrize("scale", ["1e-4", "1e4"])
 def test_euler_column_3d_path_is_unit_free(scale):
-    """The 3-D column (multiplicative rotations): the same path at s = 1e-4 and 1e4 (it
-    stopped at λ = 0.001 at s = 1e-4)."""
+    """The 3-D column (multiplicative rotations): the same path at s = 1e-4 and 1e4 (norms
+    mixing metres and radians would stop it at λ = 0.001 at s = 1e-4)."""
     _assert_same_path("postcritical_euler_column_3d", scale, located_rtol=1e-5)
 
 

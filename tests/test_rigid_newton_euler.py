@@ -305,8 +305,7 @@ def test_actuators_the_motion_does_not_name_hold_their_load(tmp_path):
     (docs/actuators.md, *Measured motions*), so their motors hold the load at rest.  Every
     actuator has its histories (as in an analysis at rest); a held one's, thesis convention
     (square thread, Lacy eqs. 2.37, 2.40, 2.44 with θ̇ = θ̈ = 0):
-    T_m = |F| (d_m/2) (l + π μ d_m)/(π d_m − μ l), V_m = T_m R_a/K_t.  Before, the held
-    actuators were left out."""
+    T_m = |F| (d_m/2) (l + π μ d_m)/(π d_m − μ l), V_m = T_m R_a/K_t."""
     s = trussfe.read_model(MESHES / "double_octahedron_actuators.toml")
     k = s.member_index("M7_8")
     L0 = s.lengths()[k]

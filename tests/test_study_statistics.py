@@ -153,7 +153,7 @@ def test_a_count_range_runs_from_a_to_b_exactly(tmp_path, lo, hi, n):
                                              (0.0, 0.9, 0.3, 4), (1, 7, 2, 4)])
 def test_a_step_range_never_passes_b(tmp_path, lo, hi, step, n):
     """docs/studies.md: ``{ from = a, to = b, step = s }`` is "a, a + s, ... up to b": no value
-    past b.  trussfe gave 0.1 + 2 × 0.1 = 0.30000000000000004 > 0.3 as the last of 0.1 to 0.3;
+    past b, although 0.1 + 2 × 0.1 = 0.30000000000000004 > 0.3 in floating point;
     each value is a + k s to rounding (reference: the exact a + k s)."""
     got = _grid(tmp_path, f"{{ from = {lo}, to = {hi}, step = {step} }}")
     assert len(got) == n and got[0] == lo
@@ -213,8 +213,8 @@ tip = "nodes.b{n_bays}.N7.displacement.2"
 
 def test_a_relative_parameter_of_a_catalogue_structure_scales_its_own_number(tmp_path):
     """docs/studies.md: ``relative = true`` writes the model's own number × the value.  A
-    catalogue structure's model paths are parameters like a model file's, but a relative
-    one was refused ("'' is a value, not a table: it has no 'materials'").  Reference: the
+    catalogue structure's model paths are parameters like a model file's, relative ones
+    included, their base read from the model built for each run.  Reference: the
     API's static analysis of the catalogue model with E scaled by hand."""
     from trussfe.io.model_writer import model_toml
     from trussfe.models import double_octahedral_chain
