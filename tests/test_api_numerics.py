@@ -49,26 +49,8 @@ def test_a_result_in_range_is_unchanged_and_the_callers_settings_kept():
 
 def test_a_model_file_is_named_by_its_path(tmp_path):
     """From a model file the error names the file, as the command line does."""
-    f = tmp_path / "pre.toml"
-    f.write_text("""[model]
-dimension = 2
-[materials.st]
-E = 2.0e11
-[sections.t]
-area = 1e-4
-[nodes]
-A = [0.0, 0.0]
-B = [1.0, 0.0]
-C = [0.5, 0.5]
-[members]
-AB = { nodes = ["A", "B"], section = "t", material = "st" }
-AC = { nodes = ["A", "C"], section = "t", material = "st" }
-BC = { nodes = ["B", "C"], section = "t", material = "st" }
-[supports]
-A = ["x", "y"]
-B = ["x", "y"]
-[load_cases.pre]
-initial_strain = [ { member = "AB", strain = 1e300 } ]
-""")
+    from trussfe.io.model_writer import write_model
+
+    f = write_model(trussfe.model_from_dict(_prestrained(1e300)), tmp_path / "pre.toml")
     with pytest.raises(AnalysisError, match=rf"^{f}: numerical failure"):
         trussfe.static(str(f), case="pre")

@@ -21,6 +21,7 @@ from ..linalg import SINGULAR_PIVOT, Factor, FreeBlock, factor, free_submatrix
 from ..linalg.factor import PARDISO_MIN_DOF, banded_limit
 from ..linalg.ordering import Points
 from ..linalg.rank import DENSE_LIMIT, stiffness_null_space
+from ..mechanics.geometry import rotation_length
 
 log = logging.getLogger(__name__)
 
@@ -106,8 +107,7 @@ def rotation_scale(fe, free: np.ndarray) -> np.ndarray | None:
     rot = rot[free]
     if not rot.any():
         return None
-    lengths = fe.structure.lengths()
-    length = float(np.median(lengths)) if lengths.size else 1.0
+    length = rotation_length(fe.structure.lengths())
     # a power of two: the scaling is exact in floating point, and a model whose members are
     # 0.7–1.4 units long (most SI models) is factorised exactly as without it
     return np.where(rot, 2.0 ** -np.round(np.log2(length)), 1.0)

@@ -439,10 +439,7 @@ def _with_loaded_stations(fe: FEModel, stations: tuple, max_vm: np.ndarray) -> n
     if lm.size == 0:
         return max_vm
     s = fe.structure
-    col = lambda a: a[lm][:, None]       # member properties against (member, station)
-    vm = von_mises(lF[..., 0], lF[..., 1], lF[..., 2], lF[..., 4], lF[..., 5], col(s.area),
-                   col(s.Iy), col(s.Iz), col(s.c), col(s.c),
-                   col(round_sections(s.sections)))
+    vm = _section_stresses(s, lF, lm)
     unknown = np.isfinite(lx) & ~np.isfinite(vm.s2)
     if np.any(unknown):
         i = int(lm[np.flatnonzero(unknown.any(axis=1))[0]])
@@ -455,6 +452,16 @@ def _with_loaded_stations(fe: FEModel, stations: tuple, max_vm: np.ndarray) -> n
     return out
 
 
+def _section_stresses(s: Structure, F: np.ndarray, members: np.ndarray | None = None):
+    """Von Mises stresses (Lacy eqs. 2.24, 2.25; :func:`trussfe.mechanics.stress.von_mises`)
+    of section forces ``F`` (member, station, 6) of the ``members`` (all by default)."""
+    pick = slice(None) if members is None else members
+    col = lambda a: a[pick][:, None]     # member properties against (member, station)
+    return von_mises(F[..., 0], F[..., 1], F[..., 2], F[..., 4], F[..., 5], col(s.area),
+                     col(s.Iy), col(s.Iz), col(s.c), col(s.c),
+                     col(round_sections(s.sections)))
+
+
 def _stresses(fe: FEModel, F: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Von Mises stress at S1 and S2 of every station (Lacy eqs. 2.24, 2.25)."""
     s = fe.structure
@@ -465,10 +472,7 @@ def _stresses(fe: FEModel, F: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
             raise InputError(f"sections.{s.sections[i].name}",
                              f"c (outer-fibre distance) is missing (member {s.member_ids[i]}); "
                              "the bending stress of a beam needs it: give c")
-        col = lambda a: a[:, None]       # member properties against (member, station)
-        vm = von_mises(F[..., 0], F[..., 1], F[..., 2], F[..., 4], F[..., 5], col(s.area),
-                       col(s.Iy), col(s.Iz), col(s.c), col(s.c),
-                       col(round_sections(s.sections)))
+        vm = _section_stresses(s, F)
         return vm.s1, vm.s2
     # truss bars only: section forces are axial, so von Mises is |N|/A at S1 and S2
     # (von_mises with V = M = 0), taken directly for large pin-jointed models

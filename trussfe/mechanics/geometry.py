@@ -164,3 +164,23 @@ def from_end_node(distance: np.ndarray, length: np.ndarray) -> np.ndarray:
     from the end node B; trussfe's stations count from the start node.
     """
     return np.asarray(length, dtype=float)[..., None] - np.asarray(distance, dtype=float)
+
+
+def rotation_length(lengths: np.ndarray) -> float:
+    """The length (m) per radian in which a model's rotations are measured beside its
+    translations: the median of the member ``lengths`` given, 1 when there is none.
+
+    A stiffness or a displacement vector with rotations mixes N/m with N·m/rad and metres
+    with radians, whose ratio changes with the unit of length; a rotation times this length
+    (a moment divided by it) is the same in every consistent unit system and for every
+    geometrically similar model.  The linear factorisation
+    (:func:`trussfe.fem.solver.rotation_scale`) and the post-critical path
+    (:func:`trussfe.nonlinear.path.rotation_length`) measure rotations in it.
+
+    Examples
+    --------
+    >>> rotation_length(np.array([2.0, 4.0, 3.0])), rotation_length(np.zeros(0))
+    (3.0, 1.0)
+    """
+    length = float(np.median(lengths)) if np.size(lengths) else 0.0
+    return length if np.isfinite(length) and length > 0.0 else 1.0

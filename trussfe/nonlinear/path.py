@@ -36,6 +36,7 @@ import scipy.sparse as sp
 from ..errors import UNITS_ADVICE, AnalysisError, InputError, MechanismError
 from ..linalg import SingularMatrixError, factor
 from ..linalg.eigen import nearest_zero_mode
+from ..mechanics.geometry import rotation_length as member_rotation_length
 from ..model.postcritical import CONTROLS
 from .mechanism import MechanismMotion, equilibrium_form, mechanism_count
 from .model import NonlinearModel
@@ -319,15 +320,13 @@ def rotation_length(model: NonlinearModel) -> float:
     would the arc length, the convergence test and the step control.  With rotations times
     this length (and moments divided by it) every norm is a length or a force, the same in
     every consistent unit system and for geometrically similar structures.  It is the median
-    length of the members modelled as beams (every member when none is), exactly — not
-    rounded like :func:`trussfe.fem.solver.rotation_scale`, so that a scaled model follows
+    length of the members modelled as beams (every member when none is;
+    :func:`trussfe.mechanics.geometry.rotation_length`), exactly — not rounded like :func:`trussfe.fem.solver.rotation_scale`, so that a scaled model follows
     the same path to round-off; 1 m members (most SI models) are measured as before.
     """
     s = model.structure
-    lengths = s.lengths()
     beams = np.unique(model.b_member) if len(model.b_member) else np.arange(s.n_members)
-    length = float(np.median(lengths[beams])) if beams.size else 0.0
-    return length if np.isfinite(length) and length > 0.0 else 1.0
+    return member_rotation_length(s.lengths()[beams])
 
 
 def _dead_load_state(st, max_cuts: int) -> np.ndarray:

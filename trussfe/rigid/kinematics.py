@@ -575,8 +575,9 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     ------
     AnalysisError
         A statically indeterminate truss or a mechanism, a motion for whose lengths no
-        assembly exists (:func:`check_fixed_members` among them), or a singular position
-        (naming the step).
+        assembly exists, or a singular position (naming the step).  Positions given as
+        ``coords`` are taken as they are: :func:`check_fixed_members` is the caller's
+        (``simulate`` makes it once, before the positions, for every method).
     """
     if scheme not in ("exact", "thesis"):
         raise AnalysisError("scheme", f"unknown kinematics scheme {scheme!r}; use 'exact' or "
@@ -584,9 +585,6 @@ def compute_kinematics(structure: Structure, motion: Motion, *, scheme: str = "e
     pattern = _Pattern.of(structure)
     if pattern.m != pattern.nfree:
         raise AnalysisError(structure.source or structure.name, _count_message(pattern))
-    # positions given by the caller (a chain's bays, a block of a motion) have not been
-    # checked against the lengths of members the assembly does not see
-    check_fixed_members(structure, motion)
     X = (solve_motion_positions(structure, motion, progress=progress) if coords is None
          else coords)
     nt = X.shape[0]

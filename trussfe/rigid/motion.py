@@ -128,28 +128,24 @@ beyond its stroke 2.5-4.1 m ([active_members.active] min_length, max_length)
     """
     actives = {a.member: a for a in structure.extensions.get("active_members", ())}
     item = f"{motion.source}: motion" if motion.source else "motion"
-    first = None
-    for j, k in enumerate(np.asarray(motion.members).tolist()):
-        a = actives.get(k)
-        lo, hi = (a.min_length, a.max_length) if a is not None else (math.nan, math.nan)
-        # the leadscrew tube lies between the member's end node and the base: a member
-        # shorter than its tube would put the tube behind its start node (the model file's
-        # tube_length is refused when longer than the member at rest, for the same reason)
-        tube = a.tube_length if a is not None else math.nan
-        L = motion.length[:, j]
-        out = np.zeros(L.shape, dtype=bool)
-        if np.isfinite(lo):
-            out |= L < lo * (1.0 - STROKE_TOLERANCE)
-        if np.isfinite(hi):
-            out |= L > hi * (1.0 + STROKE_TOLERANCE)
-        if np.isfinite(tube):
-            out |= L < tube * (1.0 - STROKE_TOLERANCE)
-        if out.any():
-            i = int(np.argmax(out))
-            if first is None or i < first[0]:
-                first = (i, j, k, lo, hi, tube)
-    if first is not None:
-        i, j, k, lo, hi, tube = first
+    members = np.asarray(motion.members).tolist()
+    # per motion column: stroke limits and the leadscrew tube, NaN where not given (a
+    # comparison with NaN is false).  The tube lies between the member's end node and the
+    # base: a member shorter than its tube would put the tube behind its start node (the
+    # model file's tube_length is refused when longer than the member at rest, likewise).
+    nan3 = (math.nan, math.nan, math.nan)
+    limits = np.array([(a.min_length, a.max_length, a.tube_length)
+                       if (a := actives.get(k)) is not None else nan3 for k in members],
+                      dtype=float).reshape(-1, 3)
+    lo_all, hi_all, tube_all = limits.T
+    L = motion.length
+    out = ((L < lo_all * (1.0 - STROKE_TOLERANCE)) | (L > hi_all * (1.0 + STROKE_TOLERANCE))
+           | (L < tube_all * (1.0 - STROKE_TOLERANCE)))
+    bad = np.argwhere(out)                   # by step, then by column: the first step out
+    if bad.size:
+        i, j = (int(v) for v in bad[0])
+        k = members[j]
+        lo, hi, tube = limits[j]
         name = structure.member_ids[k]
         length = motion.length[i, j]
         where = (f"step {i} (t = {motion.time[i]:g} s): active member '{name}' is "

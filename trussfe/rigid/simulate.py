@@ -26,7 +26,8 @@ from .bays import METHODS, bay_by_bay_positions, chain_layout, chain_layout_or_n
 from .buckling import BucklingCheck, buckling_check
 from .forces import (MemberBodies, NodalForces, forces_from_tensions, member_bodies,
                      nodal_forces_with_static, pair_loads)
-from .kinematics import Kinematics, _Pattern, compute_kinematics, solve_motion_positions
+from .kinematics import (Kinematics, _Pattern, check_fixed_members, compute_kinematics,
+                         solve_motion_positions)
 from .linalg import SingularStep
 from .motion import Motion, check_stroke, rest_motion
 from .sections import (SectionForces, SectionStresses, section_forces, section_stresses,
@@ -259,8 +260,11 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
         bad = sorted(set(motion.members.tolist()) - set(act_idx.tolist()))[0]
         raise InputError("motion", f"member '{structure.member_ids[bad]}' is not an active "
                          "member of the model (add it to [active_members])")
-    # A motion beyond an actuator's stroke describes a truss that cannot be built.
+    # A motion beyond an actuator's stroke, or changing a member between two supports,
+    # describes a truss that cannot be built (checked once here, for every method: the
+    # positions of a chain's bays and the blocks of steps are not checked again).
     check_stroke(structure, motion)
+    check_fixed_members(structure, motion)
     bodies = member_bodies(structure)
     opts = dict(n_sections=n_sections, full_length_inertia=conventions.full_length_inertia,
                 shear_factor=conventions.shear_factor, stress_form=conventions.stress_form,
