@@ -389,7 +389,13 @@ def _superlu(M: sp.csr_matrix, kind: str) -> Factor:
 
 def _superlu_symmetric(M: sp.csr_matrix) -> Factor:
     """SuperLU in symmetric mode with diagonal pivots only: ``P A Pᵀ = L U`` with ``U``'s
-    diagonal the ``D`` of ``LDLᵀ``, whose negative entries give the inertia."""
+    diagonal the ``D`` of ``LDLᵀ``, whose negative entries give the inertia.
+
+    Diagonal pivoting can break down on an indefinite matrix: a pivot at round-off level
+    although the matrix is regular, or off-diagonal pivots where a diagonal one vanished.
+    Neither decides anything: LU with partial pivoting (:func:`_superlu`) then factorises the
+    matrix and applies the singularity rule to its own pivots, and the inertia is counted
+    from dense eigenvalues up to :data:`INERTIA_DENSE_LIMIT` unknowns (else None)."""
     n = M.shape[0]
     K = M.tocsc()
     if n == 0:
@@ -400,21 +406,20 @@ def _superlu_symmetric(M: sp.csr_matrix) -> Factor:
     except RuntimeError as exc:
         return _singular(M, "superlu", "symmetric", str(exc))
     d = lu.U.diagonal()
-    if not np.array_equal(lu.perm_r, lu.perm_c) or not np.all(np.isfinite(d)):
-        # off-diagonal pivoting happened: the pivots no longer give the inertia
-        lu = spla.splu(K)
-        d = lu.U.diagonal()
-        neg = int(np.sum(sla.eigvalsh(K.toarray()) < 0)) if n <= INERTIA_DENSE_LIMIT else None
-        return Factor(matrix=M, backend="superlu", kind="symmetric", n=n, inertia=neg,
-                      pivot_ratio=_ratio(d), is_singular=False, _solve=lu.solve,
-                      determinant_sign=_lu_sign(lu, d))
+    diagonal = np.array_equal(lu.perm_r, lu.perm_c) and bool(np.all(np.isfinite(d)))
     ratio = _ratio(d)
-    if ratio <= SINGULAR_PIVOT:
-        return _singular(M, "superlu", "symmetric", "zero pivot", ratio)
-    neg = int(np.sum(d < 0))
-    return Factor(matrix=M, backend="superlu", kind="symmetric", n=n, inertia=neg,
-                  pivot_ratio=ratio, is_singular=False, _solve=lu.solve,
-                  determinant_sign=(-1) ** neg)
+    if diagonal and ratio > SINGULAR_PIVOT:
+        neg = int(np.sum(d < 0))
+        return Factor(matrix=M, backend="superlu", kind="symmetric", n=n, inertia=neg,
+                      pivot_ratio=ratio, is_singular=False, _solve=lu.solve,
+                      determinant_sign=(-1) ** neg)
+    # off-diagonal pivoting, or a diagonal pivot at round-off: the pivots no longer give the
+    # inertia, and only partial pivoting tells a breakdown from a singular matrix
+    out = _superlu(M, "symmetric")
+    if not out.is_singular:
+        out.inertia = (int(np.sum(sla.eigvalsh(K.toarray()) < 0))
+                       if n <= INERTIA_DENSE_LIMIT else None)
+    return out
 
 
 def _pardiso(M: sp.csr_matrix, kind: str, points: Points | None = None) -> Factor:

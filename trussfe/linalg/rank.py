@@ -38,6 +38,9 @@ SPARSE_MIN_TOLERANCE = 1e-6
 #: Eigenvalues of the diagonally scaled stiffness below this (the largest is O(1)) are
 #: counted as mechanisms.
 NULL_TOLERANCE = 1e-10
+#: Vectors beyond the null space that the sparse path's block inverse iteration may take on
+#: to resolve the null space from eigenvalues of ``BᵀB`` just above the tolerance.
+NULL_BLOCK_EXTRA = 64
 #: Largest order for which the null space of a stiffness is computed densely.
 DENSE_LIMIT = 3000
 
@@ -161,12 +164,27 @@ def _sparse(B: sp.csr_matrix, tolerance, backend) -> Rank:
     vals = np.zeros(0)
     vecs = np.zeros((f, 0))
     if nz:
-        # block inverse iteration with the same factorisation, then Rayleigh–Ritz
+        # Block inverse iteration with the same factorisation, then Rayleigh–Ritz.  It
+        # favours the eigenvalues nearest the shift λ_tol, and one in (λ_tol, 2 λ_tol) is
+        # nearer than the null ones: the block grows (and iterates on) until its nz smallest
+        # Ritz values, upper bounds of the nz smallest eigenvalues, are below λ_tol.
         rng = np.random.default_rng(0)
-        V = np.linalg.qr(rng.normal(size=(f, nz + 2)))[0]
-        for _ in range(6):
-            V = np.linalg.qr(fac.solve(V, refine=False))[0]
-        w, Z = np.linalg.eigh(V.T @ (K @ V))
+        p = nz + 2
+        largest = min(f, nz + NULL_BLOCK_EXTRA)
+        V = np.linalg.qr(rng.normal(size=(f, p)))[0]
+        while True:
+            for _ in range(6):
+                V = np.linalg.qr(fac.solve(V, refine=False))[0]
+            w, Z = np.linalg.eigh(V.T @ (K @ V))
+            if w[nz - 1] <= lam_tol:
+                break
+            if p >= largest:
+                raise RankError(f"the null vectors did not converge ({nz} eigenvalues of BᵀB "
+                                "below the tolerance and others close above it); use the "
+                                "dense path (raise dense_limit) or another tolerance")
+            grow = min(2 * p, largest) - p
+            V = np.linalg.qr(np.hstack([V @ Z, rng.normal(size=(f, grow))]))[0]
+            p += grow
         vals, vecs = w, V @ Z
     kept = float(np.sqrt(max(vals[nz], 0.0))) if nz < vals.size else float("nan")
     dropped = float(np.sqrt(max(vals[nz - 1], 0.0))) if nz > 0 else float("nan")

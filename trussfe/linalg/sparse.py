@@ -98,9 +98,7 @@ def anchored_rows(K: sp.spmatrix, free: np.ndarray) -> np.ndarray:
     fixed[free] = False
     if not fixed.any():
         return np.zeros(free.size, dtype=bool)
-    counts = np.diff(K.indptr)
-    rows = free[counts[free] > 0]                      # reduceat needs non-empty rows
-    out = np.zeros(free.size, dtype=bool)
-    hit = np.logical_or.reduceat(fixed[K.indices], K.indptr[rows]) if rows.size else rows
-    out[counts[free] > 0] = hit
-    return out
+    row = np.repeat(np.arange(K.shape[0]), np.diff(K.indptr))
+    coupled = np.zeros(K.shape[0], dtype=bool)
+    coupled[row[fixed[K.indices]]] = True            # rows with an entry in a fixed column
+    return coupled[free]
