@@ -3,10 +3,11 @@ The Base Simulation: a rigid-body slew of the triangular truss
 ==============================================================
 
 Lacy (1991) section 3.3: the active member of the triangular truss extends from 0.5 m to
-1.7 m in 3 s (third-order actuator model, 50 time steps) with 10 kg at the apex.  The
-rigid-body dynamic force model gives the member stresses along the motion; with the thesis'
-own kinematics (``scheme="thesis"``: backward-difference angle rates, Appendix A) the largest
-von Mises stresses of the follower and of the leadscrew tube are those printed in section 3.3.
+1.7 m in 3 s (lengths ahead of its 2 m leadscrew tube: 2.5 m to 3.7 m pin to pin; third-order
+actuator model, 50 time steps) with 10 kg at the apex.  The rigid-body dynamic force model
+gives the member stresses along the motion; with the thesis' own kinematics
+(``scheme="thesis"``: backward-difference angle rates, Appendix A) the largest von Mises
+stresses of the follower and of the leadscrew tube are those printed in section 3.3.
 """
 from pathlib import Path
 

@@ -32,10 +32,13 @@ print(f"{demand.time.size} steps; M7/8 force at the start {force[0]:.2f} N, at t
 # Checks
 # ------
 # Lacy section 5.7: the largest compression of the M7/8 leadscrew tube is at the beginning of
-# the motion and decreases throughout it (fig. 5.13).  The peak motor voltage is the closed
-# form of Lacy eq. 2.44 at the start of the constant-velocity phase: the back emf of the link
-# speed (1.2289 - 1.1079) m / 5.25 s, 18.879 V, plus the armature drop of the leadscrew torque
-# of the 70.90 N start force, 3.175 V: 22.054 V (the force has dropped a little by the peak).
+# the motion and decreases throughout it (fig. 5.13).  Here it decreases throughout the
+# constant-velocity phase; the inertia of the 0.25 s ramps adds ripples of a few tenths of a
+# newton at either end.  The peak motor voltage is the closed form of Lacy eq. 2.44 at the
+# start of the constant-velocity phase: the back emf of the link speed
+# (1.2289 - 1.1079) m / 5.25 s, 18.879 V, plus the armature drop of the leadscrew torque of the
+# 70.90 N start force, 3.175 V: 22.054 V.  By the peak (t = 0.25 s) the force has dropped to
+# 69.63 N, which gives 21.997 V.
 # The thesis' 74.63 N and 29 V belong to the measured motion; docs/validation.md (case
 # actuator_slew1) explains the difference.
 

@@ -3,10 +3,11 @@ A mechanism trace: the four-bar linkage
 =======================================
 
 A crank-rocker four-bar linkage (``meshes/mech_fourbar.toml``): ground 1–4, crank 1–2,
-coupler 2–3, rocker 4–3.  ``trussfe.mechanism`` finds its one degree of freedom (Grübler:
-2·2 − 3 = 1) and ``trussfe.trace`` follows the finite motion, driving the crank tip's y
-coordinate.  At every state the coupler–rocker joint must lie on the intersection of the two
-circles about joints 2 and 4, which gives its position in closed form.
+coupler 2–3, rocker 4–3.  ``trussfe.mechanism`` finds its one degree of freedom (two free
+joints with two coordinates each against three bars: 2·2 − 3 = 1; Grübler's count of four
+links and four pins: 3·3 − 2·4 = 1) and ``trussfe.trace`` follows the finite motion, driving
+the crank tip's y coordinate.  At every state the coupler–rocker joint must lie on the
+intersection of the two circles about joints 2 and 4, which gives its position in closed form.
 """
 from pathlib import Path
 
@@ -52,7 +53,7 @@ print(f"{len(x)} states; joint 3 against the circle intersection: {error:.2e} m"
 
 # (quantity, computed, expected, absolute tolerance, source)
 CHECKS = [
-    ("mechanisms", rank.mechanisms, 1, 0, "Grübler: 2·2 − 3 = 1 degree of freedom"),
+    ("mechanisms", rank.mechanisms, 1, 0, "2 joints · 2 − 3 bars = 1 degree of freedom"),
     ("joint 3 position error, m", error, 0.0, 1e-8, "closed-form circle intersection"),
     ("coupler length change, m", length_change, 0.0, 1e-8, "rigid bars"),
 ]

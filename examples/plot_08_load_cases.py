@@ -5,9 +5,10 @@ A fixed-fixed beam under load cases and a combination
 A steel beam of span L = 4 m (EI = 1.6·10⁶ N·m²), clamped at both ends, under two load cases:
 ``dead``, a uniform load q = 2 kN/m along it (``member_loads``), and ``settlement``, its end B
 sinking δ = 5 mm (``prescribed``).  The closed forms of a fixed-fixed beam (Roark's Formulas
-for Stress and Strain, Table 8.1 cases 2e and 1e with a lateral end displacement) give the end
-moments qL²/12 and 6EIδ/L² and the end shears qL/2 and 12EIδ/L³.  The combination
-``ULS = 1.35 dead + 1.0 settlement`` is the factored sum of the two cases.
+for Stress and Strain, Table 8.1 case 2d for the uniform load; the slope-deflection equations
+for the end displacement) give the end moments qL²/12 and 6EIδ/L² and the end shears qL/2 and
+12EIδ/L³.  The combination ``ULS = 1.35 dead + 1.0 settlement`` is the factored sum of the two
+cases.
 """
 import tempfile
 from pathlib import Path

@@ -51,12 +51,6 @@ def _arguments(argv: list[str]) -> argparse.Namespace:
     return p.parse_args(argv)
 
 
-def _array(data_info, name: str):
-    """The array information of ``name`` or None."""
-    arrays = data_info.GetArrayInformation(name) if data_info is not None else None
-    return arrays
-
-
 def main(argv: list[str]) -> int:
     args = _arguments(argv)
     reader = pv.OpenDataFile(args.results)
