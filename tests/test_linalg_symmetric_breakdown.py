@@ -84,3 +84,14 @@ def test_off_diagonal_pivoting_regular_matrix():
     f = factor(sp.csr_matrix(A), "symmetric", "superlu")
     assert f.inertia == 1
     assert_allclose(f.solve(np.ones(3)), [0.5, 0.5, 1.0 / 3.0], rtol=1e-14)
+
+
+def test_unsymmetric_matrix_keeps_its_inertia_unknown():
+    """A slightly unsymmetric matrix given as "symmetric" whose diagonal pivots break down
+    (a zero leading pivot): solved by LU with partial pivoting (numpy ``solve`` as reference),
+    and its inertia is None — the eigenvalues of one triangle say nothing of it."""
+    A = np.array([[0.0, 1.0, 0.0], [1.001, 2.0, 0.5], [0.0, 0.5, 3.0]])
+    f = factor(sp.csr_matrix(A), "symmetric")
+    assert not f.is_singular and f.inertia is None
+    b = np.array([1.0, -2.0, 0.5])
+    assert_allclose(f.solve(b), np.linalg.solve(A, b), rtol=1e-13)

@@ -60,3 +60,16 @@ def test_a_load_against_gravity_is_refused():
         trussfe.modes(_bar((981.0, 0.0)), count=1, mass_from="payload")
     with pytest.raises(trussfe.InputError, match="gravity direction"):
         trussfe.modes(_bar((-981.0, 0.0), gravity=(0.0, 0.0)), count=1, mass_from="payload")
+
+
+def test_load_against_gravity_names_file_case_and_node(tmp_path, capsys):
+    """The refusal names the model file, the case's loads and the node by its id (the
+    payload is at node B)."""
+    from trussfe.io.model_writer import write_model
+    s = _bar((981.0, 0.0))
+    path = tmp_path / "bar.toml"
+    write_model(s, path)
+    assert main(["modes", str(path), "--mass-from", "payload"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1
+    assert "bar.toml: load_cases.payload.loads.B: a load against gravity" in err[0]

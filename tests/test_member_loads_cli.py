@@ -125,7 +125,7 @@ def test_model_format_member_load_examples_run(tmp_path, capsys):
 
 
 @pytest.mark.parametrize("command", ["simulate", "elastic", "transient", "actuators"])
-def test_motion_analyses_refuse_member_loads(command):
+def test_motion_analyses_refuse_unapplied(command):
     """An analysis along a motion applies nodal loads only: a model with member loads is
     refused in one line, never run without them."""
     import trussfe

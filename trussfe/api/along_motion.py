@@ -10,7 +10,7 @@ import numpy as np
 
 from ..io.json_document import result_json
 from ..model.bar_models import BAR_MODELS
-from .model import ModelLike, as_structure, refuse_member_loads
+from .model import ModelLike, as_structure, refuse_unapplied
 from .options import choice, positive_int, progress_callback, real
 from .numerics import numerics_checked
 from .results import Result
@@ -41,7 +41,7 @@ def elastic(model: ModelLike, *, motion=None, steps: int | None = None,
     sections : int
         Sections per member tube compared with the rigid model.
     subdivisions : int, optional
-        Elements per member (default ``sections - 1``).
+        Elements per member (default ``sections - 1``, at least 2).
 
     progress : callable, optional
         Called as ``progress(done, total)`` during the run (a progress bar; the command line
@@ -60,7 +60,7 @@ def elastic(model: ModelLike, *, motion=None, steps: int | None = None,
     sections = positive_int("--sections", sections, optional=False)
     subdivisions = positive_int("--subdivisions", subdivisions)
     progress = progress_callback(progress)
-    structure = refuse_member_loads(as_structure(model), "elastic")
+    structure = refuse_unapplied(as_structure(model), "elastic")
     mot = load_motion_for(structure, motion, steps)
     sim, resp, cmp = simulate_elastic(structure, mot, n_sections=sections,
                                       subdivisions=subdivisions,
@@ -116,7 +116,7 @@ def transient(model: ModelLike, *, motion, steps: int | None = None, dt: float |
     dt = real("--dt", dt, positive=True)
     t_end = real("--t-end", t_end, positive=True)
     progress = progress_callback(progress)
-    structure = refuse_member_loads(as_structure(model), "transient")
+    structure = refuse_unapplied(as_structure(model), "transient")
     mot = load_motion_for(structure, motion, steps, required=True)
     return TransientResult(structure, transient_response(
         structure, mot, bar_model=bar_model, k=subdivisions, dt=dt, t_end=t_end,

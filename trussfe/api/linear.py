@@ -157,7 +157,10 @@ def _with_case_masses(structure, name: str):
     if len(case.member_loads):
         raise InputError("--mass-from", f"load case '{name}' has member loads; only nodal "
                                         "loads are turned into masses")
-    added = masses_from_loads(case.loads, structure.gravity, f"load case '{name}'")
+    where = f"load_cases.{name}.loads" if "load_cases" in structure.extensions else "loads"
+    if structure.source:
+        where = f"{structure.source}: {where}"
+    added = masses_from_loads(case.loads, structure.gravity, where, structure.node_ids)
     return structure.with_masses(structure.masses + added)
 
 

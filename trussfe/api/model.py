@@ -107,13 +107,34 @@ def as_structure(model: ModelLike) -> Structure:
                     f"not {type(model).__name__}")
 
 
-def refuse_member_loads(structure: Structure, command: str) -> Structure:
-    """The structure, when it has no ``member_loads``; an :class:`InputError` naming the
-    command otherwise (an analysis along a motion applies nodal loads only, and must not drop
-    loads along members silently)."""
-    if structure.extensions.get("member_loads"):
-        raise InputError("member_loads", f"loads along members are applied by static and "
-                         f"buckling only, not by {command}; apply them as nodal loads")
+def refuse_unapplied(structure: Structure, command: str) -> Structure:
+    """The structure, when it has none of the tables an analysis along a motion does not
+    apply; an :class:`InputError` naming the model file, the table and the command otherwise.
+
+    An analysis along a motion (``simulate``, ``actuators``, ``elastic``, ``transient``)
+    applies the model's ``[loads]``, ``[model] gravity`` and ``[masses]``.  It refuses,
+    rather than drops:
+
+    * ``member_loads``: loads along members (static and buckling apply them);
+    * ``[load_cases]``: a model with cases gives every action in a case and none in
+      ``[loads]``, and the motion has no case to choose;
+    * ``[springs]``: elastic supports, which the rigid-body model (the motion's positions and
+      the member forces) and the response along the motion do not model.
+    """
+    source = structure.source or structure.name or "model"
+    ext = structure.extensions
+    if ext.get("member_loads"):
+        raise InputError(f"{source}: member_loads", f"loads along members are applied by "
+                         f"static and buckling only, not by {command}; apply them as nodal "
+                         "loads")
+    if ext.get("load_cases"):
+        raise InputError(f"{source}: load_cases", f"{command} applies [loads] and [model] "
+                         "gravity, not load cases: give the loads to apply as [loads] of a "
+                         "model without [load_cases]")
+    if ext.get("springs"):
+        raise InputError(f"{source}: springs", f"{command} models no elastic supports: the "
+                         "structure moves on its [supports] alone; give the springs as "
+                         "supports or remove them")
     return structure
 
 
@@ -134,4 +155,4 @@ def resolve_beside(path: str | os.PathLike, structure: Structure) -> Path:
 
 
 __all__ = ["ModelLike", "as_structure", "model_from_dict", "read_model",
-           "refuse_member_loads", "resolve_beside"]
+           "refuse_unapplied", "resolve_beside"]

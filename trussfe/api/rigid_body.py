@@ -11,7 +11,7 @@ import numpy as np
 from ..errors import InputError
 from ..io.json_document import result_json
 from ..model.structure import Structure
-from .model import ModelLike, as_structure, refuse_member_loads, resolve_beside
+from .model import ModelLike, as_structure, refuse_unapplied, resolve_beside
 from .options import choice, positive_int, progress_callback
 from .numerics import numerics_checked
 from .results import Result
@@ -59,7 +59,7 @@ def _simulate(model: ModelLike, motion, steps, scheme: str, sections: int,
     choice("--method", method, METHODS)
     sections = positive_int("--sections", sections, optional=False)
     progress = progress_callback(progress)
-    structure = refuse_member_loads(as_structure(model), "simulate")
+    structure = refuse_unapplied(as_structure(model), "simulate")
     mot = load_motion_for(structure, motion, steps)
     return structure, run(structure, mot, conventions=Conventions.from_scheme(scheme),
                           n_sections=sections, progress=progress, method=method)
@@ -136,7 +136,7 @@ def actuators(model: ModelLike, *, motion=None, steps: int | None = None) -> Act
     """
     from ..rigid import actuator as _actuator  # noqa: F401  (registers [actuators])
 
-    structure = refuse_member_loads(as_structure(model), "actuators")
+    structure = refuse_unapplied(as_structure(model), "actuators")
     if not _actuator.actuators_of(structure):
         raise InputError(structure.source or structure.name or "model",
                          "the model has no [actuators] table: give the leadscrew and motor "

@@ -14,6 +14,7 @@ import importlib
 import logging
 import os
 import pkgutil
+import re
 import signal
 import sys
 import threading
@@ -33,8 +34,20 @@ from .options import INPUT_OPTIONS, check_paths
 
 
 
+#: A word that is a negative number, as an option's value, not an option: argparse's own test
+#: knows ``-3`` and ``-0.5`` only, and takes ``-1e-3`` (a signed ``trace --step``) or ``-inf``
+#: for an unknown option ("expected one argument").  ``-inf`` and ``-nan`` reach the option's
+#: type, which refuses them by name.
+NEGATIVE_NUMBER = re.compile(r"^-(?:\d+\.?\d*|\.\d+)(?:e[-+]?\d+)?$|^-(?:inf|infinity|nan)$",
+                             re.IGNORECASE)
+
+
 class _Parser(argparse.ArgumentParser):
     """argparse with the contract's one-line error format and exit status 2."""
+
+    def __init__(self, *args, **kwargs) -> None:
+        super().__init__(*args, **kwargs)
+        self._negative_number_matcher = NEGATIVE_NUMBER
 
     def error(self, message: str) -> None:  # pragma: no cover - exercised via CLI tests
         # "argument --json: ..." -> "--json: ...": the option is the item at fault

@@ -29,7 +29,7 @@ def register(subparsers) -> None:
     p.add_argument("--sections", type=opt.positive_int, default=7,
                    help="sections per member tube compared with the rigid model (default 7)")
     p.add_argument("--subdivisions", type=opt.positive_int,
-                   help="elements per member (default sections - 1)")
+                   help="elements per member (default sections - 1, at least 2)")
     p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the results as JSON")
     p.add_argument("--vtk", metavar="DIR", type=opt.output_dir, help="write a .pvd time series")
     p.set_defaults(func=_run)

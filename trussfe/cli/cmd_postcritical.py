@@ -9,6 +9,7 @@ given here override them).
 """
 from __future__ import annotations
 
+import logging
 import sys
 from pathlib import Path
 
@@ -117,7 +118,9 @@ def _main(args) -> int:
     if over is not None:
         mem, lam, pe = over
         s = result.model.structure
-        sys.stderr.write(f"trussfe: note: member buckling is not modelled (no [failure] "
-                         f"table); member {s.member_ids[mem]} exceeds its Euler load "
-                         f"{pe:.4g} N from load factor {lam:.6g}\n")
+        # held with the run's warnings: printed once the outputs are in place, never beside
+        # an error line
+        logging.getLogger("trussfe").warning(
+            "note: member buckling is not modelled (no [failure] table); member %s exceeds "
+            "its Euler load %.4g N from load factor %.6g", s.member_ids[mem], pe, lam)
     return 0

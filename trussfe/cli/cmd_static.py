@@ -14,8 +14,25 @@ import numpy as np
 from .. import api
 from ..model.bar_models import BAR_MODELS
 from ..fem.static import StaticResult
+from ..errors import InputError
 from ..io.output import write_json
 from . import options as opt
+
+
+#: Names ``--vtk`` accepts: a ``.vtu`` file, or for several load cases the ``.pvd``
+#: collection (written as ``OUT.pvd`` beside ``OUT_case_NAME.vtu`` either way).
+VTK_SUFFIXES = (".vtu", ".pvd")
+
+
+def _vtk_output(value: str) -> str:
+    """``--vtk``: an output file whose name ends in ``.vtu`` or ``.pvd``, checked with the other
+    outputs before the model is read."""
+    opt.output_file(value)
+    if Path(value).suffix not in VTK_SUFFIXES:
+        raise argparse.ArgumentTypeError(
+            f"'{value}' must end in .vtu (or .pvd for the load cases of a model with "
+            "[load_cases])")
+    return value
 
 
 def register(subparsers) -> None:
@@ -29,8 +46,9 @@ def register(subparsers) -> None:
     p.add_argument("--subdivisions", type=opt.positive_int, default=None, metavar="K",
                    help="elements per frame member (default 4)")
     p.add_argument("--solver", choices=("auto", "superlu", "pardiso"), default="auto",
-                   help="sparse linear solver (default: PARDISO for large models when "
-                   "installed, else SuperLU)")
+                   help="linear solver (default auto: a banded Cholesky for chains of 5,000 "
+                   "DOFs or more, PARDISO for 20,000 DOFs or more when installed, else "
+                   "SuperLU)")
     which = p.add_mutually_exclusive_group()
     which.add_argument("--case", metavar="NAME", default=None,
                        help="analyse one load case ([load_cases.NAME])")
@@ -40,7 +58,7 @@ def register(subparsers) -> None:
                        help="every load case and combination with their envelope (the "
                        "default for a model with [load_cases])")
     p.add_argument("--json", metavar="OUT", type=opt.output_file, help="write the results as JSON")
-    p.add_argument("--vtk", metavar="OUT.vtu", type=opt.output_file,
+    p.add_argument("--vtk", metavar="OUT.vtu", type=_vtk_output,
                    help="write the deformed-shape fields as VTU (several cases: OUT.pvd and "
                    "one OUT_case_NAME.vtu / OUT_combination_NAME.vtu each)")
     p.set_defaults(func=_main)
@@ -178,8 +196,22 @@ def _collection_table(res) -> str:
     return "\n".join(lines)
 
 
+def _one_case(args: argparse.Namespace, structure) -> bool:
+    """Whether the run solves one case (one ``.vtu``) rather than every load case (a
+    ``.pvd`` collection), as :func:`trussfe.static` decides."""
+    if args.case is not None or args.combination is not None:
+        return True
+    return not args.all_cases and "load_cases" not in structure.extensions
+
+
 def _main(args: argparse.Namespace) -> int:
-    res = api.static(args.model, bar_model=args.bar_model, subdivisions=args.subdivisions,
+    model = api.read_model(args.model)
+    if args.vtk and Path(args.vtk).suffix == ".pvd" and _one_case(args, model):
+        # refused before the analysis, not after it
+        raise InputError("--vtk", f"'{args.vtk}': one case is written as one .vtu file; give "
+                                  "a name ending in .vtu (a .pvd collection is written for the "
+                                  "load cases of a model with [load_cases], or with --all)")
+    res = api.static(model, bar_model=args.bar_model, subdivisions=args.subdivisions,
                      solver=args.solver, case=args.case, combination=args.combination,
                      all_cases=args.all_cases)
     doc = res.to_dict() if args.json else None

@@ -25,7 +25,7 @@ def register(subparsers) -> None:
         "on a local Dask cluster or a running Dask scheduler; results as a Parquet table.")
     p.add_argument("study", type=opt.input_file, help="study file (TOML, docs/studies.md)")
     p.add_argument("--out", metavar="DIR", type=opt.output_dir, default=None,
-                   help="results folder (default: STUDY-results beside the current folder)")
+                   help="results folder (default: STUDY-results in the current folder)")
     p.add_argument("--scheduler", metavar="ADDRESS", default=None,
                    help="address of a running Dask scheduler (default: a local cluster)")
     p.add_argument("--workers", metavar="N", type=opt.positive_int, default=None,

@@ -107,12 +107,14 @@ def _first_existing(path: Path) -> Path:
     return p
 
 
-def _probe_folder(folder: Path, shown: str) -> None:
-    """Create and remove a hidden file in ``folder``: the only test a root user cannot fool."""
+def _probe_folder(folder: Path, value: str) -> None:
+    """Create and remove a hidden file in ``folder``, where ``value`` (the path given) is to be
+    written or its missing folders created: the only test a root user cannot fool."""
     try:
         fd, tmp = tempfile.mkstemp(prefix=".trussfe-probe.", dir=folder)
     except OSError as exc:
-        raise argparse.ArgumentTypeError(f"cannot write to '{shown}': "
+        where = "" if Path(value) in (folder, folder.resolve()) else f" (for '{value}')"
+        raise argparse.ArgumentTypeError(f"cannot write in the folder '{folder}'{where}: "
                                          f"{exc.strerror or exc}") from None
     os.close(fd)
     os.unlink(tmp)
@@ -142,7 +144,7 @@ def _check_output(value: str, *, folder: bool) -> str:
     if not base.is_dir():
         raise argparse.ArgumentTypeError(f"'{base}' is not a folder, so '{value}' cannot be "
                                          "created")
-    _probe_folder(base, str(base))
+    _probe_folder(base, value)
     return value
 
 

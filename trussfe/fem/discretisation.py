@@ -498,8 +498,9 @@ class FEModel:
                        else "--bar-model pinned-beam makes bars bend")
                 if name in ("area", "E"):
                     why = "every member needs it"
-                raise InputError(owner, f"{name} is missing or not positive (member "
+                err = InputError(owner, f"{name} is missing or not positive (member "
                                  f"{s.member_ids[i]}); {why}: give a positive {name}")
+                raise err.with_file(s.source) if s.source else err
 
     def _group(self, kind, els, h, ends, emem, released) -> dict:
         """Bases, field layout, ``S``, ``G`` and ``T`` of one element group."""

@@ -416,10 +416,18 @@ def _superlu_symmetric(M: sp.csr_matrix) -> Factor:
     # off-diagonal pivoting, or a diagonal pivot at round-off: the pivots no longer give the
     # inertia, and only partial pivoting tells a breakdown from a singular matrix
     out = _superlu(M, "symmetric")
-    if not out.is_singular:
-        out.inertia = (int(np.sum(sla.eigvalsh(K.toarray()) < 0))
-                       if n <= INERTIA_DENSE_LIMIT else None)
+    if not out.is_singular and n <= INERTIA_DENSE_LIMIT and _symmetric(K):
+        out.inertia = int(np.sum(sla.eigvalsh(K.toarray()) < 0))
     return out
+
+
+def _symmetric(K: sp.spmatrix) -> bool:
+    """Whether ``K`` is symmetric to round-off (1e-12 of its largest entry): only then do the
+    eigenvalues of one triangle give its inertia.  An unsymmetric matrix given as
+    ``"symmetric"`` (the tangent of a 3-D beam under a moment of fixed direction, slightly
+    unsymmetric) keeps its inertia unknown."""
+    scale = abs(K).max() if K.nnz else 0.0
+    return scale == 0.0 or abs(K - K.T).max() <= 1e-12 * scale
 
 
 def _pardiso(M: sp.csr_matrix, kind: str, points: Points | None = None) -> Factor:

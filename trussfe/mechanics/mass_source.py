@@ -10,12 +10,15 @@ self-weight (``gravity = true``) adds nothing here.
 """
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import numpy as np
 
 from ..errors import InputError
 
 
-def masses_from_loads(loads: np.ndarray, gravity: np.ndarray, item: str) -> np.ndarray:
+def masses_from_loads(loads: np.ndarray, gravity: np.ndarray, item: str,
+                      node_ids: Sequence[str] | None = None) -> np.ndarray:
     """Lumped node masses equivalent to the nodal loads along gravity.
 
     Parameters
@@ -26,6 +29,8 @@ def masses_from_loads(loads: np.ndarray, gravity: np.ndarray, item: str) -> np.n
         Gravitational acceleration, m/s² (not zero).
     item : str
         Names the load case in error messages.
+    node_ids : sequence of str, optional
+        Node ids, which name the node of a load against gravity (else its index).
 
     Returns
     -------
@@ -53,6 +58,7 @@ def masses_from_loads(loads: np.ndarray, gravity: np.ndarray, item: str) -> np.n
     scale = max(float(np.abs(loads).max(initial=0.0)), 1e-300)
     up = np.flatnonzero(along < -1e-12 * scale)
     if up.size:
-        raise InputError(item, f"node {up[0]}: a load against gravity ({along[up[0]]:.6g} N) "
-                               "is no mass")
+        node = node_ids[up[0]] if node_ids is not None else str(up[0])
+        raise InputError(f"{item}.{node}", f"a load against gravity ({along[up[0]]:.6g} N) is "
+                                           "no mass: --mass-from takes loads along gravity")
     return np.maximum(along, 0.0) / size
