@@ -439,7 +439,7 @@ def _with_loaded_stations(fe: FEModel, stations: tuple, max_vm: np.ndarray) -> n
     if lm.size == 0:
         return max_vm
     s = fe.structure
-    vm = _section_stresses(s, lF, lm)
+    vm = station_stresses(s, lF, lm)
     unknown = np.isfinite(lx) & ~np.isfinite(vm.s2)
     if np.any(unknown):
         i = int(lm[np.flatnonzero(unknown.any(axis=1))[0]])
@@ -452,7 +452,7 @@ def _with_loaded_stations(fe: FEModel, stations: tuple, max_vm: np.ndarray) -> n
     return out
 
 
-def _section_stresses(s: Structure, F: np.ndarray, members: np.ndarray | None = None):
+def station_stresses(s: Structure, F: np.ndarray, members: np.ndarray | None = None):
     """Von Mises stresses (Lacy eqs. 2.24, 2.25; :func:`trussfe.mechanics.stress.von_mises`)
     of section forces ``F`` (member, station, 6) of the ``members`` (all by default)."""
     pick = slice(None) if members is None else members
@@ -472,7 +472,7 @@ def _stresses(fe: FEModel, F: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
             raise InputError(f"sections.{s.sections[i].name}",
                              f"c (outer-fibre distance) is missing (member {s.member_ids[i]}); "
                              "the bending stress of a beam needs it: give c")
-        vm = _section_stresses(s, F)
+        vm = station_stresses(s, F)
         return vm.s1, vm.s2
     # truss bars only: section forces are axial, so von Mises is |N|/A at S1 and S2
     # (von_mises with V = M = 0), taken directly for large pin-jointed models

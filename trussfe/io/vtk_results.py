@@ -22,23 +22,64 @@ def static_station_fields(result) -> tuple[np.ndarray, dict]:
     """Stations (fractions of the member length, NaN-padded) and the point data along
     members of a static result.
 
+    A member carrying member loads is drawn through the stations of its JSON ``stations``
+    (:func:`trussfe.fem.member_loads.loaded_member_stations`): its finite-element stations,
+    its point loads (the section just after the load) and the points where a distributed
+    load makes a shear force vanish, so that the moment between its finite-element stations
+    (that of a pin-ended bar, which has none inside) is drawn and its largest von Mises
+    stress is the member's ``max_von_mises``.  The displacement at a station between
+    finite-element stations is interpolated linearly between them, so the deformed member
+    is drawn as through its finite-element stations.
+
     Returns
     -------
-    xi : ndarray, shape (m, kmax + 1)
+    xi : ndarray, shape (m, s)
     fields : dict
         ``displacement`` (m, s, dim), ``axial_force`` (N), ``shear_y``, ``shear_z``,
         ``torque``, ``moment_y``, ``moment_z`` (member axes, N and N·m), ``von_mises_s1``,
         ``von_mises_s2``, ``von_mises`` (Pa), each (m, s).
     """
     s = result.structure
-    xi = result.station_x / s.lengths()[:, None]
+    L = s.lengths()
+    xi = result.station_x / L[:, None]
     F = result.section_forces
+    disp = fe_disp = result.fe.station_displacements(result.u)
+    s1, s2 = result.von_mises_s1, result.von_mises_s2
+    loaded = getattr(result, "loaded_stations", None)
+    if loaded is not None and np.size(loaded[0]):
+        from ..fem.static import station_stresses      # the von Mises of the JSON stations
+        lm, lx, lF = loaded
+        lm = np.asarray(lm, dtype=int)
+        width = max(xi.shape[1], lx.shape[1])
+
+        def widen(a):
+            out = np.full((a.shape[0], width) + a.shape[2:], np.nan)
+            out[:, : a.shape[1]] = a
+            return out
+
+        xi, F, disp, s1, s2 = (widen(a) for a in (xi, F, disp, s1, s2))
+        vm = station_stresses(s, lF, lm)
+        for r, i in enumerate(lm):
+            ok = np.isfinite(lx[r])
+            x = lx[r, ok]
+            fe_x = result.station_x[i]
+            fe_ok = np.isfinite(fe_x)
+            d = np.stack([np.interp(x, fe_x[fe_ok], fe_disp[i, fe_ok, c])
+                          for c in range(fe_disp.shape[2])], axis=-1)
+            for a in (xi, F, disp, s1, s2):
+                a[i] = np.nan
+            n = x.size
+            xi[i, :n] = x / L[i]
+            F[i, :n] = lF[r, ok]
+            disp[i, :n] = d
+            s1[i, :n] = vm.s1[r, ok]
+            s2[i, :n] = vm.s2[r, ok]
     names = ("axial_force", "shear_y", "shear_z", "torque", "moment_y", "moment_z")
     fields = {n: F[:, :, i] for i, n in enumerate(names)}
-    fields["displacement"] = result.fe.station_displacements(result.u)
-    fields["von_mises_s1"] = result.von_mises_s1
-    fields["von_mises_s2"] = result.von_mises_s2
-    fields["von_mises"] = np.fmax(result.von_mises_s1, result.von_mises_s2)
+    fields["displacement"] = disp
+    fields["von_mises_s1"] = s1
+    fields["von_mises_s2"] = s2
+    fields["von_mises"] = np.fmax(s1, s2)
     return xi, fields
 
 

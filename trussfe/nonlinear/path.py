@@ -90,7 +90,31 @@ class PathPoint:
 
 @dataclass
 class Event:
-    """An event on the path: a member failure, a critical point or the mechanism hand-over."""
+    """An event on the path: a member failure, a critical point or the mechanism hand-over.
+
+    Attributes
+    ----------
+    kind : str
+        ``"buckling"``, ``"yield"``, ``"fracture"`` (a member reached its failure law's
+        limit), ``"limit_point"``, ``"bifurcation"`` (a critical point: the number of negative
+        eigenvalues of the tangent changed), ``"mechanism"`` (the failed structure became a
+        mechanism and the path follows its motion), ``"equilibrium_form"`` (that motion
+        reached an equilibrium) or ``"end"`` (the path stopped early; the reason is in
+        ``detail``).
+    load_factor : float
+        λ at the event.
+    member : int or None
+        Index of the member that failed (failure events), else None.
+    point : int
+        Index of the path point at the event (``PathResult.path``), −1 when not recorded.
+    force : float
+        Failure events: the member's axial force at the event, N (fracture: its strain).
+    threshold : float
+        Failure events: the law's limit, N (fracture: strain).
+    detail : str
+        Text: the inertia change and load orthogonality of a critical point, the reason of an
+        end.
+    """
 
     kind: str
     load_factor: float
