@@ -64,35 +64,17 @@ def register(subparsers) -> None:
     p.set_defaults(func=_main)
 
 
-def write_vtu(path: str | Path, result: StaticResult) -> None:
-    """Undeformed mesh with point data ``displacement`` and ``reaction`` and cell data
-    ``axial_force``, ``axial_stress``, ``strain``, ``von_mises`` (written atomically)."""
-    from ..io.vtk import write_vtu as _write_vtu    # meshio: only when a VTU is asked for
-
-    s = result.structure
-    dim = s.dim
-    point_data = {"displacement": result.displacements[:, :dim],
-                  "reaction": result.reactions[:, :dim]}
-    cell_data = {"axial_force": result.axial_force, "axial_stress": result.axial_stress,
-                 "strain": result.strain, "von_mises": result.max_von_mises}
-    _write_vtu(path, s, point_data=point_data, cell_data=cell_data)
-
-
-def write_stations_vtu(path: str | Path, result: StaticResult) -> Path | None:
-    """``OUT_stations.vtu`` beside ``OUT.vtu``: the section forces along beams and loaded
-    members (None, nothing written, for a truss without member loads)."""
-    if not (np.any(result.fe.is_frame) or result.member_loads is not None):
-        return None
-    from ..io.vtk import write_stations       # meshio: only when a VTU is asked for
-    from ..io.vtk_results import static_station_fields
-    xi, fields = static_station_fields(result)
-    vtk = Path(path)
-    return write_stations(vtk.with_name(vtk.stem + "_stations.vtu"), result.structure, xi,
-                          point_data=fields)
+def write_vtk(path: str | Path, result: StaticResult) -> None:
+    """``OUT.vtu`` and, for beams and loaded members, ``OUT_stations.vtu`` beside it
+    (:func:`trussfe.io.vtk_results.write_static`; nothing along the members of a truss
+    without member loads)."""
+    from ..io.vtk_results import write_static    # meshio: only when a VTU is asked for
+    write_static(path, result, stations=bool(np.any(result.fe.is_frame)
+                                             or result.member_loads is not None))
 
 
 def write_collection(path: str | Path, solution) -> Path:
-    """``OUT.pvd`` listing one ``.vtu`` (as :func:`write_vtu`) per case and combination of a
+    """``OUT.pvd`` listing one ``.vtu`` (as :func:`write_vtk`) per case and combination of a
     :class:`~trussfe.fem.load_cases.LoadCaseSolution`: ``OUT_case_NAME.vtu``,
     ``OUT_combination_NAME.vtu`` beside it (characters other than letters, digits, ``-``,
     ``_`` and ``.`` of a name become ``_``)."""
@@ -113,8 +95,7 @@ def write_collection(path: str | Path, solution) -> Path:
         if file in used:                                 # two names alike once sanitised
             file = Path(f"{stem}_{kind}_{safe}_{i}.vtu")
         used.add(file)
-        write_vtu(file, result)
-        write_stations_vtu(file, result)
+        write_vtk(file, result)
         entries.append((i, file.name))
     return write_pvd(stem.with_suffix(".pvd"), entries)
 
@@ -219,8 +200,7 @@ def _main(args: argparse.Namespace) -> int:
     if isinstance(res, api.StaticResult):
         result = res.solution
         if args.vtk:
-            write_vtu(args.vtk, result)
-            write_stations_vtu(args.vtk, result)
+            write_vtk(args.vtk, result)
         text = _table(result)
         if res.selected is not None:
             kind, name = res.selected

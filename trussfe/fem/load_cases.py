@@ -109,22 +109,45 @@ def prescribed_vector(fe: FEModel, case: LoadCase) -> np.ndarray | None:
     lost = (P != 0.0) & (dofs < 0)
     if np.any(lost):
         i, c = np.argwhere(lost)[0]
-        raise InputError(f"load_cases.{case.name}.prescribed.{s.node_ids[i]}",
-                         f"rotation {DOF_NAMES[s.dim][c]} is prescribed at a pin joint that "
-                         "has no rotational freedom; attach a beam without a release or "
-                         "remove it")
+        raise _in_file(s, InputError(f"load_cases.{case.name}.prescribed.{s.node_ids[i]}",
+                                     f"rotation {DOF_NAMES[s.dim][c]} is prescribed at a pin "
+                                     "joint that has no rotational freedom; attach a beam "
+                                     "without a release or remove it"))
     up = np.zeros(fe.n_dof)
     ok = (P != 0.0) & (dofs >= 0)
     up[dofs[ok]] = P[ok]
     if np.any(up[~fe.fixed] != 0.0):
         i = int(np.flatnonzero(np.any((P != 0.0) & ~fe.fixed[np.maximum(dofs, 0)], axis=1))[0])
-        raise InputError(f"load_cases.{case.name}.prescribed.{s.node_ids[i]}",
-                         "a displacement is prescribed on a free DOF; add it to [supports]")
+        raise _in_file(s, InputError(f"load_cases.{case.name}.prescribed.{s.node_ids[i]}",
+                                     "a displacement is prescribed on a free DOF; add it to "
+                                     "[supports]"))
     return up
+
+
+def _in_file(structure: Structure, err: InputError) -> InputError:
+    """``err`` naming the model file before its item (docs/bad-input.md), when the
+    structure was read from one."""
+    return err.with_file(structure.source) if structure.source else err
+
+
+def _check_case_moments(fe: FEModel, case: LoadCase) -> None:
+    """Refuse a moment of the case's nodal loads at a pin joint (no rotational DOF), naming
+    the case's item ``load_cases.NAME.loads.ID``."""
+    s = fe.structure
+    dofs = fe.node_dofs
+    lost = (dofs < 0) & (case.loads[:, :dofs.shape[1]] != 0.0)
+    if np.any(lost):
+        i, c = np.argwhere(lost)[0]
+        raise _in_file(s, InputError(f"load_cases.{case.name}.loads.{s.node_ids[i]}",
+                                     f"a moment ({DOF_NAMES[s.dim][c]}) is applied at a pin "
+                                     "joint that has no rotational stiffness; attach a beam "
+                                     "without a release or remove the moment"))
 
 
 def case_load(fe: FEModel, case: LoadCase) -> CaseLoad:
     """The load vector, element loads and prescribed displacements of one case."""
+    if "load_cases" in fe.structure.extensions:
+        _check_case_moments(fe, case)
     f = fe.load_vector(self_weight=case.gravity, loads=case.loads)
     f_local = (fe.element_self_weight_local() if case.gravity
                else [np.zeros(g.n_local) for g in fe.groups])
