@@ -469,3 +469,13 @@ def test_a_case_acting_on_a_pin_joints_rotation_names_the_file_and_the_case(
     assert main(["static", str(f)]) == 2
     err = capsys.readouterr().err
     assert err.startswith(f"trussfe: error: {f}: {item}: ") and err.count("\n") == 1
+
+
+def test_a_moment_at_a_pin_joint_in_loads_names_the_file(tmp_path, capsys):
+    """The same moment at a pin joint given in ``[loads]`` of a model without cases: one line
+    naming the model file and ``loads.B``."""
+    f = tmp_path / "pin.toml"
+    f.write_text(PIN_TRUSS.replace("[load_cases.wind]\n", "[loads]\nB = [500.0, 0.0, 30.0]\n"))
+    assert main(["static", str(f)]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith(f"trussfe: error: {f}: loads.B: a moment") and err.count("\n") == 1

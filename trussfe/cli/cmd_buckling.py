@@ -67,7 +67,8 @@ def _table(result: BucklingResult) -> str:
     crit = result.critical_load_factor
     lines += ["", "critical load factor: " + (f"{crit:.6g}" if np.isfinite(crit) else
                                               "none among the modes computed"),
-              "", "members (Lacy eq. 2.26, C = 1)",
+              "", "members (Lacy eq. 2.26, C = 1; N at mid-length, utilisation = largest "
+              "compression along the member / P_euler)",
               f"{'id':>8}  {'N [N]':>12}  {'P_euler [N]':>12}  {'utilisation':>12}"]
     for i, mid in enumerate(s.member_ids):
         lines.append(f"{mid:>8}  {result.static.axial_force[i]:12.4f}  "

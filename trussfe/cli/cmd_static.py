@@ -13,7 +13,7 @@ import numpy as np
 
 from .. import api
 from ..model.bar_models import BAR_MODELS
-from ..fem.static import StaticResult
+from ..fem.static import StaticResult, reacting_nodes
 from ..errors import InputError
 from ..io.output import write_json
 from . import options as opt
@@ -124,14 +124,17 @@ def _table(result: StaticResult) -> str:
     hdr = "  ".join(f"{'u' + a:>12}" for a in axes) + "  " + "  ".join(
         f"{'R' + a:>12}" for a in axes)
     lines.append(f"{'id':>8}  {hdr}")
-    sup = s.supports[:, :dim].any(axis=1)
+    # reactions where a support or a spring holds the node (a spring's force on the
+    # structure, -k u, is a reaction)
+    sup = reacting_nodes(result.fe)[:, :dim].any(axis=1)
     shown = range(s.n_nodes) if s.n_nodes <= TABLE_ROWS else np.flatnonzero(sup)[:TABLE_ROWS]
     for i in shown:
         u = "  ".join(f"{x:12.4e}" for x in result.displacements[i, :dim])
         r = "  ".join(f"{x:12.4f}" for x in result.reactions[i, :dim]) if sup[i] else ""
         lines.append(f"{s.node_ids[i]:>8}  {u}  {r}".rstrip())
     if s.n_nodes > TABLE_ROWS:
-        lines.append(f"  ... supported nodes only, of {s.n_nodes}; --json has every node")
+        lines.append(f"  ... supported nodes only (supports and springs), of {s.n_nodes}; "
+                     "--json has every node")
     lines += ["", "members", f"{'id':>8}  {'N [N]':>12}  {'sigma [Pa]':>12}  "
               f"{'max vM [Pa]':>12}"]
     order = (range(s.n_members) if s.n_members <= TABLE_ROWS
@@ -168,13 +171,20 @@ def _collection_table(res) -> str:
         k = int(np.argmax(vm))
         over = env.over[:-1]
         lines += ["", f"envelope over the {env.over}",
-                  f"largest tension {mx[i]:.4f} N in member {s.member_ids[i]} ({over} "
-                  f"{env.names[imx[i]]})",
-                  f"largest compression {mn[j]:.4f} N in member {s.member_ids[j]} ({over} "
-                  f"{env.names[imn[j]]})",
+                  _extreme("tension", mx[i], s.member_ids[i], over, env.names[imx[i]]),
+                  _extreme("compression", mn[j], s.member_ids[j], over, env.names[imn[j]]),
                   f"largest von Mises {vm[k]:.4e} Pa in member {s.member_ids[k]} ({over} "
                   f"{env.names[ivm[k]]})"]
     return "\n".join(lines)
+
+
+def _extreme(kind: str, force: float, member: str, over: str, name: str) -> str:
+    """The envelope's line of the largest tension (force > 0) or compression (force < 0):
+    where no member is in that state in any case, it says so instead of calling the least
+    compressive force a tension."""
+    if (force > 0.0) if kind == "tension" else (force < 0.0):
+        return f"largest {kind} {force:.4f} N in member {member} ({over} {name})"
+    return f"no member in {kind} in any {over}"
 
 
 def _one_case(args: argparse.Namespace, structure) -> bool:

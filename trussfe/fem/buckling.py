@@ -60,7 +60,8 @@ class BucklingResult:
     euler_load : ndarray, shape (m,)
         Member Euler loads (Lacy eq. 2.26), N.
     utilisation : ndarray, shape (m,)
-        Compression / Euler load (0 for members in tension).
+        Largest compression along the member / Euler load (0 for members in tension
+        everywhere): :func:`largest_compression`.
     """
 
     static: StaticResult
@@ -180,10 +181,31 @@ def solve_buckling(structure: Structure, count: int = 4, bar_model: str = "pinne
     shapes[free] = V
     shapes /= fe.largest_translations(shapes)
     pe = member_euler_loads(structure)
-    util = np.maximum(-static.axial_force, 0.0) / pe
+    util = largest_compression(static) / pe
     log.info("buckling: λ1 = %.6g (%d free DOFs)", lam[0], n)
     return BucklingResult(static=static, load_factors=lam, shapes=shapes, euler_load=pe,
                           utilisation=util)
+
+
+def largest_compression(static: StaticResult) -> np.ndarray:
+    """Largest compressive axial force along every member, N (0 where none), shape (m,).
+
+    Taken over the member's stations: its ends, the nodes of its sub-elements and, for a
+    member carrying member loads, the positions of its point loads (where the axial force
+    jumps; the value there is the one just past the load).  Under self-weight or a load along
+    a member the compression is not the midpoint force ``axial_force``: a pinned bar with an
+    axial point load below its middle is compressed under the load and carries nothing at
+    mid-length.  This is the compression of Lacy's check (Appendix A:
+    ``max(abs(min(tension)))`` over the sections), as along a motion
+    (:func:`trussfe.rigid.buckling.buckling_check`).
+    """
+    comp = np.fmax.reduce(-static.section_forces[..., 0], axis=1)
+    if static.loaded_stations is not None:
+        members, _, forces = static.loaded_stations
+        if members.size:
+            comp[members] = np.fmax(comp[members],
+                                    np.fmax.reduce(-forces[..., 0], axis=1))
+    return np.maximum(comp, 0.0)
 
 
 def buckling_json(result: BucklingResult, command: str = "buckling") -> dict:
@@ -192,8 +214,8 @@ def buckling_json(result: BucklingResult, command: str = "buckling") -> dict:
     ``load_factors`` ascending by absolute value (sign kept), ``critical_load_factor`` (the
     smallest positive one, ``null`` if none), ``modes[i]`` with ``load_factor`` and ``shape``
     (node id → translations, largest component 1), and per member the static
-    ``axial_force``, ``euler_load`` (Lacy eq. 2.26, C = 1) and ``buckling_utilisation``
-    (compression / Euler load).
+    ``axial_force`` (at mid-length), ``euler_load`` (Lacy eq. 2.26, C = 1) and
+    ``buckling_utilisation`` (largest compression along the member / Euler load).
     """
     s = result.structure
     fe = result.fe

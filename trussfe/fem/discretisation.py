@@ -971,8 +971,8 @@ class FEModel:
         return self._sum_groups(bar, lambda g: self.local_geometric_stiffness(g, N))
 
     def load_vector(self, self_weight: bool = True, nodal_loads: bool = True,
-                    gravity: np.ndarray | None = None, loads: np.ndarray | None = None
-                    ) -> np.ndarray:
+                    gravity: np.ndarray | None = None, loads: np.ndarray | None = None,
+                    item: str = "loads") -> np.ndarray:
         """Global load vector f = Tᵀ f_local + nodal loads + gravity on nodal masses.
 
         Parameters
@@ -987,6 +987,14 @@ class FEModel:
             Gravity vector (default ``structure.gravity``).
         loads : ndarray, shape (n_nodes, ndof_node), optional
             Nodal loads replacing ``structure.loads``.
+        item : str
+            The table of the nodal loads in error messages (``load_cases.NAME.loads`` for a
+            load case's).
+
+        Raises
+        ------
+        InputError
+            A moment at a pin joint (no rotational DOF), naming the file and the node.
         """
         s = self.structure
         f = np.zeros(self.n_dof)
@@ -1011,10 +1019,11 @@ class FEModel:
             if np.any(lost):
                 i, c = np.argwhere(lost)[0]
                 from ..model.structure import DOF_NAMES
-                raise InputError(f"loads.{s.node_ids[i]}",
+                err = InputError(f"{item}.{s.node_ids[i]}",
                                  f"a moment ({DOF_NAMES[s.dim][c]}) is applied at a pin joint "
                                  "that has no rotational stiffness; attach a beam without a "
                                  "release or remove the moment")
+                raise err.with_file(s.source) if s.source else err
             np.add.at(f, dofs[present], P[:, : dofs.shape[1]][present])
         return f
 

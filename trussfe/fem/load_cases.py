@@ -130,25 +130,11 @@ def _in_file(structure: Structure, err: InputError) -> InputError:
     return err.with_file(structure.source) if structure.source else err
 
 
-def _check_case_moments(fe: FEModel, case: LoadCase) -> None:
-    """Refuse a moment of the case's nodal loads at a pin joint (no rotational DOF), naming
-    the case's item ``load_cases.NAME.loads.ID``."""
-    s = fe.structure
-    dofs = fe.node_dofs
-    lost = (dofs < 0) & (case.loads[:, :dofs.shape[1]] != 0.0)
-    if np.any(lost):
-        i, c = np.argwhere(lost)[0]
-        raise _in_file(s, InputError(f"load_cases.{case.name}.loads.{s.node_ids[i]}",
-                                     f"a moment ({DOF_NAMES[s.dim][c]}) is applied at a pin "
-                                     "joint that has no rotational stiffness; attach a beam "
-                                     "without a release or remove the moment"))
-
-
 def case_load(fe: FEModel, case: LoadCase) -> CaseLoad:
     """The load vector, element loads and prescribed displacements of one case."""
-    if "load_cases" in fe.structure.extensions:
-        _check_case_moments(fe, case)
-    f = fe.load_vector(self_weight=case.gravity, loads=case.loads)
+    item = (f"load_cases.{case.name}.loads" if "load_cases" in fe.structure.extensions
+            else "loads")
+    f = fe.load_vector(self_weight=case.gravity, loads=case.loads, item=item)
     f_local = (fe.element_self_weight_local() if case.gravity
                else [np.zeros(g.n_local) for g in fe.groups])
     strained = imposed_strain_local(fe, case)

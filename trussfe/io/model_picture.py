@@ -80,6 +80,10 @@ class PictureResults:
         Nodal translations, m.
     case : str or None
         The load case or combination drawn, when the results hold several.
+    compression : ndarray, shape (m,) or None
+        Largest compression along each member, N (0 where none): over its midpoint force,
+        its end forces and its ``stations`` (point loads and self-weight make the axial
+        force vary along a member); None: the midpoint compression.
     """
 
     source: str
@@ -88,6 +92,7 @@ class PictureResults:
     max_von_mises: np.ndarray | None
     displacement: np.ndarray | None
     case: str | None = None
+    compression: np.ndarray | None = None
 
 
 def _number(value, where: str, item: str) -> float:
@@ -151,6 +156,7 @@ def results_from_document(doc, structure: Structure, where: str = "results",
         raise InputError(where, "has no 'members' table; give the --json document of "
                                 "'trussfe static'")
     force = np.empty(structure.n_members)
+    comp = np.empty(structure.n_members)
     vm = np.empty(structure.n_members)
     has_vm = True
     for i, mid in enumerate(structure.member_ids):
@@ -159,6 +165,7 @@ def results_from_document(doc, structure: Structure, where: str = "results",
             raise InputError(where, f"member '{mid}' of the model has no axial_force; are "
                                     "these the results of this model?")
         force[i] = _number(entry["axial_force"], where, f"members.{mid}.axial_force")
+        comp[i] = max(-force[i], _largest_compression(entry, where, mid), 0.0)
         if has_vm and "max_von_mises" in entry and entry["max_von_mises"] is not None:
             vm[i] = _number(entry["max_von_mises"], where, f"members.{mid}.max_von_mises")
         else:
@@ -182,7 +189,25 @@ def results_from_document(doc, structure: Structure, where: str = "results",
     command = doc.get("command", "")
     return PictureResults(source=where, command=command if isinstance(command, str) else "",
                           axial_force=force, max_von_mises=vm if has_vm else None,
-                          displacement=disp, case=case)
+                          displacement=disp, case=case, compression=comp)
+
+
+def _largest_compression(entry: dict, where: str, mid: str) -> float:
+    """Largest compression (N, positive) of a member's ``end_forces`` and ``stations`` in a
+    static document, −inf where it gives neither; as
+    :func:`trussfe.fem.buckling.largest_compression` of the result the document was written
+    from."""
+    values = []
+    ends = entry.get("end_forces")
+    if isinstance(ends, dict):
+        for end in ("start", "end"):
+            f = ends.get(end)
+            if isinstance(f, dict) and "N" in f:
+                values.append(_number(f["N"], where, f"members.{mid}.end_forces.{end}.N"))
+    stations = entry.get("stations")
+    if isinstance(stations, dict) and isinstance(stations.get("N"), list):
+        values += [_number(x, where, f"members.{mid}.stations.N") for x in stations["N"]]
+    return -min(values) if values else -np.inf
 
 
 def _one_case(doc, where: str, case: str | None) -> tuple[dict, str | None]:
@@ -217,7 +242,8 @@ def _one_case(doc, where: str, case: str | None) -> tuple[dict, str | None]:
 def utilisation(structure: Structure, results: PictureResults) -> np.ndarray:
     """Utilisation of every member: the larger of the stress ratio (largest von Mises stress
     over the yield strength, where the material gives one) and the buckling ratio
-    (compression over the member's Euler load, Lacy eq. 2.26 with pinned ends, K = 1).
+    (the largest compression along the member over its Euler load, Lacy eq. 2.26 with pinned
+    ends, K = 1).
 
     Parameters
     ----------
@@ -245,7 +271,9 @@ def utilisation(structure: Structure, results: PictureResults) -> np.ndarray:
     array([0.5])
     """
     with np.errstate(divide="ignore", invalid="ignore"):
-        buckling = np.maximum(-results.axial_force, 0.0) / member_euler_loads(structure)
+        comp = (results.compression if results.compression is not None
+                else np.maximum(-results.axial_force, 0.0))
+        buckling = comp / member_euler_loads(structure)
         stress = (results.max_von_mises / structure.yield_strength
                   if results.max_von_mises is not None else np.full(structure.n_members, np.nan))
     buckling = np.where(np.isfinite(buckling), buckling, np.nan)
