@@ -51,14 +51,46 @@ def available_memory() -> int:
 
 
 def format_bytes(n: float) -> str:
-    """``1.5e9`` → ``'1.4 GiB'``."""
+    """``1.5e9`` → ``'1.4 GiB'``; beyond 10⁶ PiB in exponent notation (``'2.6e+285 PiB'``).
+
+    Examples
+    --------
+    >>> format_bytes(1.5e9), format_bytes(3e300)
+    ('1.4 GiB', '2.66e+285 PiB')
+    """
     if not math.isfinite(n):
         return "an unbounded amount"
     for unit in ("bytes", "KiB", "MiB", "GiB", "TiB", "PiB"):
         if abs(n) < 1024 or unit == "PiB":
-            return f"{n:.0f} {unit}" if unit == "bytes" else f"{n:.1f} {unit}"
+            if unit == "bytes":
+                return f"{n:.0f} {unit}"
+            return f"{n:.1f} {unit}" if abs(n) < 1e6 else f"{n:.3g} {unit}"
         n /= 1024
     return f"{n:.1f} EiB"  # pragma: no cover
+
+
+#: Counts at or above this are written in exponent notation by :func:`count_text`.
+EXACT_COUNT_LIMIT = 10 ** 15
+
+
+def count_text(n: float) -> str:
+    """A count for a one-line message: exact with thousands separators while it is short,
+    in exponent notation from :data:`EXACT_COUNT_LIMIT` on (a time step of 1e-300 s asks for
+    a count of 300 digits, which a reader takes in as ``2.94e+300``, not digit by digit).
+
+    Integers beyond the range of floating-point numbers are written by their power of ten.
+
+    Examples
+    --------
+    >>> count_text(2940000001.0), count_text(2.94e300), count_text(10 ** 400)
+    ('2,940,000,001', '2.94e+300', 'about 1e+400')
+    """
+    if abs(n) < EXACT_COUNT_LIMIT:
+        return f"{int(n):,}"
+    try:
+        return f"{float(n):.3g}"
+    except OverflowError:           # an int beyond the largest float
+        return f"about 1e+{int(math.log10(abs(n)))}"
 
 
 def require(nbytes: float, item: str, what: str, hint: str = "") -> None:

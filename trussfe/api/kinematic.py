@@ -119,7 +119,8 @@ def trace(model: ModelLike, *, drive: str | Sequence[str], step: float | Sequenc
                         branch=branch, tolerance=tolerance, newton=not frozen,
                         progress=progress)
     return TraceResult(structure, r, options={"drive": drives, "step": steps_,
-                                              "steps": steps, "branch": branch})
+                                              "steps": steps, "branch": branch,
+                                              "tolerance": tolerance, "frozen": frozen})
 
 
 @numerics_checked
@@ -269,7 +270,7 @@ def _order_document(o) -> dict:
 class TraceResult(Result):
     """A traced finite-mechanism motion (:func:`trussfe.trace`); ``solution`` is a
     :class:`trussfe.kinematics.trace.TraceResult`.  ``options`` holds the drive, step,
-    steps and branch of the JSON document."""
+    steps, branch, tolerance and frozen of the JSON document."""
 
     command: ClassVar[str] = "trace"
     options: dict | None = None
@@ -318,8 +319,9 @@ class TraceResult(Result):
             path.append(entry)
         o = self.options or {}
         return result_json("trace", s.name, drive=o.get("drive"), step=o.get("step"),
-                               steps=o.get("steps"), branch=o.get("branch"), path=path,
-                               events=r.events)
+                           steps=o.get("steps"), branch=o.get("branch"),
+                           tolerance=o.get("tolerance"), frozen=o.get("frozen"), path=path,
+                           events=r.events)
 
 
 @dataclass(frozen=True, eq=False, repr=False)

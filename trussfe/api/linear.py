@@ -138,7 +138,7 @@ def modes(model: ModelLike, *, count: int | None = None, mass: str = "consistent
 
     return ModesResult(structure, solve_modes(structure, count=count, mass=mass,
                                               bar_model=bar_model, subdivisions=subdivisions,
-                                              progress=progress))
+                                              progress=progress), mass_from=mass_from)
 
 
 def _with_case_masses(structure, name: str):
@@ -341,6 +341,8 @@ class ModesResult(Result):
     :class:`trussfe.fem.modal.ModalResult`."""
 
     command: ClassVar[str] = "modes"
+    #: The load case whose loads along gravity added masses (``--mass-from``), if any.
+    mass_from: str | None = None
 
     @property
     def frequencies_hz(self) -> np.ndarray:
@@ -379,7 +381,15 @@ class ModesResult(Result):
 
     def _document(self) -> dict:
         from ..fem.modal import modes_json
-        return modes_json(self.solution)
+        doc = modes_json(self.solution)
+        # beside "mass": the masses of the run are the model's plus this case's payload
+        out = {}
+        for key, value in doc.items():
+            out[key] = value
+            if key == "mass":
+                out["mass_from"] = self.mass_from
+        out.setdefault("mass_from", self.mass_from)
+        return out
 
 
 @dataclass(frozen=True, eq=False, repr=False)

@@ -52,7 +52,7 @@ import numpy as np
 import scipy.sparse as sp
 from skfem import Basis, ElementLineHermite, ElementLineP1, MeshLine1, asm
 
-from ..budget import require
+from ..budget import count_text, require
 from ..errors import InputError
 from ..linalg.ordering import Points
 from ..mechanics.geometry import local_axes, member_vectors, unit_vectors
@@ -334,7 +334,8 @@ class FEModel:
         n_frame = int(np.count_nonzero(structure.is_beam)) if bar_model == "truss" else m
         n_el = n_frame * int(k) + (m - n_frame)
         require(n_el * BYTES_PER_ELEMENT, "--subdivisions",
-                f"{n_el:,} elements ({n_frame:,} frame members x {int(k):,} subdivisions)",
+                f"{count_text(n_el)} elements ({n_frame:,} frame members x "
+                f"{count_text(k)} subdivisions)",
                 "use fewer subdivisions")
         self.structure = structure
         self.bar_model = bar_model

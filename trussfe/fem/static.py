@@ -23,7 +23,7 @@ import numpy as np
 
 from ..errors import AnalysisError, InputError
 from ..io.json_document import result_json
-from ..mechanics.stress import round_sections, von_mises
+from ..mechanics.stress import station_stresses
 from ..model.member_loads import MemberLoad
 from ..model.structure import DOF_NAMES, Structure
 from ..linalg import SingularMatrixError
@@ -450,16 +450,6 @@ def _with_loaded_stations(fe: FEModel, stations: tuple, max_vm: np.ndarray) -> n
     out = max_vm.copy()
     out[lm] = np.fmax(out[lm], _largest_per_row(np.fmax(vm.s1, vm.s2)))
     return out
-
-
-def station_stresses(s: Structure, F: np.ndarray, members: np.ndarray | None = None):
-    """Von Mises stresses (Lacy eqs. 2.24, 2.25; :func:`trussfe.mechanics.stress.von_mises`)
-    of section forces ``F`` (member, station, 6) of the ``members`` (all by default)."""
-    pick = slice(None) if members is None else members
-    col = lambda a: a[pick][:, None]     # member properties against (member, station)
-    return von_mises(F[..., 0], F[..., 1], F[..., 2], F[..., 4], F[..., 5], col(s.area),
-                     col(s.Iy), col(s.Iz), col(s.c), col(s.c),
-                     col(round_sections(s.sections)))
 
 
 def _stresses(fe: FEModel, F: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

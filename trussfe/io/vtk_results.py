@@ -47,7 +47,7 @@ def static_station_fields(result) -> tuple[np.ndarray, dict]:
     s1, s2 = result.von_mises_s1, result.von_mises_s2
     loaded = getattr(result, "loaded_stations", None)
     if loaded is not None and np.size(loaded[0]):
-        from ..fem.static import station_stresses      # the von Mises of the JSON stations
+        from ..mechanics.stress import station_stresses   # as the JSON's von Mises
         lm, lx, lF = loaded
         lm = np.asarray(lm, dtype=int)
         width = max(xi.shape[1], lx.shape[1])

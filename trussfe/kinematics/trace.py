@@ -55,7 +55,7 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 
 from ..budget import require
-from ..errors import AnalysisError, InputError
+from ..errors import AnalysisError, InputError, TrussfeError
 from ..mechanics.geometry import member_lengths
 from .compatibility import anchored_bar_count, compatibility_matrix
 from .mechanism import (DENSE_LIMIT, DIVERGENCE_MESSAGE, StepResult, _augmented_tangent,
@@ -773,8 +773,11 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
                     names)
     # every state is kept (coordinates, and the per-state record of the JSON document)
     n = np.shape(coords)[0]
-    require(float(steps) * (BYTES_PER_STATE_NODE * n + 2048), "--steps",
-            f"a trace of {steps:,} states of {n:,} nodes", "trace fewer steps")
+    from ..budget import count_text
+    # (an integer count beyond the largest float needs unbounded memory)
+    states = float(steps) if steps < 1e300 else float("inf")
+    require(states * (BYTES_PER_STATE_NODE * n + 2048), "--steps",
+            f"a trace of {count_text(steps)} states of {n:,} nodes", "trace fewer steps")
     trace = _Trace(setup, branch, tolerance, max_iterations, newton)
     for k in range(1, steps + 1):
         if progress is not None:
@@ -810,6 +813,32 @@ def trace_structure(structure, drive: str | list[str], step, steps: int, **kwarg
                                         "drive a free coordinate of a moving joint")
         drives.append(i * dim + axes.index(axis))
     names = [f"{nid}:{ax}" for nid in structure.node_ids for ax in "xyz"[:dim]]
-    return trace_mechanism(structure.coords, structure.connectivity,
-                           ~structure.translation_supports, drives, step, steps, names=names,
-                           **kwargs)
+    try:
+        return trace_mechanism(structure.coords, structure.connectivity,
+                               ~structure.translation_supports, drives, step, steps,
+                               names=names, **kwargs)
+    except TrussfeError as err:
+        raise _in_model_terms(err, structure.source) from None
+
+
+#: Items of :func:`trace_mechanism`'s errors that are options of ``trussfe trace`` (and of
+#: :func:`trussfe.trace`), spelt as the command line spells them.
+_OPTION_ITEMS = {"drive": "--drive", "step": "--step", "steps": "--steps", "branch": "--branch"}
+
+
+def _in_model_terms(err: TrussfeError, source: str) -> TrussfeError:
+    """``err`` of :func:`trace_mechanism` as a user of a model file reads it: a bare option
+    item spelt as the option, and the model file named first (its geometry is what the
+    drive, the branch or a step could not be applied to).  Memory refusals of an option
+    (``--steps``) are the option's alone and are left as they are."""
+    if err.item.startswith("--"):
+        return err
+    item = _OPTION_ITEMS.get(err.item, err.item)
+    if item != err.item:
+        renamed = type(err).__new__(type(err))
+        TrussfeError.__init__(renamed, item, err.message)
+        for k, v in err.__dict__.items():
+            if k not in ("item", "message", "args"):
+                setattr(renamed, k, v)
+        err = renamed
+    return err.with_file(source) if source else err

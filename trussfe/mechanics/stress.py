@@ -31,8 +31,12 @@ the member frame.  Neither form has a torsion term (the thesis has none).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
+
+if TYPE_CHECKING:
+    from ..model.structure import Structure
 
 #: Ways of combining the section forces into the outer-fibre von Mises stress S2.
 CONVENTIONS = ("combined", "lacy-per-axis")
@@ -146,3 +150,15 @@ def round_sections(sections: list) -> np.ndarray:
     seen: dict[int, bool] = {}
     return np.fromiter((seen.setdefault(id(s), bool(s.is_tube)) for s in sections),
                        dtype=bool, count=len(sections))
+
+
+def station_stresses(s: "Structure", F: np.ndarray,
+                     members: np.ndarray | None = None) -> SectionStresses:
+    """Von Mises stresses (Lacy eqs. 2.24, 2.25; :func:`von_mises`) of the section forces
+    ``F`` (member, station, 6: N, Vy, Vz, T, My, Mz) of the ``members`` of ``s`` (all by
+    default), with their sections' areas, second moments, outer-fibre distances and shapes."""
+    pick = slice(None) if members is None else members
+    col = lambda a: a[pick][:, None]     # member properties against (member, station)
+    return von_mises(F[..., 0], F[..., 1], F[..., 2], F[..., 4], F[..., 5], col(s.area),
+                     col(s.Iy), col(s.Iz), col(s.c), col(s.c),
+                     col(round_sections(s.sections)))

@@ -51,8 +51,14 @@ def _members(items, cls, table: str, m: int) -> tuple:
     return out
 
 
-def freeze_extensions(tables: Mapping[str, Any], n_members: int) -> Mapping[str, Any]:
+def freeze_extensions(tables: Mapping[str, Any], n_members: int,
+                      node_shape: tuple[int, int] | None = None) -> Mapping[str, Any]:
     """Check the extension tables of a model of ``n_members`` members, as a read-only mapping.
+
+    ``node_shape`` = (nodes, DOFs per node), when given, is the shape every per-node table
+    (a load case's ``loads`` and ``prescribed``, the ``springs``) must have; a case's
+    ``(nodes, dim)`` loads or prescribed values (no moments, no rotations) are widened to it,
+    as :meth:`trussfe.model.structure.Structure.with_loads` widens loads.
 
     Lists become tuples; a ``None`` value drops the table; a ``postcritical`` dict becomes
     :class:`PostcriticalSettings`.
@@ -82,11 +88,15 @@ def freeze_extensions(tables: Mapping[str, Any], n_members: int) -> Mapping[str,
             if not isinstance(value, PostcriticalSettings):
                 raise TypeError("extensions['postcritical']: expected PostcriticalSettings")
         elif key == "load_cases":
-            value = check_load_cases(value, n_members)
+            value = check_load_cases(value, n_members, node_shape)
         elif key in ("springs", "rotary_inertia"):
             cls = Springs if key == "springs" else RotaryInertia
             if not isinstance(value, cls):
                 raise TypeError(f"extensions[{key!r}]: expected {cls.__name__}")
+            if key == "springs" and node_shape is not None \
+                    and value.stiffness.shape != tuple(node_shape):
+                raise ValueError(f"extensions['springs']: stiffness has shape "
+                                 f"{value.stiffness.shape}, expected {tuple(node_shape)}")
         else:
             raise ValueError(f"unknown extension table {key!r}; valid: "
                              f"{', '.join(EXTENSION_TABLES)}")

@@ -232,13 +232,20 @@ def model_load_cases(structure: Any) -> LoadCases:
                                          "member_loads", ()))),))
 
 
-def check_load_cases(value: Any, n_members: int) -> LoadCases:
-    """``value`` as :class:`LoadCases` of a model of ``n_members`` members (for
-    :func:`trussfe.model.extensions.freeze_extensions`)."""
+def check_load_cases(value: Any, n_members: int,
+                     node_shape: tuple[int, int] | None = None) -> LoadCases:
+    """``value`` as :class:`LoadCases` of a model of ``n_members`` members and, when given,
+    ``node_shape`` = (nodes, DOFs per node) (for
+    :func:`trussfe.model.extensions.freeze_extensions`): a case's loads and prescribed values
+    of shape (nodes, d) with d < DOFs per node are widened with zeros (forces without
+    moments, translations without rotations); any other shape is refused."""
     if isinstance(value, Mapping):
         value = LoadCases(**value)
     if not isinstance(value, LoadCases):
         raise TypeError("extensions['load_cases']: expected LoadCases")
+    if node_shape is not None:
+        value = replace(value, cases=tuple(_node_tables(c, tuple(node_shape))
+                                                       for c in value.cases))
     for c in value.cases:
         for key in ("delta_T", "initial_strain", "length_error"):
             a = getattr(c, key)
@@ -246,3 +253,20 @@ def check_load_cases(value: Any, n_members: int) -> LoadCases:
                 raise ValueError(f"extensions['load_cases']: case {c.name}: {key} has shape "
                                  f"{a.shape}, expected ({n_members},)")
     return value
+
+
+def _node_tables(case: LoadCase, shape: tuple[int, int]) -> LoadCase:
+    """``case`` with its ``loads`` and ``prescribed`` of ``shape`` (see
+    :func:`check_load_cases`)."""
+    changed = {}
+    for key in ("loads", "prescribed"):
+        a = getattr(case, key)
+        if a is None or a.shape == shape:
+            continue
+        if a.ndim != 2 or a.shape[0] != shape[0] or a.shape[1] > shape[1]:
+            raise ValueError(f"extensions['load_cases']: case {case.name}: {key} has shape "
+                             f"{a.shape}, expected {shape}")
+        wide = np.zeros(shape)
+        wide[:, : a.shape[1]] = a
+        changed[key] = wide
+    return replace(case, **changed) if changed else case

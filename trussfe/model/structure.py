@@ -160,7 +160,7 @@ class Structure:
         put(self, "loads", _frozen_array(self.loads, float, (n, ndof), "loads"))
         put(self, "masses", _frozen_array(self.masses, float, (n,), "masses"))
         put(self, "gravity", _frozen_array(self.gravity, float, (dim,), "gravity"))
-        put(self, "extensions", freeze_extensions(self.extensions, m))
+        put(self, "extensions", freeze_extensions(self.extensions, m, (n, ndof)))
         put(self, "_properties", properties if properties is not None
             else member_properties(sections, materials, member_groups))
         put(self, "_node_index", None)

@@ -20,11 +20,14 @@ them)::
 """
 from __future__ import annotations
 
+import inspect
 import logging
+import math
 from pathlib import Path
 
 import numpy as np
 
+from ..budget import require
 from ..errors import AnalysisError
 from ..io.extension_tables import AXES, parse_monitor
 from ..io.json_document import result_json
@@ -63,6 +66,8 @@ def run_postcritical(structure: Structure, **options) -> PathResult:
                            subdivisions=opts.pop("subdivisions",
                                                   DEFAULT_POSTCRITICAL_SUBDIVISIONS), laws=laws,
                            subdivisions_item=_subdivisions_item(structure, given))
+    _require_path_memory(model, opts.get("steps", _DEFAULT_STEPS),
+                         _steps_item(structure, given))
     imperfection = opts.pop("imperfection", 0.0)
     if imperfection:
         _, modes = linear_buckling(model, count=1)
@@ -75,6 +80,51 @@ def run_postcritical(structure: Structure, **options) -> PathResult:
     if len(result.path) < 2 and result.termination.startswith("path cannot"):
         raise AnalysisError(structure.source or structure.name, result.termination)
     return result
+
+
+#: Steps of a path when neither the option nor ``[postcritical]`` gives them
+#: (:func:`~trussfe.nonlinear.path.follow_path`'s default).
+_DEFAULT_STEPS = inspect.signature(follow_path).parameters["steps"].default
+
+#: Bytes kept per path point and DOF: the displacement vector, its entries in the JSON
+#: document (a Python float in a list, then its text) and in the ``--vtk`` frame.
+BYTES_PER_POINT_DOF = 96
+#: ... per path point and member: axial force, alive flag, stress and failure flags.
+BYTES_PER_POINT_MEMBER = 64
+#: ... per path point: the point's record and its JSON entry.
+BYTES_PER_POINT = 1024
+
+
+def path_bytes(model: NonlinearModel, steps: float) -> float:
+    """Estimated memory of the points of a path of ``steps`` steps: every step keeps one
+    point (and the start state one), with the displacements of all DOFs and the member
+    forces (:class:`~trussfe.nonlinear.path.PathPoint`), which the JSON document and the
+    ``--vtk`` series write out again."""
+    s = model.structure
+    per_point = (BYTES_PER_POINT_DOF * model.ndof + BYTES_PER_POINT_MEMBER * s.n_members
+                 + BYTES_PER_POINT)
+    # an integer count beyond the largest float asks for unbounded memory
+    points = float(steps) + 1.0 if steps < 1e300 else math.inf
+    return points * per_point
+
+
+def _require_path_memory(model: NonlinearModel, steps, item: str) -> None:
+    """Refuse, before the first step, a number of steps whose path points cannot all be
+    kept (:func:`trussfe.budget.require`): a path stops early only at an event, so the
+    steps asked for are what it may store."""
+    from ..budget import count_text
+    s = model.structure
+    require(path_bytes(model, steps), item,
+            f"a path of {count_text(steps)} steps ({s.n_nodes:,} nodes, {model.ndof:,} DOFs, "
+            f"{s.n_members:,} members per point)", "use fewer steps")
+
+
+def _steps_item(structure: Structure, given: dict) -> str:
+    """What gave the number of steps, to name when it is refused: the option, else the
+    model file's ``[postcritical]`` table."""
+    if "steps" in given:
+        return "--steps"
+    return ": ".join(filter(None, (structure.source, "postcritical.steps")))
 
 
 def _subdivisions_item(structure: Structure, given: dict) -> str:

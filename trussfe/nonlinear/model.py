@@ -42,7 +42,7 @@ import logging
 
 import numpy as np
 
-from ..budget import require
+from ..budget import count_text, require
 from ..errors import InputError
 from ..mechanics.geometry import member_lengths, member_vectors
 from ..model.bar_models import BAR_MODELS, DEFAULT_POSTCRITICAL_SUBDIVISIONS
@@ -119,8 +119,8 @@ class NonlinearModel:
         n_beam = int(np.count_nonzero(beam_members))
         n_el = n_beam * int(subdivisions)
         require(n_el * BYTES_PER_BEAM_ELEMENT[s.dim], subdivisions_item,
-                f"{n_el:,} co-rotational beam elements ({n_beam:,} beam members x "
-                f"{int(subdivisions):,} subdivisions)", "use fewer subdivisions")
+                f"{count_text(n_el)} co-rotational beam elements ({n_beam:,} beam members x "
+                f"{count_text(subdivisions)} subdivisions)", "use fewer subdivisions")
         # the co-rotational elements are Euler–Bernoulli beams under nodal loads: refuse what
         # they would otherwise silently drop
         if s.extensions.get("member_loads"):

@@ -37,12 +37,13 @@ from __future__ import annotations
 import logging
 from dataclasses import dataclass, field, replace
 
+from collections.abc import Sequence
 from typing import Callable
 
 import numpy as np
 
 from ..budget import along_motion_bytes, require
-from ..errors import AnalysisError, InputError
+from ..errors import AnalysisError, InputError, MechanismError, TrussfeError
 from ..fem.discretisation import FEModel, discretise
 from ..fem.solver import factorise, solve_free
 from ..linalg import SingularMatrixError
@@ -52,6 +53,7 @@ from ..model.structure import Structure
 from ..rigid.forces import MemberBodies, member_bodies
 from ..rigid.kinematics import Kinematics
 from ..rigid.sections import SectionForces
+from ..budget import count_text
 from .loads import MotionLoads, element_load_components, motion_loads, rotations3
 
 log = logging.getLogger(__name__)
@@ -123,21 +125,57 @@ class ElasticResponse:
     options: dict = field(default_factory=dict)
 
 
+def copy_ids(ids, copies: int) -> list[str]:
+    """Ids of the items of ``copies`` disjoint copies: ``ID@i`` for copy ``i``, or the ids
+    themselves for one copy (a single step is named as the model names it)."""
+    if copies == 1:
+        return list(ids)
+    return [f"{x}@{i}" for i in range(copies) for x in ids]
+
+
+def step_item(item: str, step: int, time: float) -> str:
+    """``item`` narrowed to one step of a motion: ``"m.toml: step 3 (t = 0.18 s)"``."""
+    where = f"step {step} (t = {time:.6g} s)"
+    return f"{item}: {where}" if item else where
+
+
+def error_at_step(err: TrussfeError, step: int, time: float) -> TrussfeError:
+    """A copy of ``err`` whose item names the step of the motion (:func:`step_item`)."""
+    out = type(err).__new__(type(err))
+    TrussfeError.__init__(out, step_item(err.item, step, time), err.message)
+    for key, value in err.__dict__.items():
+        if key not in ("item", "message", "args"):
+            setattr(out, key, value)
+    return out
+
+
+def _first_copy(names) -> int | None:
+    """The lowest copy index among ids ``ID@i`` (and ``member ID@i``) of
+    :func:`copy_ids`, or None when none is such an id."""
+    found = []
+    for name in names:
+        _, sep, idx = str(name).rpartition("@")
+        if sep and idx.isdigit():
+            found.append(int(idx))
+    return min(found, default=None)
+
+
 def stacked_structure(structure: Structure, coords: np.ndarray) -> Structure:
     """Disjoint copies of a structure, copy i at positions ``coords[i]`` (one per step).
 
     Loads, masses and gravity are left out (the loads of a motion are applied separately);
     supports, sections, materials and member types are repeated.  Node ``j`` of copy ``i`` is
-    node ``i n + j``, member ``k`` of copy ``i`` is member ``i m + k``.
+    node ``i n + j``, member ``k`` of copy ``i`` is member ``i m + k``; their ids are
+    :func:`copy_ids`.
     """
     nt = coords.shape[0]
     n, dim = structure.n_nodes, structure.dim
     conn = (structure.connectivity[None] + n * np.arange(nt)[:, None, None]).reshape(-1, 2)
     return Structure(
         name=f"{structure.name} × {nt} steps", dim=dim,
-        node_ids=[f"{nid}@{i}" for i in range(nt) for nid in structure.node_ids],
+        node_ids=copy_ids(structure.node_ids, nt),
         coords=coords.reshape(nt * n, dim),
-        member_ids=[f"{mid}@{i}" for i in range(nt) for mid in structure.member_ids],
+        member_ids=copy_ids(structure.member_ids, nt),
         connectivity=conn, sections=list(structure.sections) * nt,
         materials=list(structure.materials) * nt,
         is_beam=np.tile(structure.is_beam, nt), releases=np.tile(structure.releases, (nt, 1)),
@@ -202,6 +240,34 @@ def _solve_block(structure: Structure, coords: np.ndarray, ml: MotionLoads,
     tube_mid = L - 0.5 * (L - ml.tube_start[..., None])
     mid = _recover_sections(ml, ex, fel, R, tube_mid)[0][..., 0]
     return disp, react, sections, sx, st, mid
+
+
+def _singular_step_error(err: MechanismError, structure: Structure, kin: Kinematics, k0: int,
+                         subdivisions: int) -> TrussfeError:
+    """The error of a block of steps whose FE model is singular, in the user's terms: the
+    first step at fault (by time), diagnosed alone so that its nodes carry the model's ids
+    and the mechanisms counted are that step's, not the sum over the copies of the block.
+
+    ``err`` itself when it names no copy (nothing to translate)."""
+    first = _first_copy(err.moving_nodes)
+    if first is None:
+        return err
+    k = k0 + first
+    one = stacked_structure(structure, kin.coords[k:k + 1])
+    try:
+        fe = discretise(one, bar_model="pinned-beam", subdivisions=subdivisions)
+        factorise(fe.stiffness(), fe.free, fe=fe, item=structure.source or structure.name)
+    except MechanismError as alone:
+        return error_at_step(alone, k, float(kin.time[k]))
+    # singular only beside the other steps (round-off of the block's pivot test): name the
+    # step and its moving nodes as the model names them
+    moving = list(dict.fromkeys(str(x).rpartition("@")[0] for x in err.moving_nodes
+                                if _first_copy([x]) == first))
+    return error_at_step(MechanismError(
+        err.item, "the stiffness matrix of the structure in this position is singular; "
+        f"moving nodes: {', '.join(moving[:20])}{' ...' if len(moving) > 20 else ''}; add "
+        "supports or members, or run 'trussfe mechanism' for the rank analysis",
+        mechanisms=err.mechanisms, moving_nodes=moving), k, float(kin.time[k]))
 
 
 def _recover_sections(ml: MotionLoads, ex: np.ndarray, fel: np.ndarray, R: np.ndarray,
@@ -290,8 +356,20 @@ def elastic_along_motion(structure: Structure, kin: Kinematics, *,
     parts = []
     for k0 in range(0, nt, step):
         k1 = min(nt, k0 + step)
-        parts.append(_solve_block(structure, kin.coords[k0:k1], ml.select(slice(k0, k1)),
-                                  positions, int(subdivisions)))
+        try:
+            parts.append(_solve_block(structure, kin.coords[k0:k1], ml.select(slice(k0, k1)),
+                                      positions, int(subdivisions)))
+        except MechanismError as err:
+            raise _singular_step_error(err, structure, kin, k0, int(subdivisions)) from None
+        except TrussfeError as err:
+            # a property of the model refused on the copies: the same refusal of one copy
+            # names the members as the model does
+            one = stacked_structure(structure, kin.coords[k0:k0 + 1])
+            try:
+                discretise(one, bar_model="pinned-beam", subdivisions=int(subdivisions))
+            except TrussfeError as alone:
+                raise alone from None
+            raise err from None
         if progress is not None:
             progress(k1, nt)
     disp, react, secs, sx, st = ([p[i] for p in parts] for i in range(5))
@@ -311,7 +389,8 @@ def elastic_along_motion(structure: Structure, kin: Kinematics, *,
 
 
 def compare_with_rigid(rigid_sections: SectionForces, response: ElasticResponse,
-                       rigid_reactions: np.ndarray | None = None) -> dict:
+                       rigid_reactions: np.ndarray | None = None,
+                       member_ids: Sequence[str] | None = None) -> dict:
     """Largest differences between the FE and rigid-body section forces over a motion.
 
     Each member's differences are scaled by that member's largest force (tension or shear,
@@ -328,13 +407,16 @@ def compare_with_rigid(rigid_sections: SectionForces, response: ElasticResponse,
     response : ElasticResponse
     rigid_reactions : ndarray, shape (nt, n, dim), optional
         ``SimulationResult.forces.reactions`` (scaled by the largest reaction).
+    member_ids : sequence of str, optional
+        The members' ids, to name the worst member by its id as well as its index.
 
     Returns
     -------
     dict
         ``tension``, ``shear``, ``moment`` (and ``reactions``): largest scaled difference;
-        ``max``: the largest of them; ``worst``: step, member and section of the largest
-        force difference; ``steps``: number of steps compared.
+        ``max``: the largest of them; ``worst``: step, member (index) and section of the
+        largest force difference, and ``member_id`` (None without ``member_ids``);
+        ``steps``: number of steps compared.
     """
     rs, fs = rigid_sections, response.sections
     if rs.tension.shape != fs.tension.shape or not np.allclose(rs.position, fs.position):
@@ -359,7 +441,9 @@ def compare_with_rigid(rigid_sections: SectionForces, response: ElasticResponse,
     out = {"tension": float(dT.max()), "shear": float(dV.max()), "moment": float(dM.max()),
            "steps": int(nt)}
     worst = np.unravel_index(int(np.argmax(np.maximum(dT, dV))), dT.shape)
-    out["worst"] = {"step": int(worst[0]), "member": int(worst[1]), "section": int(worst[2])}
+    out["worst"] = {"step": int(worst[0]), "member": int(worst[1]),
+                    "member_id": None if member_ids is None else member_ids[int(worst[1])],
+                    "section": int(worst[2])}
     if rigid_reactions is not None:
         scale = max(np.abs(rigid_reactions).max(), 1e-300)
         out["reactions"] = float(np.abs(response.reactions - rigid_reactions).max() / scale)
@@ -425,13 +509,15 @@ def simulate_elastic(structure: Structure, motion=None, *,
         item = ("--subdivisions" if subdivisions is not None and elements > sections
                 else "--sections")
         require(rigid + elements + sections, item,
-                f"the FE response of {m * k:,} elements and {m * n_sections:,} sections at "
-                f"{nt:,} time steps", "use fewer sections or subdivisions")
+                f"the FE response of {count_text(m * k)} elements and "
+                f"{count_text(m * n_sections)} sections at {count_text(nt)} time steps",
+                "use fewer sections or subdivisions")
     sim = simulate(structure, motion, n_sections=n_sections, actuators=False,
                    conventions=replace(conventions, full_length_inertia=False),
                    progress=progress)
     resp = elastic_along_motion(structure, sim.kinematics, bodies=sim.bodies,
                                 positions=sim.sections.position, subdivisions=k,
                                 gravity=gravity, loads=loads, progress=progress)
-    cmp = compare_with_rigid(sim.sections, resp, sim.forces.reactions)
+    cmp = compare_with_rigid(sim.sections, resp, sim.forces.reactions,
+                             member_ids=structure.member_ids)
     return sim, resp, cmp

@@ -67,7 +67,7 @@ import scipy.linalg as sla
 import scipy.sparse.linalg as spla
 
 from ..budget import along_motion_bytes, require
-from ..errors import AnalysisError, InputError
+from ..errors import UNITS_ADVICE, AnalysisError, InputError, MechanismError, TrussfeError
 from ..fem.discretisation import FEModel, discretise
 from ..model.bar_models import BAR_MODELS
 from ..fem.solver import factorise
@@ -79,6 +79,8 @@ from ..rigid.forces import member_bodies
 from ..rigid.kinematics import Kinematics
 from ..rigid.motion import Motion
 from ..rigid.simulate import simulate
+from ..budget import count_text
+from .along_motion import error_at_step
 from .loads import hermite
 from .transient_fe import assemble_block, massless_active
 
@@ -267,7 +269,7 @@ def motion_on_grid(motion: Motion, dt: float | None = None, t_end: float | None 
     # the FE response at every step dwarfs the motion itself: refuse what cannot fit
     require(along_motion_bytes(n_float, 0, motion.length.shape[1]),
             "--dt" if t_end is None else "--dt, --t-end",
-            f"{n_float:,.0f} time steps of {dt:g} s", "give a longer time step")
+            f"{count_text(n_float)} time steps of {dt:g} s", "give a longer time step")
     n = int(n_float)
     tq = t[0] + dt * np.arange(n)
     L, V, A = motion.length, motion.velocity, motion.acceleration
@@ -383,6 +385,22 @@ class _Sparse:
         return np.stack([factor(k, "spd").solve(f, refine=False) for k, f in zip(self.K, F)])
 
 
+def _singular_step_error(block, single: FEModel, structure: Structure, k0: int,
+                         time: np.ndarray) -> TrussfeError:
+    """The error of a block of steps one of whose stiffness matrices is singular: the first
+    such step, diagnosed on the single model (its ids, its mechanisms) and named with its
+    time (:func:`~trussfe.response.along_motion.error_at_step`)."""
+    item = structure.source or structure.name
+    every = np.arange(single.n_dof)
+    for j, K in enumerate(block.sparse("K", every)):
+        try:
+            factorise(K, single.free, fe=single, item=item)
+        except MechanismError as err:
+            return error_at_step(err, k0 + j, float(time[k0 + j]))
+    return AnalysisError(item, "the stiffness matrix is singular at a step from "
+                         f"t = {time[k0]:.6g} s on; {UNITS_ADVICE}")
+
+
 def transient_response(structure: Structure, motion: Motion, *, bar_model: str = "pinned-beam",
                        k: int | None = None, dt: float | None = None,
                        t_end: float | None = None, damping: tuple[float, float] | None = None,
@@ -467,7 +485,10 @@ def transient_response(structure: Structure, motion: Motion, *, bar_model: str =
                            bodies, bar_model=bar_model, subdivisions=k, mass=mass)
     K0 = first.sparse("K", np.arange(single.n_dof))[0]
     M0 = first.sparse("M", np.arange(single.n_dof))[0]
-    factorise(K0, free, fe=single, item=structure.source or structure.name)
+    try:
+        factorise(K0, free, fe=single, item=structure.source or structure.name)
+    except MechanismError as err:
+        raise error_at_step(err, 0, float(grid.time[0])) from None
     freqs = _frequencies(K0, M0, free)
 
     dense = nf <= DENSE_LIMIT
@@ -515,7 +536,10 @@ def transient_response(structure: Structure, motion: Motion, *, bar_model: str =
         Ub = np.zeros((nb, nf))
         Vb = np.zeros((nb, nf))
         Ab = np.zeros((nb, nf))
-        Uqb = ops.solve_K(F)
+        try:
+            Uqb = ops.solve_K(F)
+        except (SingularMatrixError, np.linalg.LinAlgError):
+            raise _singular_step_error(B, single, structure, k0, grid.time) from None
         for j in range(nb):
             if u is None:           # quasi-static start at rest
                 u = Uqb[0].copy()

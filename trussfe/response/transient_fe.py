@@ -54,6 +54,7 @@ from ..model.structure import Structure
 from ..rigid.active import active_members
 from ..rigid.forces import MemberBodies, member_resultants
 from ..rigid.kinematics import Kinematics, pad3
+from .along_motion import copy_ids
 
 log = logging.getLogger(__name__)
 
@@ -81,7 +82,9 @@ def batch_structure(structure: Structure, coords: np.ndarray) -> Structure:
     Returns
     -------
     Structure
-        Nodes ``c·n + i`` and members ``c·m + j``; active members carried along (index offset).
+        Nodes ``c·n + i`` and members ``c·m + j`` (ids
+        :func:`~trussfe.response.along_motion.copy_ids`); active members carried along
+        (index offset).
     """
     s = structure
     nb = coords.shape[0]
@@ -92,9 +95,9 @@ def batch_structure(structure: Structure, coords: np.ndarray) -> Structure:
     ext = {"active_members": acts} if acts else {}
     return Structure(
         name=s.name, dim=s.dim,
-        node_ids=[f"{i}@{c}" for c in range(nb) for i in s.node_ids],
+        node_ids=copy_ids(s.node_ids, nb),
         coords=coords.reshape(nb * n, s.dim),
-        member_ids=[f"{j}@{c}" for c in range(nb) for j in s.member_ids],
+        member_ids=copy_ids(s.member_ids, nb),
         connectivity=conn, sections=list(s.sections) * nb, materials=list(s.materials) * nb,
         is_beam=np.tile(s.is_beam, nb), releases=np.tile(s.releases, (nb, 1)),
         torsion_releases=np.tile(s.torsion_releases, (nb, 1)),

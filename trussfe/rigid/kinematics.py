@@ -37,6 +37,8 @@ import numpy as np
 
 from ..errors import AnalysisError
 from ..kinematics.assembly import solve_positions
+from ..kinematics.compatibility import compatibility_matrix
+from ..linalg import factor
 from ..mechanics.geometry import lengths, member_vectors, unit_vectors
 from ..model.derived import kept, read_only
 from ..model.structure import Structure
@@ -247,14 +249,34 @@ def _sequential_positions(structure, motion, L, x0, steps, progress) -> np.ndarr
             r = solve_positions(x, conn, L[k, keep], fixed, member_ids=ids,
                                 item=_step_item(motion, k))
         except AnalysisError as err:
+            # Newton starts from the position of the step before (``x``): when that position
+            # is singular, no step can leave it, and the step at fault is that one (a motion
+            # that starts at a singular position fails at its step 0, not at step 1)
+            before = steps[j - 1] if j > 0 else (steps[0] - 1 if steps[0] > 0 else None)
+            if before is not None and _singular_at(x, conn, fixed):
+                item, k = _step_item(motion, before), before
+                what = ("the assembly is at a singular position (its compatibility matrix is "
+                        "rank deficient there): no unique position follows it")
+            else:
+                item, what = err.item, err.message
             acts = ", ".join(f"'{structure.member_ids[i]}' = {motion.length[k, c]:.6g} m"
                              for c, i in enumerate(motion.members[:6]))
             if motion.members.size > 6:
                 acts += f", … ({motion.members.size} active members)"
-            raise AnalysisError(err.item, f"{err.message} (active lengths {acts})") from None
+            raise AnalysisError(item, f"{what} (active lengths {acts})") from None
         x = r.coords
         out[j] = x
     return out
+
+
+def _singular_at(x: np.ndarray, conn: np.ndarray, fixed: np.ndarray) -> bool:
+    """Whether the compatibility matrix of the bars ``conn`` at positions ``x`` is singular
+    (the square system of a statically determinate truss; the test of
+    :func:`~trussfe.kinematics.assembly.solve_positions`' Newton step)."""
+    B = compatibility_matrix(x, conn, ~np.asarray(fixed, dtype=bool))
+    if B.shape[0] != B.shape[1]:
+        return False
+    return bool(factor(B, "general", singular="flag").is_singular)
 
 
 #: Steps per chunk below which the batched Newton iteration is not split between threads.

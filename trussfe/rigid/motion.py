@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..budget import along_motion_bytes, require
+from ..budget import along_motion_bytes, count_text, require
 from ..errors import InputError
 from ..mechanics.conventions import PHYSICAL
 from ..model.structure import Structure
@@ -258,7 +258,7 @@ def third_order_motion(structure: Structure, start: dict | np.ndarray, end: dict
     if not isinstance(include_end, (bool, np.bool_)):
         raise InputError("motion.include_end", f"must be true or false, got {include_end!r}")
     require(along_motion_bytes(steps, structure.n_nodes, structure.n_members),
-            "motion.steps", f"a motion of {steps:,} time steps",
+            "motion.steps", f"a motion of {count_text(steps)} time steps",
             "use fewer steps (--steps)")
     members = np.array([a.member for a in acts])
     L0 = structure.lengths()[members]

@@ -16,7 +16,7 @@ from typing import Callable
 
 import numpy as np
 
-from ..budget import along_motion_bytes, require
+from ..budget import along_motion_bytes, count_text, require
 from ..errors import AnalysisError, InputError
 from ..mechanics.conventions import PHYSICAL, Conventions
 from ..mechanics.stress import round_sections
@@ -271,10 +271,11 @@ def simulate(structure: Structure, motion: Motion | None = None, *,
                 round_section=round_sections(structure.sections))
     nt, m = motion.n_steps, structure.n_members
     require(along_motion_bytes(nt, structure.n_nodes, m), "motion",
-            f"an analysis of {nt:,} time steps", "use fewer steps (--steps) or a longer "
+            f"an analysis of {count_text(nt)} time steps", "use fewer steps (--steps) or a longer "
             "time step")
     require(along_motion_bytes(nt, structure.n_nodes, m) + sections_bytes(nt, m, n_sections),
-            "--sections", f"{int(n_sections):,} sections of {m:,} members at {nt:,} time steps",
+            "--sections", f"{count_text(n_sections)} sections of {m:,} members at "
+            f"{count_text(nt)} time steps",
             "use fewer sections")
     # blocks of equal size, as many as a multiple of the worker threads; every step is
     # computed the same in any block

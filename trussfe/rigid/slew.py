@@ -65,7 +65,7 @@ from typing import Any
 import numpy as np
 from scipy.interpolate import make_interp_spline
 
-from ..budget import along_motion_bytes, require
+from ..budget import along_motion_bytes, count_text, require
 from ..errors import AnalysisError, InputError
 from ..kinematics.assembly import solve_positions
 from ..kinematics.compatibility import compatibility_matrix
@@ -308,7 +308,7 @@ def _tilt(value: float, key: str, item: str, n_bays: int) -> float:
 def _steps_fit(n: int, structure: Structure, item: str) -> None:
     """Refuse a step count whose analysis cannot fit in memory (before sampling it)."""
     require(along_motion_bytes(n, structure.n_nodes, structure.n_members), f"{item}.steps",
-            f"a motion of {n:,} time steps", "use fewer steps (--steps)")
+            f"a motion of {count_text(n)} time steps", "use fewer steps (--steps)")
 
 
 def rotation_motion(spec: dict, structure: Structure, *, steps: int | None = None) -> Motion:
