@@ -70,7 +70,9 @@ class PathPoint:
     u : ndarray, shape (dof,)
         Displacements (all DOFs of the model).
     forces : ndarray, shape (member,)
-        Member axial forces, N.
+        Member axial forces, N (0 in removed members; NaN in the remaining bars at the
+        points of the mechanism stage before its equilibrium form, where the bars move
+        without being in equilibrium).
     alive : ndarray of bool, shape (member,)
     negative : int or None
         Negative eigenvalues of the tangent; None where unknown (a singular tangent, a
@@ -1162,7 +1164,11 @@ def _handover(st, m, out, x, conn, lam):
     for xp in mot.positions[1:]:
         u = np.zeros(m.ndof)
         u[: s.n_nodes * s.dim] = (xp - X).ravel()
+        # the remaining bars' forces are known at the equilibrium form only: between it and
+        # the hand-over the bars move as a mechanism, not in equilibrium (NaN, "no value");
+        # removed members carry nothing
         forces = np.zeros(s.n_members)
+        forces[forces_alive] = np.nan
         if mot.tensions is not None and xp is mot.positions[-1]:
             forces[forces_alive] = mot.tensions
         out.path.append(PathPoint(lam, u, forces, forces_alive.copy(), None, "mechanism"))
