@@ -64,20 +64,22 @@ def register(subparsers) -> None:
     p.set_defaults(func=_main)
 
 
-def write_vtk(path: str | Path, result: StaticResult) -> None:
+def write_vtk(path: str | Path, result: StaticResult) -> Path | None:
     """``OUT.vtu`` and, for beams and loaded members, ``OUT_stations.vtu`` beside it
     (:func:`trussfe.io.vtk_results.write_static`; nothing along the members of a truss
-    without member loads)."""
+    without member loads).  Returns the stations file, None when there is none."""
     from ..io.vtk_results import write_static    # meshio: only when a VTU is asked for
-    write_static(path, result, stations=bool(np.any(result.fe.is_frame)
-                                             or result.member_loads is not None))
+    stations = bool(np.any(result.fe.is_frame) or result.member_loads is not None)
+    written = write_static(path, result, stations=stations)
+    return Path(written[1]) if stations else None
 
 
 def write_collection(path: str | Path, solution) -> Path:
     """``OUT.pvd`` listing one ``.vtu`` (as :func:`write_vtk`) per case and combination of a
     :class:`~trussfe.fem.load_cases.LoadCaseSolution`: ``OUT_case_NAME.vtu``,
     ``OUT_combination_NAME.vtu`` beside it (characters other than letters, digits, ``-``,
-    ``_`` and ``.`` of a name become ``_``)."""
+    ``_`` and ``.`` of a name become ``_``), and ``OUT_stations.pvd`` listing their
+    ``_stations.vtu`` files (with the same time values) where there are any."""
     from ..io.vtk import write_pvd
     from ..errors import InputError
 
@@ -86,7 +88,7 @@ def write_collection(path: str | Path, solution) -> Path:
         raise InputError(str(path), "VTK output of several load cases must end in .vtu or "
                                     ".pvd (a .pvd collection is written)")
     stem = path.with_suffix("")
-    entries, used = [], set()
+    entries, along, used = [], [], set()
     results = [("case", n, r) for n, r in solution.cases.items()] + \
         [("combination", n, r) for n, r in solution.combinations.items()]
     for i, (kind, name, result) in enumerate(results):
@@ -95,8 +97,13 @@ def write_collection(path: str | Path, solution) -> Path:
         if file in used:                                 # two names alike once sanitised
             file = Path(f"{stem}_{kind}_{safe}_{i}.vtu")
         used.add(file)
-        write_vtk(file, result)
+        stations = write_vtk(file, result)
         entries.append((i, file.name))
+        if stations is not None:
+            along.append((i, stations.name))
+    if along:
+        # the stations files as a series of their own, stepped through as the cases are
+        write_pvd(Path(f"{stem}_stations.pvd"), along)
     return write_pvd(stem.with_suffix(".pvd"), entries)
 
 
