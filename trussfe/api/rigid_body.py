@@ -239,11 +239,15 @@ class ActuatorsResult(Result):
                      if a.name in self.solution.actuators)
 
     def history(self, quantity: str) -> np.ndarray:
-        """One of :attr:`QUANTITIES` for every actuator, shape (step, actuator)."""
+        """One of :attr:`QUANTITIES` for every actuator, shape (step, actuator); NaN for the
+        motor quantities of an actuator without a gearhead gain whose member the motion does
+        not move (eq. 3.1 has no speed to select the gain from)."""
         if quantity not in self.QUANTITIES:
             raise KeyError(f"{quantity!r}; have {', '.join(self.QUANTITIES)}")
         h = self.solution.actuators
-        return np.stack([np.asarray(h[a][quantity], dtype=float) for a in self.actuator_ids],
+        nan = np.full(self.time.size, np.nan)
+        return np.stack([np.asarray(h[a].get(quantity, nan), dtype=float)
+                         for a in self.actuator_ids],
                         axis=1) if self.actuator_ids else np.zeros((self.time.size, 0))
 
     @property
@@ -276,14 +280,17 @@ class ActuatorsResult(Result):
             h = res.actuators.get(act.name)
             if h is None:
                 continue
+            # without a gearhead gain and a motion of its member there are no motor
+            # histories: the gain and the motor peaks are null
             out[act.name] = {
                 "self_locking": bool(act.self_locking),
                 "self_locking_limit": act.self_locking_limit,
                 "leadscrew_gain": act.leadscrew_gain,
-                "gearhead_gain": float(h["gearhead_gain"]),
+                "gearhead_gain": (float(h["gearhead_gain"]) if "gearhead_gain" in h
+                                  else None),
                 "gearhead_gain_selected": bool(h["gearhead_gain_selected"]),
                 "convention": act.convention,
-                **{k: peak(np.asarray(h[k])) for k in self.QUANTITIES},
+                **{k: peak(np.asarray(h[k])) if k in h else None for k in self.QUANTITIES},
                 "flags": list(h["flags"]),
             }
         return result_json("actuators", self.structure.name, actuators=out)

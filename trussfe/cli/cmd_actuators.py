@@ -35,13 +35,19 @@ def _run(args: argparse.Namespace) -> int:
         write_json(args.json, doc)
     for aid, a in doc["actuators"].items():
         v, tq = a["motor_voltage"], a["motor_torque"]
-        print(f"{aid}: G_ls {a['leadscrew_gain']:.5g} m/rad "
-              f"({'self-locking' if a['self_locking'] else 'NOT self-locking'}, limit "
-              f"{a['self_locking_limit']:.5g}), G_gh {a['gearhead_gain']:.5g}"
-              f"{' (selected, eq. 3.1)' if a['gearhead_gain_selected'] else ''}; peak force "
-              f"{a['force']['value']:.5g} N, torque {tq['value']:.4g} N·m at "
-              f"{tq['time']:.4g} s, voltage {v['value']:.4g} V at {v['time']:.4g} s "
-              f"({a['motor_voltage_frictionless']['value']:.4g} V without friction)")
+        head = (f"{aid}: G_ls {a['leadscrew_gain']:.5g} m/rad "
+                f"({'self-locking' if a['self_locking'] else 'NOT self-locking'}, limit "
+                f"{a['self_locking_limit']:.5g}), ")
+        if a["gearhead_gain"] is None:
+            # no gain given and none to select: the motion does not move this actuator
+            print(f"{head}G_gh not selected; peak force {a['force']['value']:.5g} N at "
+                  f"{a['force']['time']:.4g} s")
+        else:
+            print(f"{head}G_gh {a['gearhead_gain']:.5g}"
+                  f"{' (selected, eq. 3.1)' if a['gearhead_gain_selected'] else ''}; peak "
+                  f"force {a['force']['value']:.5g} N, torque {tq['value']:.4g} N·m at "
+                  f"{tq['time']:.4g} s, voltage {v['value']:.4g} V at {v['time']:.4g} s "
+                  f"({a['motor_voltage_frictionless']['value']:.4g} V without friction)")
         for f in a["flags"]:
             print(f"  finding: {f}")
     return 0

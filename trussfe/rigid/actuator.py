@@ -32,13 +32,15 @@ Two conventions
 increasing θ_m (lengthening the member); the ideal gearhead multiplies the torque by G_gh, so the
 leadscrew torque reaches the motor as T_p / G_gh; the screw works against the load when it does
 positive work (F Ẋ > 0), with it when F Ẋ < 0, and, at rest, against it (the torque that must be
-overcome before motion starts, Lacy section 2.9).
+overcome before motion starts, Lacy section 2.9).  A rate of at most ``REST_RTOL`` (1e-9) times
+the motion's largest extension rate is rest: the round-off of a computed rate (±1e-17 m/s at
+the start of a third-order move) is not a motion.
 
 ``convention = "thesis"`` is Lacy's Appendix C code, literally: magnitudes only,
 ``T_m = J_m |θ̈_m| + |F| d_m/2 · ratio`` with the leadscrew torque applied at the motor without the
 gearhead ratio (as eq. 2.40 is written), ``V_m = T_m R_a/K_t + K_b |θ̇_m|``, and "against the
-load" when the force and the static force have the same sign.  It reproduces the thesis'
-figures, e.g. the 29 V peak of section 5.7.
+load" when the force and the static force have the same sign.  These are the formulas behind the
+thesis' motor figures (figs. 3.8–3.10, 5.14–5.16).
 
 The model-file table ``[actuators]`` and its data: :mod:`trussfe.model.actuators`.
 """
@@ -57,7 +59,10 @@ from ..model.structure import Structure
 
 log = logging.getLogger(__name__)
 
-__all__ = ["ACME_THREAD_ANGLE", "Actuator", "SELF_LOCKING_RTOL", "actuators_of",
+#: Extension rates of at most this fraction of the motion's largest are rest (round-off).
+REST_RTOL = 1e-9
+
+__all__ = ["ACME_THREAD_ANGLE", "Actuator", "REST_RTOL", "SELF_LOCKING_RTOL", "actuators_of",
            "max_leadscrew_gain", "motor_histories", "select_gearhead_gain", "thread_ratio"]
 
 
@@ -110,7 +115,7 @@ def actuators_of(structure: Structure) -> list[Actuator]:
 
 def motor_histories(act: Actuator, force: np.ndarray, velocity: np.ndarray,
                     acceleration: np.ndarray, static_force: np.ndarray | None = None,
-                    time: np.ndarray | None = None) -> dict:
+                    time: np.ndarray | None = None, rest_velocity: float | None = None) -> dict:
     """Motor speed, torque, current and voltage of one actuator (Lacy eqs. 2.35–2.44).
 
     Parameters
@@ -127,6 +132,9 @@ def motor_histories(act: Actuator, force: np.ndarray, velocity: np.ndarray,
         ``force``).
     time : ndarray, optional
         Times, for the messages of the flags.
+    rest_velocity : float, optional
+        Extension rates of at most this magnitude are rest (``"physical"`` convention); default
+        ``REST_RTOL`` times the largest ``|velocity|``.
 
     Returns
     -------
@@ -168,8 +176,11 @@ def motor_histories(act: Actuator, force: np.ndarray, velocity: np.ndarray,
         emf = act.back_emf_constant * np.abs(speed)
     else:
         # The screw does positive work on the tube when F Ẋ > 0 (against the load); at rest the
-        # motor must overcome the static load before motion starts (Lacy section 2.9).
-        against = force * velocity >= 0.0
+        # motor must overcome the static load before motion starts (Lacy section 2.9).  A
+        # round-off rate is rest, whichever its sign.
+        if rest_velocity is None:
+            rest_velocity = REST_RTOL * float(np.abs(velocity).max()) if velocity.size else 0.0
+        against = (force * velocity > 0.0) | (np.abs(velocity) <= rest_velocity)
         ratio = thread_ratio(act.lead, act.mean_diameter, act.friction, act.thread_angle,
                              against)
         # Torque in the +θ sense: F d_m/2 tan(λ ± φ); the with-load form of eqs. 2.36/2.38 is
@@ -253,6 +264,10 @@ def actuator_histories(structure: Structure, motion, actuator_force: np.ndarray,
         raise AnalysisError("actuator_force", f"is NaN at step {int(i)} for active member "
                             f"{structure.member_ids[members[j]]}")
     fs = None if static_force is None else np.atleast_2d(np.asarray(static_force, dtype=float))
+    # Rest: rates within round-off of the fastest member's (a member the motion holds still may
+    # carry rates of 1e-14 m/s from the differentiated lengths).
+    speeds = np.abs(np.asarray(motion.velocity, dtype=float))
+    rest = REST_RTOL * float(speeds.max()) if speeds.size else 0.0
     out = {}
     for act in actuators_of(structure):
         if act.member not in members:
@@ -275,7 +290,7 @@ def actuator_histories(structure: Structure, motion, actuator_force: np.ndarray,
                 act.leadscrew_gain, act.max_speed, vmax))
             selected = True
         h = motor_histories(act, force[:, j], vel, acc, None if fs is None else fs[:, j],
-                            time=motion.time)
+                            time=motion.time, rest_velocity=rest)
         h["gearhead_gain_selected"] = selected
         out[act.name] = h
     return out
