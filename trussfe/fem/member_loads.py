@@ -304,6 +304,12 @@ def loaded_member_stations(fe: FEModel, v: MemberLoadVectors, station_x: np.ndar
     that a pin-ended bar, which has no station inside, shows its simply supported moment
     under its loads too.
 
+    Besides ``v`` a member carries a uniform load: the self-weight of a frame member (scaled
+    by a combination's factor; none without gravity).  The statics takes it from the
+    member's two end sections, which the finite elements give exactly: the uniform load
+    that closes the balance of the forces between them.  (A truss bar's self-weight is
+    lumped at its joints and does not enter its end sections.)
+
     Parameters
     ----------
     fe : FEModel
@@ -332,15 +338,40 @@ def loaded_member_stations(fe: FEModel, v: MemberLoadVectors, station_x: np.ndar
     extra[prow[order], rank] = v.at[v.point][order]
     x = _distinct_stations([station_x[members], extra], L)
     start = section_forces[members, 0]
-    F = section_forces_along(x, L, start, row, v.point, v.q1, v.q2, v.at, v.F, v.C)
+    loads = _with_uniform_rest(v, row, L, start, station_x[members], section_forces[members])
+    F = section_forces_along(x, L, start, *loads)
     # where a distributed load makes a shear force vanish between two stations, the moment
     # it bends has its extreme there (the midspan of a bar under a uniform load): a station
-    peaks = _zero_shear_positions(x, F, L, row, v.point, v.q1, v.q2, members.size)
+    peaks = _zero_shear_positions(x, F, L, *loads[:4], members.size)
     if peaks.shape[1]:
         x = _distinct_stations([x, peaks], L)
-        F = section_forces_along(x, L, start, row, v.point, v.q1, v.q2, v.at, v.F, v.C)
+        F = section_forces_along(x, L, start, *loads)
     F[~np.isfinite(x)] = np.nan
     return members, x, F
+
+
+def _with_uniform_rest(v: MemberLoadVectors, row: np.ndarray, L: np.ndarray,
+                       start: np.ndarray, x_fe: np.ndarray, F_fe: np.ndarray) -> tuple:
+    """The loads of ``v`` as ``(row, point, q1, q2, at, F, C)`` for
+    :func:`~trussfe.mechanics.member_loads.section_forces_along`, with one uniform load per
+    member row added: the load its elements carry besides ``v`` (self-weight), from the
+    finite-element sections at its two ends, ``q = (S_v(L) − S(L)) / L`` on the forces, where
+    ``S_v`` is the statics of ``v`` alone from the start section (a point load at the end
+    node is behind the end section, as the element's end force has it)."""
+    r = L.size
+    last = np.isfinite(x_fe).sum(axis=1) - 1
+    end = F_fe[np.arange(r), last]
+    alone = section_forces_along(L[:, None], L, start, row, v.point, v.q1, v.q2, v.at, v.F,
+                                 v.C)[:, 0]
+    at_end = v.point & (np.abs(v.at - L[row]) <= AT_STATION * L[row])
+    forces = alone[:, :3].copy()
+    np.add.at(forces, row[at_end], -v.F[at_end])
+    rest = (forces - end[:, :3]) / L[:, None]
+    z = np.zeros((r, 3))
+    return (np.concatenate([row, np.arange(r)]), np.concatenate([v.point, np.zeros(r, bool)]),
+            np.concatenate([v.q1, rest]), np.concatenate([v.q2, rest]),
+            np.concatenate([v.at, np.zeros(r)]), np.concatenate([v.F, z]),
+            np.concatenate([v.C, z]))
 
 
 def _distinct_stations(parts: list[np.ndarray], L: np.ndarray) -> np.ndarray:
