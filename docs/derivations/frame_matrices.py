@@ -16,7 +16,7 @@ Shape functions
 Matrices (Euler–Bernoulli, no shear deformation, no rotary inertia)
 -------------------------------------------------------------------
 K  = ∫ EA N'ᵀN' + GJ N'ᵀN' + EIz H''ᵀH'' + EIy H''ᵀH'' dx
-M  = ∫ ρA (NᵀN + HᵀH + HᵀH) + ρJ NᵀN dx
+M  = ∫ ρA (NᵀN + HᵀH + HᵀH) + ρI_p NᵀN dx   (I_p = Iy + Iz)
 Kg = ∫ N_axial (H'ᵀH' + H'ᵀH') dx
 """
 from __future__ import annotations

@@ -736,9 +736,9 @@ class FEModel:
 
         def spec(f, mem):
             if f.name == "theta":
-                rhoJ = np.where(self.twist_member, twist_inertia_per_length(s.density, s.J),
-                                0.0)
-                return forms.mass, {"rhoA": rhoJ[mem]}
+                rho_ip = np.where(self.twist_member,
+                                  twist_inertia_per_length(s.density, s.Iy, s.Iz, s.J), 0.0)
+                return forms.mass, {"rhoA": rho_ip[mem]}
             return forms.mass, {"rhoA": mass_per_length(s.density, s.area)[mem]}
         M = self._block_local(g, spec)
         if g.kind == "frame" and self.timoshenko:
@@ -913,7 +913,7 @@ class FEModel:
         ----------
         kind : {"consistent", "lumped"}
             Consistent: ρA on every translation (P1 for bars, i.e. ρAL/6 [[2,1],[1,2]];
-            Hermite + P1 for frames) and ρJ on the twist.  Lumped: ρA·h/2 on each
+            Hermite + P1 for frames) and ρI_p (I_p = Iy + Iz) on the twist.  Lumped: ρA·h/2 on each
             translation DOF at both ends of every element, nothing on rotations.
         include_nodal_masses : bool
             Add ``structure.masses`` to the translations of their nodes.

@@ -54,7 +54,7 @@ def bending_stiffness(u, v, w):
 
 @BilinearForm
 def mass(u, v, w):
-    r"""Consistent mass :math:`\int \rho A\,u\,v\,dx` (``rhoA``; ρJ for the twist field)."""
+    r"""Consistent mass :math:`\int \rho A\,u\,v\,dx` (``rhoA``; ρI_p, I_p = Iy + Iz, for the twist field)."""
     return w["rhoA"] * u * v
 
 

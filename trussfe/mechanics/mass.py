@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 """Member mass: distributed ρA, tube pieces as rigid bodies, active members' rigid-body mass.
 
-* A passive member is a uniform tube of mass per length ρA, total ρAL (and ρJ about its axis
+* A passive member is a uniform tube of mass per length ρA, total ρAL (and ρI_p, I_p = Iy + Iz, about its axis
   for a beam that twists); the finite elements spread ρA with their shape functions (consistent, ``ρAL/6 [[2, 1], [1, 2]]`` for a bar on
   every translation) or half to each end (lumped) in :meth:`trussfe.fem.FEModel.mass`.
 * A tube piece of length ℓ and mass m turning as a rigid body about a transverse axis through
@@ -23,10 +23,28 @@ def mass_per_length(density: np.ndarray, area: np.ndarray) -> np.ndarray:
     return np.asarray(density, dtype=float) * np.asarray(area, dtype=float)
 
 
-def twist_inertia_per_length(density: np.ndarray, J: np.ndarray) -> np.ndarray:
-    """ρJ, the rotary inertia per length of a member's sections about its own axis, kg·m
-    (J the polar moment of a round section; an unknown J counts as 0)."""
-    return np.asarray(density, dtype=float) * np.nan_to_num(J)
+def twist_inertia_per_length(density: np.ndarray, Iy: np.ndarray, Iz: np.ndarray,
+                             J: np.ndarray) -> np.ndarray:
+    """ρ I_p, the rotary inertia per length of a member's sections about its own axis, kg·m.
+
+    The section's mass turns about the axis with its polar moment of area I_p = Iy + Iz
+    (St-Venant torsion: ρ I_p θ̈ = G J θ''), which is the torsion constant J only for a round
+    section: a rectangle's J is below its I_p, an open section's far below.  Where Iy or Iz
+    is unknown, J stands for I_p (a round section); an unknown J too counts as 0.
+
+    Examples
+    --------
+    A tube (J = Iy + Iz) and a 100 × 300 mm steel rectangle (J = 1.88e-4 m⁴ against
+    I_p = 2.5e-4 m⁴):
+
+    >>> twist_inertia_per_length(7850.0, 1e-6, 1e-6, 2e-6).item()
+    0.0157
+    >>> round(twist_inertia_per_length(7850.0, 2.25e-4, 2.5e-5, 1.88e-4).item(), 4)
+    1.9625
+    """
+    polar = np.asarray(Iy, dtype=float) + np.asarray(Iz, dtype=float)
+    polar = np.where(np.isfinite(polar), polar, np.asarray(J, dtype=float))
+    return np.asarray(density, dtype=float) * np.nan_to_num(polar)
 
 
 def member_mass(density: np.ndarray, area: np.ndarray, length: np.ndarray) -> np.ndarray:
