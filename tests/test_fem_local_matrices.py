@@ -34,12 +34,13 @@ def k_closed(L, E, G, A, Iy, Iz, J):
     return k
 
 
-def m_closed(L, rho, A, J):
-    """Consistent mass without rotary inertia (Przemieniecki eq. 11.42 with r = 0)."""
+def m_closed(L, rho, A, Ip):
+    """Consistent mass without rotary inertia of bending (Przemieniecki eq. 11.42 with
+    r = 0); the twist with the polar moment of area I_p = Iy + Iz."""
     m = np.zeros((12, 12))
     c = rho * A * L
     m[np.ix_([0, 6], [0, 6])] = c / 6 * np.array([[2, 1], [1, 2]])
-    m[np.ix_([3, 9], [3, 9])] = rho * J * L / 6 * np.array([[2, 1], [1, 2]])
+    m[np.ix_([3, 9], [3, 9])] = rho * Ip * L / 6 * np.array([[2, 1], [1, 2]])
     h = c / 420 * np.array([[156, 22 * L, 54, -13 * L], [22 * L, 4 * L**2, 13 * L, -3 * L**2],
                             [54, 13 * L, 156, -22 * L], [-13 * L, -3 * L**2, -22 * L, 4 * L**2]])
     m[np.ix_([1, 5, 7, 11], [1, 5, 7, 11])] = h
@@ -83,7 +84,7 @@ def test_stiffness_equals_closed_form():
 def test_mass_equals_closed_form():
     fe, g, L = _element([1, 0, 0])
     m = _comp(g, fe.local_mass(g))
-    ref = m_closed(L, MAT.density, SEC.area, SEC.J)
+    ref = m_closed(L, MAT.density, SEC.area, SEC.Iy + SEC.Iz)
     assert_allclose(m, ref, rtol=ROUND_OFF, atol=ROUND_OFF * abs(ref).max())
 
 
@@ -106,7 +107,7 @@ def test_global_matrices_are_rotated_closed_forms(direction):
                   fe.node_dofs[1, 3:]]
     for got, ref in [(fe.stiffness(), k_closed(L, MAT.E, MAT.G, SEC.area, SEC.Iy, SEC.Iz,
                                                SEC.J)),
-                     (fe.mass(), m_closed(L, MAT.density, SEC.area, SEC.J)),
+                     (fe.mass(), m_closed(L, MAT.density, SEC.area, SEC.Iy + SEC.Iz)),
                      (fe.geometric_stiffness(np.array([250.0])), kg_closed(L, 250.0))]:
         G = got.toarray()[np.ix_(order, order)]
         want = Lam.T @ ref @ Lam

@@ -66,7 +66,7 @@ def derive():
     _place(K, E * Iz * kb, pv)
     _place(K, E * Iy * kb, pw, sw)
     _place(M, rho * A * ml, ax)
-    _place(M, rho * J * ml, tw)
+    _place(M, rho * (Iy + Iz) * ml, tw)          # the polar moment of area turns
     _place(M, rho * A * mb, pv)
     _place(M, rho * A * mb, pw, sw)
     _place(Kg, Nax * gb, pv)
