@@ -11,24 +11,26 @@ has one function per analysis, available here::
     result = trussfe.static(model)          # result.axial_force, result.to_dict(), ...
 
 ``static``, ``modes``, ``buckling``, ``simulate``, ``actuators``, ``elastic``, ``transient``,
-``mechanism``, ``trace``, ``topology``, ``postcritical``, ``validate``
-(:mod:`trussfe.validation`) and ``study`` (:mod:`trussfe.parametric`) are imported on first
-use, so that ``import trussfe`` stays light; so is ``show``, which draws a model (and its
-static results) to a PNG.
+``mechanism``, ``trace``, ``topology``, ``postcritical``, ``read_model``,
+``model_from_dict``, ``validate`` (:mod:`trussfe.validation`) and ``study``
+(:mod:`trussfe.parametric`) are imported on first use, so that ``import trussfe`` stays light;
+so is ``show``, which draws a model (and its static results) to a PNG.  A call that does not
+match a function of :mod:`trussfe.api` (an unknown option, a model of the wrong type) raises
+:class:`InputError` naming the argument (also a :class:`TypeError`).
 """
 from ._version import __version__   # the one place the version is written (pyproject reads it)
 from .errors import AnalysisError, InputError, MechanismError, TrussfeError
-from .io.model_file import read_model
 from .model.sections import Material, Section
 from .model.structure import Structure, build_structure
 
-#: Analyses of the Python API, imported from :mod:`trussfe.api` on first use.
+#: Functions of the Python API, imported from :mod:`trussfe.api` on first use.
 _API = ("static", "modes", "buckling", "simulate", "actuators", "elastic", "transient",
-        "mechanism", "trace", "topology", "postcritical", "model_from_dict", "show")
+        "mechanism", "trace", "topology", "postcritical", "model_from_dict", "read_model",
+        "show")
 
 __all__ = ["AnalysisError", "InputError", "MechanismError", "TrussfeError", "Material",
-           "Section", "Structure", "build_structure", "read_model", "__version__",
-           *_API, "validate", "study"]
+           "Section", "Structure", "build_structure", "__version__", *_API, "validate",
+           "study"]
 
 
 def __getattr__(name: str):

@@ -7,18 +7,110 @@
 
 Every function takes the model (a :class:`~trussfe.model.Structure`, a model file path or a
 dict of tables, see :func:`model_from_dict`) and keyword-only options with the defaults of
-the command of the same name; an unknown option is refused with a :class:`TypeError`.  The
-command line and the validation suite call these functions.  docs/python.md is the guide.
+the command of the same name.  A call that does not match (an unknown option, an extra
+positional argument, a missing required option, a model that is not a structure, path or
+dict) raises :class:`~trussfe.api.options.ArgumentError`: a
+:class:`~trussfe.errors.InputError` naming the argument that is also a :class:`TypeError`.
+The command line and the validation suite call these functions.  docs/python.md is the guide.
 """
 from __future__ import annotations
 
+import functools
 import importlib
 import inspect
+import os
+from collections.abc import Mapping
 from types import MappingProxyType
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any, Callable
 
-from .model import ModelLike, as_structure, model_from_dict, read_model
+from ..model.structure import Structure
+from . import model as _model
+from .model import ModelLike
+from .options import ArgumentError
 from .results import Result
+
+
+def _is_path(value: Any) -> bool:
+    return isinstance(value, (str, os.PathLike))
+
+
+def _is_motion(value: Any) -> bool:
+    if value is None or _is_path(value):
+        return True
+    from ..rigid.motion import Motion
+    return isinstance(value, Motion)
+
+
+#: The arguments whose type is checked before a call: name -> (test, what it must be).
+_ARGUMENT_TYPES: dict[str, tuple[Callable[[Any], bool], str]] = {
+    "model": (lambda v: isinstance(v, (Structure, Mapping)) or _is_path(v),
+              "a Structure, a model file path or a dict of tables"),
+    "motion": (_is_motion, "a motion file path, a Motion or None"),
+    "png": (_is_path, "a file path"),
+    "results": (lambda v: v is None or isinstance(v, (Mapping, Result)) or _is_path(v),
+                "a static Result, its to_dict() document, a results file path or None"),
+    "base_dir": (_is_path, "a folder path"),
+    "path": (_is_path, "a model file path"),
+}
+
+
+def _call_error(name: str, signature: inspect.Signature, args: tuple, kwargs: dict,
+                error: TypeError) -> ArgumentError:
+    """The :class:`ArgumentError` of a call of ``name`` that ``signature`` cannot bind."""
+    from ..io.suggest import suggest as _suggest
+
+    params = signature.parameters
+    takes_kwargs = any(p.kind is p.VAR_KEYWORD for p in params.values())
+    unknown = [] if takes_kwargs else [k for k in kwargs if k not in params]
+    if unknown:
+        key = unknown[0]
+        options = [p.name for p in params.values() if p.kind is p.KEYWORD_ONLY]
+        return ArgumentError(key, f"{name}() got an unexpected keyword argument '{key}'"
+                                  + (_suggest(key, options) if options
+                                     else f"; {name}() takes no options"))
+    positional = [p.name for p in params.values()
+                  if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)]
+    if len(args) > len(positional):
+        return ArgumentError(f"{name}()", f"takes {len(positional)} positional argument(s) "
+                             f"({', '.join(positional)}) but {len(args)} were given; give "
+                             "the options by keyword")
+    given = set(positional[:len(args)]) | set(kwargs)
+    missing = [p.name for p in params.values()
+               if p.default is p.empty and p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)
+               and p.name not in given]
+    if missing:
+        return ArgumentError(missing[0], f"{name}() is missing the required argument "
+                                         f"'{missing[0]}'")
+    return ArgumentError(f"{name}()", str(error))
+
+
+def _checked_call(fn: Callable) -> Callable:
+    """``fn`` refusing, as an :class:`ArgumentError`, a call that does not match its
+    signature and a model, motion or file argument of a type it cannot take (checked before
+    the run starts)."""
+    signature = inspect.signature(fn)
+    name = fn.__name__
+
+    @functools.wraps(fn)
+    def call(*args, **kwargs):
+        try:
+            bound = signature.bind(*args, **kwargs)
+        except TypeError as exc:
+            raise _call_error(name, signature, args, kwargs, exc) from None
+        for key, value in bound.arguments.items():
+            rule = _ARGUMENT_TYPES.get(key)
+            if rule is not None and not rule[0](value):
+                raise ArgumentError(key, f"the {key} must be {rule[1]}, not "
+                                         f"{type(value).__name__}")
+        return fn(*args, **kwargs)
+    # found where it is offered, trussfe.api.NAME (pickle finds it there by name)
+    call.__module__, call.__qualname__ = __name__, name
+    return call
+
+
+as_structure = _checked_call(_model.as_structure)
+model_from_dict = _checked_call(_model.model_from_dict)
+read_model = _checked_call(_model.read_model)
 
 #: Where each analysis and result type lives: imported on first use, so that a command loads
 #: only the solver family it runs (start-up time of the command line).
@@ -53,6 +145,8 @@ if TYPE_CHECKING:
 def __getattr__(name: str):
     if name in _LAZY:
         value = getattr(importlib.import_module(f"{__name__}.{_LAZY[name]}"), name)
+        if inspect.isfunction(value):
+            value = _checked_call(value)
         globals()[name] = value
         return value
     if name == "ANALYSES":
@@ -68,9 +162,13 @@ def __dir__() -> list[str]:
 
 
 def option_names(analysis: str) -> tuple[str, ...]:
-    """The keyword options of one of :data:`ANALYSES`, in signature order."""
+    """The keyword options of one of :data:`ANALYSES`, in signature order (an
+    :class:`~trussfe.errors.InputError`, item ``analysis``, for another name)."""
     if analysis not in ANALYSIS_NAMES:
-        raise KeyError(analysis)
+        from ..errors import InputError
+        from ..io.suggest import suggest as _suggest
+        raise InputError("analysis", f"unknown analysis {analysis!r}"
+                                     f"{_suggest(analysis, ANALYSIS_NAMES)}")
     return tuple(p.name for p in inspect.signature(__getattr__(analysis)).parameters.values()
                  if p.kind is inspect.Parameter.KEYWORD_ONLY)
 

@@ -413,7 +413,9 @@ class BucklingResult(Result):
 
     @property
     def shapes(self) -> np.ndarray:
-        """Buckling mode shapes at the nodes, shape (mode, node, dim), largest translation 1."""
+        """Buckling mode shapes at the nodes, shape (mode, node, dim); each mode is scaled to
+        a largest translation of 1 over the joints and the stations along the members, so at
+        the nodes it may be smaller (zero where members buckle between fixed joints)."""
         return self.solution.node_shapes()[:, :, :self.dim]
 
     @property

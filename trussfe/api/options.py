@@ -12,6 +12,14 @@ from typing import Any
 from ..errors import InputError
 
 
+class ArgumentError(InputError, TypeError):
+    """A call that does not match a function of the API: a keyword it does not take, an
+    extra positional argument, a missing required option, or a model or file argument of a
+    type it cannot take.  An :class:`~trussfe.errors.InputError` naming the argument (the
+    command line refuses the same mistakes), and a :class:`TypeError`, as Python raises for
+    such a call."""
+
+
 def choice(option: str, value: Any, choices) -> str:
     """``value`` if it is one of ``choices``, else an :class:`InputError`."""
     if value not in choices:

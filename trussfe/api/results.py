@@ -19,16 +19,50 @@ The same quantity has the same attribute name in every family (docs/python.md ha
 ``time``               ``(step,)``, s
 =====================  =====================================================================
 
-Arrays are the solver's own or computed from them on access: copy one before changing it.
+Every array a result's property returns is read-only (a view of the solver's array, or an
+array computed on access): writing into it raises ``ValueError: assignment destination is
+read-only`` instead of changing the result, its other arrays and :meth:`Result.to_dict`.
+``np.array(r.axial_force)`` is a copy to change.  Dicts and lists a property returns are new
+containers (their arrays read-only too, their events copies).  ``solution`` is the solver's
+own object, as it is.
 Each analysis module defines its results (:class:`~trussfe.api.linear.StaticResult`, …).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+import copy
+import functools
+from dataclasses import dataclass, is_dataclass
 from typing import Any, ClassVar
+
+import numpy as np
 
 from ..io.output import plain
 from ..model.structure import Structure
+
+
+def read_only(value: Any) -> Any:
+    """``value`` as a result property hands it out: an array as a read-only view, a dict or a
+    list as a new one of read-only values, a mutable dataclass (an event) as a copy (a user's
+    change cannot reach the solver's data)."""
+    if isinstance(value, np.ndarray):
+        view = value.view()
+        view.flags.writeable = False
+        return view
+    if type(value) is dict:
+        return {k: read_only(v) for k, v in value.items()}
+    if type(value) is list:
+        return [read_only(v) for v in value]
+    if is_dataclass(value) and not isinstance(value, type) \
+            and not type(value).__dataclass_params__.frozen:
+        return copy.copy(value)             # e.g. a path event: a copy to change
+    return value
+
+
+def _read_only_property(prop: property) -> property:
+    @functools.wraps(prop.fget)
+    def get(self):
+        return read_only(prop.fget(self))
+    return property(get, doc=prop.__doc__)
 
 
 @dataclass(frozen=True, eq=False)
@@ -46,6 +80,13 @@ class Result:
     command: ClassVar[str] = ""
     structure: Structure
     solution: Any
+
+    def __init_subclass__(cls, **kwargs):
+        super().__init_subclass__(**kwargs)
+        # every property of a result hands out read-only arrays (module docstring)
+        for name, attr in list(vars(cls).items()):
+            if isinstance(attr, property) and attr.fget is not None and attr.fset is None:
+                setattr(cls, name, _read_only_property(attr))
 
     @property
     def node_ids(self) -> tuple[str, ...]:
