@@ -155,3 +155,17 @@ def test_the_functions_pickle_by_name(name):
     import pickle
     func = getattr(api, name)
     assert pickle.loads(pickle.dumps(func)) is func
+
+
+def test_picture_labels_and_actuator_quantity_are_checked(tmp_path):
+    """``show(labels="no")`` is refused (a yes/no option takes True or False; "no" would
+    draw the labels), and an unknown actuator quantity names the argument and suggests the
+    nearest one."""
+    root = Path(__file__).resolve().parents[1]
+    with pytest.raises(trussfe.InputError, match="labels"):
+        trussfe.show(root / "meshes" / "triangular_truss_static.toml", tmp_path / "m.png",
+                     labels="no")
+    assert not (tmp_path / "m.png").exists()
+    r = trussfe.actuators(root / "meshes" / "double_octahedron_actuators.toml")
+    with pytest.raises(trussfe.InputError, match="did you mean 'force'"):
+        r.history("forse")

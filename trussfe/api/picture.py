@@ -12,7 +12,7 @@ from ..errors import InputError
 from ..io.model_picture import (DEFAULT_SIZE, PIXELS_PER_SIDE, PictureResults, draw_model,
                                 read_results, results_from_document)
 from .model import ModelLike, as_structure
-from .options import is_integer, real
+from .options import flag, is_integer, real
 from .numerics import numerics_checked
 from .results import Result
 
@@ -95,6 +95,7 @@ def show(model: ModelLike, png: str | os.PathLike, *,
     """
     width, height = _size(size)
     scale = real("--scale", scale, positive=True)
+    labels = flag("labels", labels, optional=True)
     structure = as_structure(model)
     if backend is not None and backend not in ("pyvista", "matplotlib"):
         raise InputError("backend", f"unknown backend '{backend}'; use pyvista or matplotlib")

@@ -243,7 +243,9 @@ class ActuatorsResult(Result):
         motor quantities of an actuator without a gearhead gain whose member the motion does
         not move (eq. 3.1 has no speed to select the gain from)."""
         if quantity not in self.QUANTITIES:
-            raise KeyError(f"{quantity!r}; have {', '.join(self.QUANTITIES)}")
+            from ..io.suggest import suggest
+            raise InputError("quantity", f"unknown actuator quantity {quantity!r}"
+                             f"{suggest(quantity, self.QUANTITIES)}")
         h = self.solution.actuators
         nan = np.full(self.time.size, np.nan)
         return np.stack([np.asarray(h[a].get(quantity, nan), dtype=float)
