@@ -169,3 +169,13 @@ def test_picture_labels_and_actuator_quantity_are_checked(tmp_path):
     r = trussfe.actuators(root / "meshes" / "double_octahedron_actuators.toml")
     with pytest.raises(trussfe.InputError, match="did you mean 'force'"):
         r.history("forse")
+
+
+@pytest.mark.parametrize("kwargs, item", [({"case": 5}, "case"), ({"cases": 5}, "cases"),
+                                          ({"case": ["fem", 3]}, "case"),
+                                          ({"progress": "no"}, "progress")])
+def test_validate_checks_its_arguments(kwargs, item):
+    """``trussfe.validate`` refuses arguments of the wrong type before any case runs, naming
+    the argument."""
+    with pytest.raises(InputError, match=rf"^{item}: "):
+        trussfe.validate(**kwargs)

@@ -96,11 +96,20 @@ def validate(cases: str | os.PathLike | None = None, *, case: Sequence[str] | No
     InputError
         A malformed case file or an unknown case id.
     """
+    from ..api.options import flag
+    from ..errors import InputError
     from .cases import load_cases
     from .engine import run_cases
 
+    if cases is not None and not isinstance(cases, (str, os.PathLike)):
+        raise InputError("cases", f"expected a folder of case files, got "
+                                  f"{type(cases).__name__}")
     if isinstance(case, str):
         case = [case]
+    if case is not None and (not isinstance(case, Sequence)
+                             or not all(isinstance(c, str) for c in case)):
+        raise InputError("case", f"expected case ids (strings), got {case!r:.60}")
+    progress = flag("progress", progress)
     folder = Path(cases) if cases is not None else default_cases_dir()
     selected = load_cases(folder, list(case) if case is not None else None)
     return ValidationResult(run_cases(selected, progress=progress))
