@@ -677,8 +677,8 @@ def _member_forces(B, U: np.ndarray, acc: np.ndarray, structure: Structure, nb: 
     _x, F = fe_section_forces(fe, ub, fel)                    # (nb·m, kmax+1, ...)
     m = structure.n_members
     ksub = fe.member_subdivisions
-    # Midpoint: the middle station (even k) or the mean of the two around it (odd k; exact
-    # for truss bars, whose recovered force is constant along the bar).
+    # Midpoint: the middle station (even k) or the mean of the two around it (odd k; a truss
+    # bar's element force is constant, and its midpoint value follows from _bar_midpoints).
     lo = ksub // 2
     hi = (ksub + 1) // 2
     rows = np.arange(ksub.size)
@@ -690,12 +690,38 @@ def _member_forces(B, U: np.ndarray, acc: np.ndarray, structure: Structure, nb: 
     for g in fe.groups:
         if g.kind == "frame":
             _odd_midpoints(fe, g, fel, ab, grav, Fm)
+        else:
+            _bar_midpoints(fe, g, ab, Fm)
     N = Fm[:, 0].reshape(nb, m)
     if structure.dim == 2:
         Mm = np.abs(Fm[:, 5])
     else:
         Mm = np.hypot(Fm[:, 4], Fm[:, 5])
     return N, Mm.reshape(nb, m)
+
+
+def _bar_midpoints(fe: FEModel, g, acc: np.ndarray, Fm: np.ndarray) -> None:
+    """Midpoint axial force of the truss bars of group ``g``, corrected in place in ``Fm``.
+
+    A bar (one element per member) carries the constant force ``N_e = EA Δu/L``, while its own
+    axial load ``q(s) = ρA (g − a(s))·e``, with ``a`` linear between the end accelerations
+    ``a_a``, ``a_b``, makes the force vary along it.  The consistent loads of the bar's ends are
+    its exact end reactions, ``N(0) = N_e + ∫(1 − s/L) q``, so that
+    ``N(L/2) = N(0) − ∫₀^{L/2} q = N_e − ρA L (a_b − a_a)·e / 24`` (the uniform weight drops
+    out).  For a bar turning about one end at ω that is ``ρA ω² L²/24`` more tension than
+    ``N_e``.
+    """
+    s = fe.structure
+    mem = fe.element_member[g.elements]
+    mu = mass_per_length(s.density, s.area)[mem]
+    if not np.any(mu):
+        return
+    dim = fe.ndim
+    a = acc[fe.node_dofs[:, :dim]]                                      # (node, dim)
+    ends = s.connectivity[mem]
+    e = fe.rotation[mem][:, 0, :dim]                                    # member axis
+    da = np.einsum("ei,ei->e", a[ends[:, 1]] - a[ends[:, 0]], e)
+    Fm[mem, 0] -= mu * fe.element_length[g.elements] * da / 24.0
 
 
 #: Gauss–Legendre points and weights on [0, 1]; three points integrate the degree ≤ 4
