@@ -344,3 +344,22 @@ def test_double_octahedron_quasi_static_equals_rigid_body():
     assert np.abs(r.moment_qs[:, passive] - mr).max() < 1e-5 * mr.max()
     f = double_octahedron_slew(0.5, 0.025, update="frozen")
     assert f.energy_residual() < 1e-11
+
+
+def test_cli_summary_skips_members_without_a_quasi_static_force(capsys, monkeypatch):
+    """The summary line names the member of the largest relative departure among those with
+    a quasi-static force: a member without one has no ratio (NaN), which must not be picked
+    because it comes first (Python's max keeps a NaN key it starts from)."""
+    from trussfe._resources import mesh_path
+    from trussfe.cli import main
+    from trussfe.response.transient import TransientResult
+
+    def departure(self):
+        return {"follower": {"max_abs": 0.5, "relative": float("nan")},
+                "active": {"max_abs": 0.2, "relative": 0.01}}
+    monkeypatch.setattr(TransientResult, "departure", departure)
+    model = str(mesh_path("triangular_truss_motion_active.toml"))
+    assert main(["transient", model, "--motion", "triangular_truss_motion_3s.toml",
+                 "--dt", "0.01"]) == 0
+    out = capsys.readouterr().out
+    assert "0.2 N (1 %) in member active" in out

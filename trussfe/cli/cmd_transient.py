@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import math
 from pathlib import Path
 
 import numpy as np
@@ -103,10 +104,16 @@ def _run(args: argparse.Namespace) -> int:
     if args.vtk:
         write_vtk(args.vtk, res, stem=Path(args.model).stem, every=args.vtk_every)
     dep = res.departure()
-    worst = max(dep, key=lambda k: dep[k]["relative"])
+    # the largest relative departure among members with a quasi-static force (a member
+    # without one has no ratio, NaN, which must not win or lose the comparison at random);
+    # the largest absolute departure when no member has one
+    rated = [k for k in dep if math.isfinite(dep[k]["relative"])]
+    worst = (max(rated, key=lambda k: dep[k]["relative"]) if rated
+             else max(dep, key=lambda k: dep[k]["max_abs"]))
+    share = (f" ({100 * dep[worst]['relative']:.3g} %)" if math.isfinite(dep[worst]["relative"])
+             else "")
     print(f"{res.structure.name}: {res.time.size} steps of {res.dt:.3g} s; f1 = "
           f"{res.frequencies_hz[0]:.4g} Hz; largest departure of the elastic axial force from "
-          f"the quasi-static one: {dep[worst]['max_abs']:.4g} N "
-          f"({100 * dep[worst]['relative']:.3g} %) in member {worst}; energy residual "
-          f"{res.energy_residual():.2g}")
+          f"the quasi-static one: {dep[worst]['max_abs']:.4g} N{share} in member {worst}; "
+          f"energy residual {res.energy_residual():.2g}")
     return 0
