@@ -22,7 +22,7 @@ def build_failure_laws(structure, default: dict | None = None,
     default : dict, optional
         Keys of a ``[failure.default]`` table.
     per_member : dict, optional
-        Member index → keys overriding the default for that member.
+        Member index → keys overriding the default for that member (see :func:`_merged`).
     """
     m = structure.n_members
     none = FailureLaws.none(m)
@@ -34,7 +34,7 @@ def build_failure_laws(structure, default: dict | None = None,
     Imin = weak_axis_inertia(structure.Iy, structure.Iz)
     fy = structure.yield_strength
     for i in range(m):   # input checking only: once per member, at read time
-        law = {**default, **per_member.get(i, {})}
+        law = _merged(default, per_member.get(i, {}))
         if not law:
             continue
         item = (f"failure.members.{structure.member_ids[i]}" if i in per_member
@@ -97,3 +97,40 @@ def build_failure_laws(structure, default: dict | None = None,
         if "fracture_strain" in law:
             arrays["fracture_strain"][i] = law["fracture_strain"]
     return FailureLaws(**arrays)
+
+
+#: default keys that a member's own key supersedes (they describe the law it replaces)
+_SUPERSEDES = {"critical_load": ("effective_length_factor",),
+               "effective_length_factor": ("critical_load",)}
+
+
+def _merged(default: dict, own: dict) -> dict:
+    """A member's law: the default with the member's keys overriding it.
+
+    A member's key overrides the default's parameters of the law it replaces: its
+    ``critical_load`` replaces the default's ``effective_length_factor`` (and vice versa), a
+    buckling law other than ``"softening"`` drops the default's softening parameters,
+    ``buckling = "none"`` the default's Euler load data and ``yield = "none"`` the default's
+    ``yield_strength``.  What the member's own table gives is checked as given.
+
+    Examples
+    --------
+    >>> _merged({"buckling": "cap", "effective_length_factor": 0.7},
+    ...         {"buckling": "softening", "critical_load": 1200.0, "residual": 0.3,
+    ...          "softening_strain": 0.002})
+    {'buckling': 'softening', 'critical_load': 1200.0, 'residual': 0.3, 'softening_strain': 0.002}
+    """
+    law = dict(default)
+    drop = set()
+    for k in own:
+        drop.update(_SUPERSEDES.get(k, ()))
+    if "buckling" in own and own["buckling"] != "softening":
+        drop.update(("residual", "softening_strain"))
+    if own.get("buckling") == "none":
+        drop.update(("critical_load", "effective_length_factor"))
+    if own.get("yield") == "none":
+        drop.add("yield_strength")
+    for k in drop - set(own):
+        law.pop(k, None)
+    law.update(own)
+    return law

@@ -13,7 +13,9 @@ Force–strain laws (``ε`` engineering strain, ``ε_p`` plastic strain, ``N_e =
   reaches ``−P_cr``.  The buckling laws are elastic (path independent): an unloading strut
   retraces the curve, as an elastic strut does.
 * yield ``cap``: elastic–perfectly plastic with a committed plastic strain; ``remove``: removed
-  when ``|N| = A f_y``.
+  when ``|N| = A f_y``.  With a yield ``cap`` below the Euler load (``A f_y < P_cr``) the strut
+  yields in compression before it can buckle, and its elastic force ``N_e`` never reaches
+  ``−P_cr`` afterwards: its buckling law never acts (:func:`buckling_acts`).
 * fracture: removed when ``ε`` reaches ``fracture_strain``.
 """
 from __future__ import annotations
@@ -23,8 +25,19 @@ import numpy as np
 from ..io.failure_laws import build_failure_laws
 from ..model.failure import BUCKLING, YIELD, FailureLaws
 
-__all__ = ["BUCKLING", "YIELD", "FailureLaws", "axial_law", "build_failure_laws",
-           "failure_margins"]
+__all__ = ["BUCKLING", "YIELD", "FailureLaws", "axial_law", "buckling_acts",
+           "build_failure_laws", "failure_margins"]
+
+
+def buckling_acts(laws: FailureLaws) -> np.ndarray:
+    """Elements whose buckling law can act, shape (element,).
+
+    A yield ``cap`` keeps ``|N_e| = |EA(ε − ε_p)| ≤ A f_y`` along the path, so a strut whose
+    yield force is below its Euler load yields in compression and never reaches ``−P_cr``:
+    its buckling law is pre-empted, however large the step that crosses both limits.
+    """
+    return (laws.buckling > 0) & ~((laws.yield_mode == 1)
+                                   & (laws.yield_force < laws.critical_load))
 
 
 def axial_law(laws: FailureLaws, EA: np.ndarray, strain: np.ndarray,
@@ -61,10 +74,11 @@ def axial_law(laws: FailureLaws, EA: np.ndarray, strain: np.ndarray,
     N = trial.copy()
     k = EA.copy()
     Pcr = laws.critical_load
-    cap = (laws.buckling == 1) & (trial < -Pcr)
+    acts = buckling_acts(laws)
+    cap = acts & (laws.buckling == 1) & (trial < -Pcr)
     N[cap] = -Pcr[cap]
     k[cap] = 0.0
-    soft = (laws.buckling == 2) & (trial < -Pcr)
+    soft = acts & (laws.buckling == 2) & (trial < -Pcr)
     if soft.any():
         es = laws.softening_strain[soft]
         over = (-Pcr[soft] - trial[soft]) / EA[soft]              # extra shortening >= 0
@@ -89,10 +103,11 @@ def failure_margins(laws: FailureLaws, trial: np.ndarray, N_buckling: np.ndarray
     -------
     ndarray, shape (3, element)
         Rows: buckling ``−N_e/P_cr − 1``, yield ``|N_b|/(A f_y) − 1``, fracture
-        ``ε/ε_f − 1``; ``−inf`` where the law is absent.
+        ``ε/ε_f − 1``; ``−inf`` where the law is absent or cannot act
+        (:func:`buckling_acts`).
     """
     out = np.full((3, trial.shape[0]), -np.inf)
-    b = laws.buckling > 0
+    b = buckling_acts(laws)
     out[0, b] = -trial[b] / laws.critical_load[b] - 1.0
     y = laws.yield_mode > 0
     out[1, y] = np.abs(N_buckling[y]) / laws.yield_force[y] - 1.0
