@@ -656,6 +656,10 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
     #: arc-length: the sign of the load increment of the next predictor
     sign = 1.0
     rejected = 0
+    #: consecutive rejections of steps that crossed an inertia change, counted across the
+    #: shortened steps accepted in between (a corner of a member's law: see below)
+    corner_cuts = 0
+    after_reject = False
     k = 0
     while k < steps:
         if progress is not None:
@@ -723,7 +727,21 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                 out.termination = _cannot_continue(control, lam1, neg1)
                 out.events.append(Event("end", lam1, detail=out.termination))
                 break
-        if (locate_critical and fac1 is not None and _crossed(neg, neg1) and not hit.any()
+        corner = (arc and fac1 is not None and _crossed(neg, neg1) and not hit.any()
+                  and mode != "branch" and corner_cuts >= max_cuts)
+        if corner:
+            # A corner of a member's law (the end of a softening branch): the tangent jumps
+            # across zero stiffness without passing a singular state, so every step that
+            # crosses it is rejected and each shortened step accepted before it comes closer
+            # to it, never over it.  The step is taken over the corner instead; an odd change
+            # of the inertia there turns the load factor back, as at a limit point.
+            crit = None
+            if (neg1 - neg) % 2 == 1:
+                out.events.append(Event("limit_point", lam1, point=len(out.path),
+                                        detail=f"negative eigenvalues {neg} -> {neg1} at a "
+                                        "corner of a member's law (the tangent jumps; no "
+                                        "singular state)"))
+        elif (locate_critical and fac1 is not None and _crossed(neg, neg1) and not hit.any()
                 and mode != "branch" and control != "load"):
             crit = _critical_point(st, m, out, uf, lam, fac, dss, direction, prev, mode,
                                    neg, neg1, record, branch,
@@ -731,6 +749,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
             if crit == "reject":
                 # the inertia changed across a jump, not at a singular tangent: a smaller step
                 rejected += 1
+                corner_cuts += 1
+                after_reject = True
                 ds = 0.5 * dss
                 continue
         else:
@@ -741,6 +761,9 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                 out.events.append(Event(kind, lam1, point=len(out.path),
                                         detail=detail + "; at a member failure event"))
         rejected = 0
+        # a shortened step accepted right after a rejection keeps the count of the corner
+        corner_cuts = corner_cuts if after_reject and not corner else 0
+        after_reject = False
         branch_dir = None
         m.commit(res1)
         if crit is not None:
