@@ -18,9 +18,10 @@ import scipy.sparse as sp
 
 from ..errors import UNITS_ADVICE, MechanismError
 from ..linalg import SINGULAR_PIVOT, Factor, FreeBlock, factor, free_submatrix
-from ..linalg.factor import PARDISO_MIN_DOF, banded_limit
+from ..linalg.banded import band_layout_free, band_null_space
+from ..linalg.factor import BANDED_MAX_BANDWIDTH, PARDISO_MIN_DOF, banded_limit
 from ..linalg.ordering import Points
-from ..linalg.rank import DENSE_LIMIT, stiffness_null_space
+from ..linalg.rank import DENSE_LIMIT, NULL_TOLERANCE, stiffness_null_space
 from ..mechanics.geometry import rotation_length
 
 log = logging.getLogger(__name__)
@@ -56,7 +57,7 @@ def factorise(K: sp.spmatrix, free: np.ndarray, fe=None, item: str = "structure"
     free = np.asarray(free, dtype=np.int64)
     block = FreeBlock(K, free)
     if block.shape[0] and np.any(block.diagonal() <= 0):     # a DOF nothing is attached to
-        _raise_mechanism(block.tocsr(), free, fe, item)
+        _raise_mechanism(block.tocsr(), free, fe, item, K)
     points = None
     if fe is not None and free.size >= PARDISO_MIN_DOF and joint_dofs_only(fe):
         # where the DOFs sit: PARDISO's Cholesky orders them by geometric nested dissection
@@ -70,7 +71,7 @@ def factorise(K: sp.spmatrix, free: np.ndarray, fe=None, item: str = "structure"
         # a length of the model, so that its outcome does not depend on the unit of length
         fac = _scaled_factor(block.tocsr(), scale, backend, points)
     if fac.is_singular:
-        _raise_mechanism(block.tocsr(), free, fe, item)
+        _raise_mechanism(block.tocsr(), free, fe, item, K)
     log.debug("factorised %d free DOFs (%s)", free.size, fac.backend)
     return fac
 
@@ -191,8 +192,37 @@ def factorise_truss(fe, backend: str = "auto") -> tuple[Factor, dict] | None:
     return fac, {"assemble": t1 - t0, "factorise": time.perf_counter() - t1}
 
 
-def _raise_mechanism(Kff, free, fe, item):
+#: Largest number of mechanisms the banded search of :func:`_null_space` resolves one by one.
+BAND_NULL_VECTORS = 64
+
+
+def _null_space(Kff, free, K) -> tuple[np.ndarray, bool]:
+    """Mechanism modes of K_ff and whether they are all of them.
+
+    A K_ff of narrow band (a chain of bays) is searched by its banded Cholesky factorisation
+    in the order that eliminates a cantilever from its free end
+    (:func:`~trussfe.linalg.banded.band_null_space`): its vanishing pivots are the exact
+    mechanisms only, each vector local to its mechanism.  The smallest eigenvalues of a long
+    chain's scaled stiffness are its bending modes, ~N⁻⁴ for N bays, below the null tolerance
+    from ~160 double-octahedral bays: an eigen-solver counts them as mechanisms (and the
+    shift-invert iteration stalls on thousands of them beyond a few thousand bays).  Other
+    matrices: :func:`~trussfe.linalg.stiffness_null_space`.
+    """
+    if K is not None and Kff.shape[0] > 2:
+        Kc = sp.csr_matrix(K)
+        if not Kc.has_canonical_format:
+            Kc = Kc.copy()
+            Kc.sum_duplicates()
+        layout = band_layout_free(Kc, np.asarray(free, dtype=np.int64),
+                                  max_bandwidth=BANDED_MAX_BANDWIDTH, submatrix=lambda: Kff)
+        if layout is not None:
+            return band_null_space(layout, NULL_TOLERANCE, BAND_NULL_VECTORS)
     V = stiffness_null_space(Kff)
+    return V, not (Kff.shape[0] > DENSE_LIMIT and V.shape[1] >= 12)
+
+
+def _raise_mechanism(Kff, free, fe, item, K=None):
+    V, complete = _null_space(Kff, free, K)
     r = V.shape[1]
     if r == 0:
         # pivots collapsed without an exact null space: ill-conditioned beyond double
@@ -205,7 +235,7 @@ def _raise_mechanism(Kff, free, fe, item):
                              mechanisms=0, moving_nodes=[])
     moving = _moving_nodes(V, free, fe)
     shown = ", ".join(moving[:20]) + (" ..." if len(moving) > 20 else "")
-    more = "at least " if Kff.shape[0] > DENSE_LIMIT and r >= 12 else ""
+    more = "" if complete else "at least "
     raise MechanismError(
         item, f"the structure is a mechanism: {more}{r} independent mechanism"
         f"{'s' if r != 1 else ''} (rigid-body motions included); moving nodes: "
@@ -216,7 +246,7 @@ def _raise_mechanism(Kff, free, fe, item):
 def raise_mechanism(K: sp.spmatrix, fe, item: str):
     """Raise the :class:`MechanismError` that names the mechanisms of K_ff (for a factor that
     passed its pivot test but does not solve the system)."""
-    _raise_mechanism(free_submatrix(K, fe.free), fe.free, fe, item)
+    _raise_mechanism(free_submatrix(K, fe.free), fe.free, fe, item, K)
 
 
 def _moving_nodes(V: np.ndarray, free: np.ndarray, fe) -> list[str]:

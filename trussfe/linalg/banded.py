@@ -479,3 +479,148 @@ def banded_factor(A: sp.spmatrix | None = None, max_bandwidth: int | None = None
     upper = layout.upper_band()
     return (BandedCholesky.build(layout=layout, upper=upper)
             or BandedLU.build(layout=layout, upper=upper))
+
+
+def band_null_space(layout: BandLayout, tolerance: float, max_vectors: int = 64
+                    ) -> tuple[np.ndarray, bool]:
+    """Null vectors of a symmetric positive semi-definite matrix from its banded Cholesky
+    factorisation, one per vanishing pivot.
+
+    A Cholesky pivot is the stiffness of its row with the earlier rows free and the later ones
+    fixed.  When a pivot is at most ``tolerance`` times its diagonal entry, its row ``j`` is
+    constrained (its row and column replaced by the identity) and the factorisation resumes
+    after it.  The vector that is 1 in row ``j``, 0 in the later rows and in the constrained
+    ones, and ``−K₁₁⁻¹ K₁ⱼ`` in the earlier rows has the vanishing pivot as its energy: a
+    null vector, local to its mechanism, which is computed by one back substitution with the
+    factor of the earlier rows.  Unlike the smallest eigenvalues of the matrix, which a long
+    chain's flexible bending modes bring down to round-off (``~N⁻⁴`` for ``N`` bays, below
+    1e-10 of the largest from ~160 double-octahedral bays), the pivots of an ordering that
+    eliminates a cantilever from its free end stay at the stiffness of one bay, so only
+    mechanisms are found.
+
+    Parameters
+    ----------
+    layout : BandLayout
+    tolerance : float
+        A pivot at most this fraction of its diagonal entry vanishes.
+    max_vectors : int
+        Stop after this many null vectors.
+
+    Returns
+    -------
+    V : ndarray, shape (n, r)
+        Null vectors in the layout's original numbering, each of unit max-norm.
+    complete : bool
+        False when the search stopped at ``max_vectors`` (there may be more).
+    """
+    bw, n = layout.bandwidth, layout.n
+    ab0 = layout.upper_band()
+    ab = np.array(ab0, order="F")                # constrained rows become the identity
+    diag = ab0[bw].copy()
+    c = np.zeros_like(ab)                        # the factor of the constrained matrix
+    found: list[tuple[int, np.ndarray]] = []     # (row, its factor column above the pivot)
+    start = 0
+    complete = True
+    while start < n:
+        sub = np.array(ab[:, start:], order="F")
+        if start:
+            # Schur complement of the factored rows: only the bw × bw corner changes
+            lo = max(0, start - bw)
+            w = min(bw, n - start)
+            U11 = _upper_block(c, lo, start, bw)
+            A12 = _full_block(ab, lo, start, start, start + w, bw)
+            T = sla.solve_triangular(U11, A12, trans="T", lower=False, check_finite=False)
+            for q in range(w):                   # U[lo:start, start + q], within the band
+                i = np.arange(max(lo, start + q - bw), start)
+                c[bw + i - start - q, start + q] = T[i - lo, q]
+            S = T.T @ T
+            for q in range(w):
+                p = np.arange(max(0, q - bw), q + 1)
+                sub[bw + p - q, q] -= S[p, q]
+        ct, info = sla.lapack.dpbtrf(sub, lower=0)
+        done = (info - 1) if info > 0 else sub.shape[1]
+        piv = ct[bw, :done] ** 2
+        small = np.flatnonzero(~(piv > tolerance * diag[start:start + done]))
+        t = int(small[0]) if small.size else done
+        if t >= sub.shape[1]:
+            t = sub.shape[1]
+        # columns before t are the constrained matrix's factor (rows from `start` on), and
+        # so is column t above its pivot
+        last = min(t + 1, sub.shape[1])
+        for q in range(min(last, bw)):
+            c[bw - q:, start + q] = ct[bw - q:, q]
+        if last > bw:
+            c[:, start + bw:start + last] = ct[:, bw:last]
+        if t >= sub.shape[1]:
+            break
+        if len(found) == max_vectors:
+            complete = False
+            break
+        j = start + t
+        found.append((j, c[:bw, j].copy()))
+        ab[:bw, j] = 0.0
+        ab[bw, j] = 1.0
+        k = np.arange(j + 1, min(n, j + bw + 1))
+        ab[bw + j - k, k] = 0.0
+        c[:, j] = 0.0
+        c[bw, j] = 1.0
+        start = j + 1
+    r = len(found)
+    Y = np.zeros((n, r))
+    for col, (j, above) in enumerate(found):
+        Y[j, col] = 1.0
+        if j == 0:
+            continue
+        m = min(bw, j)                          # U[j − m:j, j] = above[bw − m:]
+        b = np.zeros(j)
+        b[j - m:] = -above[bw - m:]
+        x, _ = sla.lapack.dtbtrs(c[:, :j], b[:, None], uplo="U", trans="N", diag="N")
+        Y[:j, col] = x[:, 0]
+    V = np.zeros((n, 0))
+    if r:
+        # Each vector's energy is its vanishing pivot; nearly parallel vectors could still
+        # span directions of higher energy: keep the Ritz vectors of the diagonally scaled
+        # matrix in their span whose Rayleigh quotients are below the tolerance.
+        scale = np.sqrt(np.where(diag > 0, diag, 1.0))
+        Q, _ = np.linalg.qr(Y * scale[:, None])
+        KQ = _band_matvec(ab0, Q / scale[:, None]) / scale[:, None]
+        w, Z = np.linalg.eigh(0.5 * (Q.T @ KQ + KQ.T @ Q))
+        Y = (Q @ Z[:, w <= tolerance]) / scale[:, None]
+        V = np.zeros((n, Y.shape[1]))
+        V[layout.perm] = Y
+        if V.size:
+            V /= np.abs(V).max(axis=0)
+    return V, complete
+
+
+def _band_matvec(ab: np.ndarray, X: np.ndarray) -> np.ndarray:
+    """``A @ X`` for the symmetric matrix in upper band storage ``ab`` (shape (bw + 1, n))."""
+    bw = ab.shape[0] - 1
+    Y = ab[bw][:, None] * X
+    for d in range(1, bw + 1):
+        a = ab[bw - d, d:][:, None]                      # A[k − d, k], k = d … n − 1
+        Y[:-d] += a * X[d:]
+        Y[d:] += a * X[:-d]
+    return Y
+
+
+def _upper_block(c: np.ndarray, lo: int, hi: int, bw: int) -> np.ndarray:
+    """Dense ``U[lo:hi, lo:hi]`` of an upper band factor (``hi − lo ≤ bw + 1``)."""
+    m = hi - lo
+    U = np.zeros((m, m))
+    for q in range(m):
+        p = np.arange(max(0, q - bw), q + 1)
+        U[p, q] = c[bw + p - q, lo + q]
+    return U
+
+
+def _full_block(ab: np.ndarray, r0: int, r1: int, c0: int, c1: int, bw: int) -> np.ndarray:
+    """Dense ``A[r0:r1, c0:c1]`` of the symmetric matrix in upper band storage ``ab``."""
+    out = np.zeros((r1 - r0, c1 - c0))
+    for q, k in enumerate(range(c0, c1)):
+        i = np.arange(r0, r1)
+        up = (i <= k) & (k - i <= bw)                    # A[i, k] = ab[bw + i − k, k]
+        out[up, q] = ab[bw + i[up] - k, k]
+        lowr = (i > k) & (i - k <= bw)                   # A[i, k] = A[k, i] = ab[bw + k − i, i]
+        out[lowr, q] = ab[bw + k - i[lowr], i[lowr]]
+    return out
