@@ -12,12 +12,12 @@ from __future__ import annotations
 import json
 import logging
 import math
-import os
 import re
 from pathlib import Path
 
 import numpy as np
 
+from ..errors import OutputError
 from ..model.sections import Material, Section
 from ..model.structure import DOF_NAMES, Structure
 from .output import atomic_path
@@ -25,6 +25,13 @@ from .output import atomic_path
 log = logging.getLogger(__name__)
 
 _BARE_KEY = re.compile(r"^[A-Za-z0-9_-]+$")
+#: Characters a TOML comment may not hold (control characters but tab).
+_COMMENT_CONTROL = re.compile(r"[\x00-\x08\x0a-\x1f\x7f]")
+
+
+def _comment(line: str) -> str:
+    """``line`` as the text of a TOML comment: its control characters written as ``\\xNN``."""
+    return _COMMENT_CONTROL.sub(lambda c: "\\x" + format(ord(c[0]), "02x"), line)
 
 
 def toml_key(key: str) -> str:
@@ -40,8 +47,9 @@ def toml_key(key: str) -> str:
 
 
 def _string(text: str) -> str:
-    # JSON escapes (\\", \\\\, \\n, \\uXXXX) are valid in TOML basic strings.
-    return json.dumps(str(text), ensure_ascii=False)
+    # JSON escapes (\\", \\\\, \\n, \\uXXXX) are valid in TOML basic strings; JSON leaves
+    # DEL (U+007F) as it is, which a TOML string must escape.
+    return json.dumps(str(text), ensure_ascii=False).replace("\x7f", "\\u007f")
 
 
 def toml_value(value) -> str:
@@ -132,7 +140,7 @@ def model_toml(structure: Structure, *, mesh: str | None = None, header: str = "
         Comment lines written at the top (without the ``#``).
     """
     s = structure
-    lines = [f"# {ln}" if ln else "#" for ln in header.splitlines()]
+    lines = [f"# {_comment(ln)}" if ln else "#" for ln in header.splitlines()]
     if lines:
         lines.append("")
     node_ids = s.node_ids if mesh is None else [str(i) for i in range(s.n_nodes)]
@@ -172,14 +180,17 @@ def model_toml(structure: Structure, *, mesh: str | None = None, header: str = "
         if s.is_beam[i]:
             d["type"] = "beam"
             rel = [e for e, r in zip(("start", "end"), s.releases[i]) if r]
-            axes = s.bending_axis_releases[i]
-            if s.torsion_releases[i].any() or axes.any():   # per-end form
+            axes = s.bending_axis_releases[i].copy()
+            tors = s.torsion_releases[i].copy()
+            if s.dim == 2:      # one bending axis (z), no twist: "my", "torsion" mean nothing
+                axes[:, 0] = False
+                tors[:] = False
+            if tors.any() or axes.any():   # per-end form
                 d["releases"] = {e: [w for w, r in (("bending", s.releases[i, k]),
                                                     ("my", axes[k, 0]), ("mz", axes[k, 1]),
-                                                    ("torsion", s.torsion_releases[i, k])) if r]
+                                                    ("torsion", tors[k])) if r]
                                  for k, e in enumerate(("start", "end"))
-                                 if s.releases[i, k] or s.torsion_releases[i, k]
-                                 or axes[k].any()}
+                                 if s.releases[i, k] or tors[k] or axes[k].any()}
             elif rel:
                 d["releases"] = rel
         if s.orientation is not None and np.all(np.isfinite(s.orientation[i])):
@@ -254,7 +265,9 @@ def _member_load_entry(ml, member_ids) -> dict:
     elif ml.kind == "trapezoidal":
         d["q_start"], d["q_end"] = list(ml.q_start), list(ml.q_end)
     else:
-        d["at"], d["F"] = ml.at, list(ml.force)
+        d["at"] = ml.at
+        if ml.force:                # a couple alone has no F
+            d["F"] = list(ml.force)
         if ml.moment:
             d["M"] = list(ml.moment)
     if ml.axes != "global":
@@ -266,7 +279,7 @@ def _load_case_lines(s: Structure, node_ids, member_ids) -> list[str]:
     """``[springs]``, ``[load_cases.NAME]`` and ``[combinations]`` of a model."""
     lines: list[str] = []
     springs = s.extensions.get("springs")
-    if springs is not None and np.any(springs.stiffness):
+    if springs is not None:     # even with no spring: the analyses along a motion refuse it
         lines.append("[springs]")
         for i in np.flatnonzero(np.any(springs.stiffness != 0, axis=1)):
             lines.append(f"{toml_key(node_ids[i])} = "
@@ -466,34 +479,41 @@ def write_model(structure: Structure, path: str | Path, *, mesh: str | None = No
         ``path``.
     """
     path = Path(path)
-    text = model_toml(structure, mesh=mesh, header=header)
-    if mesh is not None:
-        import meshio
+    try:
+        data = (model_toml(structure, mesh=mesh, header=header) + "\n").encode("utf-8")
+    except UnicodeEncodeError as exc:       # a lone surrogate: no TOML text holds it
+        raise OutputError(str(path), f"cannot write: text {exc.object[exc.start:exc.end]!r} "
+                                     f"of the model is not valid Unicode") from None
+    target = None if mesh is None else path.parent / mesh
+    for p in (path, target):
+        if p is not None and p.is_dir():
+            raise OutputError(str(p), "cannot write: Is a directory")
+    if target is None:
+        with atomic_path(path) as tmp:
+            tmp.write_bytes(data)
+        return path
+    import meshio
 
-        pts = np.zeros((structure.n_nodes, 3))
-        pts[:, : structure.dim] = structure.coords
-        groups = _mesh_groups(structure)
-        cell_data = {}
-        if len(groups) > 1:
-            # An integer tag per cell, read back as the group name (the reader's
-            # "gmsh:physical" convention; VTU cannot hold named cell sets).
-            tags = np.zeros(structure.n_members, dtype=np.int64)
-            for g, idx in groups.items():
-                tags[idx] = int(g)
-            cell_data = {"gmsh:physical": [tags]}
-        m = meshio.Mesh(pts, [("line", structure.connectivity)], cell_data=cell_data)
-        target = path.parent / mesh
-        with atomic_path(target) as tmp:
-            meshio.write(tmp, m)        # format from the suffix, which tmp keeps
-        _readable(target)
-    with atomic_path(path) as tmp:
-        tmp.write_text(text + "\n", encoding="utf-8")
-    _readable(path)
+    pts = np.zeros((structure.n_nodes, 3))
+    pts[:, : structure.dim] = structure.coords
+    groups = _mesh_groups(structure)
+    cell_data = {}
+    if len(groups) > 1:
+        # An integer tag per cell, read back as the group name (the reader's
+        # "gmsh:physical" convention; VTU cannot hold named cell sets).
+        tags = np.zeros(structure.n_members, dtype=np.int64)
+        for g, idx in groups.items():
+            tags[idx] = int(g)
+        cell_data = {"gmsh:physical": [tags]}
+    m = meshio.Mesh(pts, [("line", structure.connectivity)], cell_data=cell_data)
+    # Both temporary files are written before either is renamed into place, so that a
+    # failure leaves neither file (nor a model file naming a mesh that is not there).
+    with atomic_path(target) as mesh_tmp:
+        try:
+            meshio.write(mesh_tmp, m)       # format from the suffix, which mesh_tmp keeps
+        except Exception as exc:  # noqa: BLE001 - meshio raises many types
+            message = str(exc).replace(str(mesh_tmp), str(target)) or type(exc).__name__
+            raise OutputError(str(target), f"cannot write the mesh: {message}") from None
+        with atomic_path(path) as tmp:
+            tmp.write_bytes(data)
     return path
-
-
-def _readable(path: Path) -> None:
-    """Give a file written through a private temporary file the usual umask permissions."""
-    mask = os.umask(0)
-    os.umask(mask)
-    os.chmod(path, 0o666 & ~mask)
