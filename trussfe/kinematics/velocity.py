@@ -23,16 +23,32 @@ from ..mechanics.geometry import lengths, member_vectors
 from .compatibility import compatibility_matrix
 
 
+#: Largest residual of an over-determined system, relative to its right-hand side, for its
+#: equations to count as consistent (round-off of the least-squares solution is ~1e-15).
+CONSISTENCY_TOLERANCE = 1e-9
+
+
 def _solve(A: sp.csr_matrix, rhs: np.ndarray, item: str) -> np.ndarray:
-    """Solve the square system by sparse LU or a consistent over-determined one by lstsq."""
+    """Solve the square system by sparse LU or a consistent over-determined one by lstsq.
+
+    An over-determined system whose equations contradict one another (two prescribed rates
+    of one crank pin that do not keep the crank's length) has no solution: it is refused,
+    not answered by the least-squares compromise that keeps no equation."""
     if A.shape[0] == A.shape[1]:
         fac = factor(A, "general", singular="flag")
         if not fac.is_singular:
             return fac.solve(rhs, refine=False)
-    sol, _, rank, _ = np.linalg.lstsq(A.toarray(), rhs, rcond=1e-10)
+    dense = A.toarray()
+    sol, _, rank, _ = np.linalg.lstsq(dense, rhs, rcond=1e-10)
     if rank < A.shape[1]:
         raise AnalysisError(item, "the prescribed motion does not determine every joint "
                                   "velocity (a singular position or too few drives)")
+    scale = max(float(np.abs(rhs).max(initial=0.0)),
+                float(np.abs(dense).max(initial=0.0) * np.abs(sol).max(initial=0.0)))
+    if np.abs(dense @ sol - rhs).max(initial=0.0) > CONSISTENCY_TOLERANCE * scale:
+        raise AnalysisError(item, "the prescribed rates contradict one another (more drives "
+                                  "than degrees of freedom that the bars do not allow "
+                                  "together): prescribe consistent rates or fewer of them")
     return sol
 
 
@@ -134,6 +150,8 @@ def mechanism_acceleration(coords: np.ndarray, connectivity: np.ndarray, free: n
     rhs_b = lddot - (np.einsum("ij,ij->i", vrel, vrel) - ldot ** 2) / L
     B = compatibility_matrix(x, conn, free)
     keys = np.array(list(prescribed), dtype=np.int64)
+    if np.any(col[keys] < 0):
+        raise AnalysisError("acceleration", "a prescribed coordinate is fixed by a support")
     E = sp.csr_matrix((np.ones(keys.size), (np.arange(keys.size), col[keys])),
                       shape=(keys.size, fidx.size))
     rhs = np.concatenate([rhs_b, [prescribed[int(k)] for k in keys]])
