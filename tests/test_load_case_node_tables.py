@@ -50,3 +50,26 @@ def test_other_load_shapes_are_refused(truss, shape):
 def test_springs_of_another_shape_are_refused(truss):
     with pytest.raises(ValueError, match="springs"):
         truss.variant(extensions={"springs": Springs(np.zeros((2, truss.loads.shape[1])))})
+
+
+def test_a_member_named_twice_in_one_entry_is_refused(tmp_path):
+    """``temperature = [{ members = ["active", "active"], delta_T = 30 }]`` would heat the
+    member twice (entries add up): refused, naming the file, the entry and the member; two
+    entries naming it add up as documented."""
+    from pathlib import Path
+    src = (Path(__file__).resolve().parents[1] / MODEL).read_text()
+    base = (src.replace("[loads]\nB = [0.0, -98.1]\n", "")
+            .replace("[materials.aluminium]\n",
+                     "[materials.aluminium]\nthermal_expansion = 2.3e-5\n"))
+    twice = base + ('\n[load_cases.heat]\ntemperature = '
+                    '[{ members = ["active", "active"], delta_T = 30.0 }]\n')
+    path = tmp_path / "twice.toml"
+    path.write_text(twice)
+    with pytest.raises(trussfe.InputError, match=r"twice.toml: load_cases.heat.temperature"
+                                                 r"\[0\].members: member 'active' is named twice"):
+        trussfe.read_model(path)
+    two = base + ('\n[load_cases.heat]\ntemperature = [{ member = "active", delta_T = 30.0 }, '
+                  '{ members = ["active"], delta_T = 30.0 }]\n')
+    path.write_text(two)
+    case = trussfe.read_model(path).extensions["load_cases"].cases[0]
+    assert case.delta_T[list(trussfe.read_model(path).member_ids).index("active")] == 60.0

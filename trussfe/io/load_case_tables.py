@@ -159,6 +159,12 @@ def _member_values(raw: Any, structure: Structure, item: str, value_key: str
             raise InputError(f"{where}.members", "expected a list of member ids")
         idx = [_member(structure, mid, f"{where}.member{'s' if 'members' in entry else ''}")
                for mid in ids]
+        if len(set(idx)) < len(idx):
+            # entries add up, so a member named twice in one list would take the value twice:
+            # more likely a slip than a meaning
+            twice = next(ids[k] for k in range(len(idx)) if idx[k] in idx[:k])
+            raise InputError(f"{where}.members", f"member '{twice}' is named twice; name it "
+                             "once (or give a second entry to add to it)")
         np.add.at(out, idx, value)
     return out
 
