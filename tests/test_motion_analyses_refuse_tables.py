@@ -72,3 +72,13 @@ def test_model_without_those_tables_runs(tmp_path):
     shutil.copy(MOTION, tmp_path / MOTION.name)
     r = trussfe.simulate(MODEL, motion=tmp_path / MOTION.name)
     assert r.axial_force.shape[0] == 201
+
+
+def test_springs_of_zero_stiffness_are_no_springs(tmp_path):
+    """A ``[springs]`` table whose stiffnesses are all zero holds nothing: the motion
+    analyses run the model as without it."""
+    path = _variant(tmp_path, "springs")
+    path.write_text(path.read_text().replace("N8 = { x = 1.0e4 }", "N8 = { x = 0.0 }"))
+    r = trussfe.simulate(path, motion=tmp_path / MOTION.name)
+    base = trussfe.simulate(MODEL, motion=tmp_path / MOTION.name)
+    assert (r.axial_force == base.axial_force).all()

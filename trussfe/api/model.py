@@ -132,7 +132,8 @@ def refuse_unapplied(structure: Structure, command: str) -> Structure:
         raise InputError(f"{source}: load_cases", f"{command} applies [loads] and [model] "
                          "gravity, not load cases: give the loads to apply as [loads] of a "
                          "model without [load_cases]")
-    if ext.get("springs"):
+    springs = ext.get("springs")
+    if springs is not None and np.any(springs.stiffness > 0):
         raise InputError(f"{source}: springs", f"{command} models no elastic supports: the "
                          "structure moves on its [supports] alone; give the springs as "
                          "supports or remove them")
