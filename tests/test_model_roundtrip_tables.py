@@ -325,13 +325,18 @@ def test_point_couple_without_force(tmp_path):
 
 
 def test_springs_table_without_a_spring(tmp_path):
-    """A ``[springs]`` table of zero stiffnesses is written (empty): the analyses along a
-    motion refuse a model with the table, before and after."""
+    """A ``[springs]`` table of zero stiffnesses is written (empty) and reads back the same:
+    the analyses along a motion treat the model alike before and after (no spring to refuse),
+    while a spring of some stiffness is refused in both."""
     from trussfe.api.model import refuse_unapplied
 
     s = trussfe.model_from_dict(_two_d(springs={"B": {"x": 0.0}}))
     r = trussfe.read_model(write_model(s, tmp_path / "m.toml"))
     assert model_differences(s, r) == []
+    for model in (s, r):
+        assert refuse_unapplied(model, "simulate") is model
+    s = trussfe.model_from_dict(_two_d(springs={"B": {"x": 1.0e3}}))
+    r = trussfe.read_model(write_model(s, tmp_path / "k.toml"))
     for model in (s, r):
         with pytest.raises(trussfe.errors.InputError, match="springs"):
             refuse_unapplied(model, "simulate")
