@@ -61,15 +61,18 @@ class TrussfeError(Exception):
         self.message = message
         super().__init__(one_line(f"{item}: {message}" if item else message))
 
-    def with_file(self, filename: str) -> "TrussfeError":
-        """Return a copy of the error whose item is prefixed with ``filename``."""
-        item = f"{filename}: {self.item}" if self.item else filename
+    def with_item(self, item: str) -> "TrussfeError":
+        """Return a copy of the error (its type and attributes) naming ``item`` instead."""
         err = type(self).__new__(type(self))
         TrussfeError.__init__(err, item, self.message)
         for k, v in self.__dict__.items():
             if k not in ("item", "message", "args"):
                 setattr(err, k, v)
         return err
+
+    def with_file(self, filename: str) -> "TrussfeError":
+        """Return a copy of the error whose item is prefixed with ``filename``."""
+        return self.with_item(f"{filename}: {self.item}" if self.item else filename)
 
 
 class InputError(TrussfeError):

@@ -19,6 +19,16 @@ from .results import Result
 SOLVERS = ("auto", "superlu", "pardiso")
 
 
+def solves_one_case(structure, *, case: str | None = None, combination: str | None = None,
+                    all_cases: bool = False) -> bool:
+    """Whether :func:`static` gives one result (a :class:`StaticResult`: the chosen case or
+    combination, or the loads of a model without ``[load_cases]``) rather than every case and
+    combination (a :class:`LoadCasesResult`)."""
+    if case is not None or combination is not None:
+        return True
+    return not all_cases and "load_cases" not in structure.extensions
+
+
 @numerics_checked
 def static(model: ModelLike, *, bar_model: str = "truss", subdivisions: int | None = None,
            solver: str = "auto", case: str | None = None, combination: str | None = None,
@@ -74,7 +84,7 @@ def static(model: ModelLike, *, bar_model: str = "truss", subdivisions: int | No
         from ..errors import InputError
         raise InputError("--solver", "PARDISO is not available (pip install pypardiso); "
                          "use --solver superlu")
-    if not chosen and "load_cases" not in structure.extensions:
+    if not chosen and solves_one_case(structure):
         # the model's [loads] and gravity: the one implicit case, solved as always
         return StaticResult(structure, solve_static(structure, bar_model=bar_model,
                                                     subdivisions=subdivisions,

@@ -68,8 +68,8 @@ def write_vtk(path: str | Path, result: StaticResult) -> Path | None:
     """``OUT.vtu`` and, for beams and loaded members, ``OUT_stations.vtu`` beside it
     (:func:`trussfe.io.vtk_results.write_static`; nothing along the members of a truss
     without member loads).  Returns the stations file, None when there is none."""
-    from ..io.vtk_results import write_static    # meshio: only when a VTU is asked for
-    stations = bool(np.any(result.fe.is_frame) or result.member_loads is not None)
+    from ..io.vtk_results import has_stations, write_static   # meshio: only when asked for
+    stations = has_stations(result)
     written = write_static(path, result, stations=stations)
     return Path(written[1]) if stations else None
 
@@ -84,7 +84,7 @@ def write_collection(path: str | Path, solution) -> Path:
     from ..errors import InputError
 
     path = Path(path)
-    if path.suffix not in (".vtu", ".pvd"):
+    if path.suffix not in VTK_SUFFIXES:
         raise InputError(str(path), "VTK output of several load cases must end in .vtu or "
                                     ".pvd (a .pvd collection is written)")
     stem = path.with_suffix("")
@@ -196,10 +196,10 @@ def _extreme(kind: str, force: float, member: str, over: str, name: str) -> str:
 
 def _one_case(args: argparse.Namespace, structure) -> bool:
     """Whether the run solves one case (one ``.vtu``) rather than every load case (a
-    ``.pvd`` collection), as :func:`trussfe.static` decides."""
-    if args.case is not None or args.combination is not None:
-        return True
-    return not args.all_cases and "load_cases" not in structure.extensions
+    ``.pvd`` collection): :func:`trussfe.api.linear.solves_one_case`."""
+    from ..api.linear import solves_one_case
+    return solves_one_case(structure, case=args.case, combination=args.combination,
+                           all_cases=args.all_cases)
 
 
 def _main(args: argparse.Namespace) -> int:

@@ -209,11 +209,8 @@ def _null_space(Kff, free, K) -> tuple[np.ndarray, bool]:
     matrices: :func:`~trussfe.linalg.stiffness_null_space`.
     """
     if K is not None and Kff.shape[0] > 2:
-        Kc = sp.csr_matrix(K)
-        if not Kc.has_canonical_format:
-            Kc = Kc.copy()
-            Kc.sum_duplicates()
-        layout = band_layout_free(Kc, np.asarray(free, dtype=np.int64),
+        # (band_layout_free brings K to canonical form itself)
+        layout = band_layout_free(K, np.asarray(free, dtype=np.int64),
                                   max_bandwidth=BANDED_MAX_BANDWIDTH, submatrix=lambda: Kff)
         if layout is not None:
             return band_null_space(layout, NULL_TOLERANCE, BAND_NULL_VECTORS)

@@ -83,6 +83,12 @@ def static_station_fields(result) -> tuple[np.ndarray, dict]:
     return xi, fields
 
 
+def has_stations(result) -> bool:
+    """Whether a static result has fields along its members worth a ``_stations`` file: beams
+    (subdivided members) or member loads; a truss without member loads has none."""
+    return bool(np.any(result.fe.is_frame) or result.member_loads is not None)
+
+
 def write_static(path: str | Path, result, stations: bool = True) -> list[Path]:
     """Write a static result: ``path`` (nodes and members) and ``<stem>_stations.vtu``.
 
@@ -94,7 +100,8 @@ def write_static(path: str | Path, result, stations: bool = True) -> list[Path]:
         the member).
     result : StaticResult
     stations : bool
-        Also write the fields along the members (:func:`static_station_fields`).
+        Also write the fields along the members (:func:`static_station_fields`; the command
+        writes them where :func:`has_stations`).
 
     Returns
     -------

@@ -389,7 +389,9 @@ def _tangent_factor(K):
     fixed direction (docs/postcritical.md, *Moments*): a cantilever rolled up by an end
     moment under arc-length control met one such pivot at every state near λ = 0.97 of
     ``M = 2πEI/L`` and the path stopped there.  Partial pivoting tells such a breakdown from
-    a singular tangent, which it still refuses (:class:`SingularMatrixError`).
+    a singular tangent, which it still refuses (:class:`SingularMatrixError`).  SuperLU's
+    symmetric mode takes that LU itself (:func:`trussfe.linalg.factor`); the fallback here
+    serves PARDISO's ``LDLᵀ`` of large tangents, which calls perturbed pivots singular.
 
     Parameters
     ----------

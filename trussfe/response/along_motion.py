@@ -35,14 +35,13 @@ cross-check Lacy could not make because MSC/PAL lumps member weight at the nodes
 from __future__ import annotations
 
 import logging
-from dataclasses import dataclass, field, replace
-
 from collections.abc import Sequence
+from dataclasses import dataclass, field, replace
 from typing import Callable
 
 import numpy as np
 
-from ..budget import along_motion_bytes, require
+from ..budget import along_motion_bytes, count_text, require
 from ..errors import AnalysisError, InputError, MechanismError, TrussfeError
 from ..fem.discretisation import FEModel, discretise
 from ..fem.solver import factorise, solve_free
@@ -53,7 +52,6 @@ from ..model.structure import Structure
 from ..rigid.forces import MemberBodies, member_bodies
 from ..rigid.kinematics import Kinematics
 from ..rigid.sections import SectionForces
-from ..budget import count_text
 from .loads import MotionLoads, element_load_components, motion_loads, rotations3
 
 log = logging.getLogger(__name__)
@@ -141,12 +139,7 @@ def step_item(item: str, step: int, time: float) -> str:
 
 def error_at_step(err: TrussfeError, step: int, time: float) -> TrussfeError:
     """A copy of ``err`` whose item names the step of the motion (:func:`step_item`)."""
-    out = type(err).__new__(type(err))
-    TrussfeError.__init__(out, step_item(err.item, step, time), err.message)
-    for key, value in err.__dict__.items():
-        if key not in ("item", "message", "args"):
-            setattr(out, key, value)
-    return out
+    return err.with_item(step_item(err.item, step, time))
 
 
 def _first_copy(names) -> int | None:

@@ -66,7 +66,7 @@ import numpy as np
 import scipy.linalg as sla
 import scipy.sparse.linalg as spla
 
-from ..budget import along_motion_bytes, require
+from ..budget import along_motion_bytes, count_text, require
 from ..errors import UNITS_ADVICE, AnalysisError, InputError, MechanismError, TrussfeError
 from ..fem.discretisation import FEModel, discretise
 from ..model.bar_models import BAR_MODELS
@@ -79,7 +79,6 @@ from ..rigid.forces import member_bodies
 from ..rigid.kinematics import Kinematics
 from ..rigid.motion import Motion
 from ..rigid.simulate import simulate
-from ..budget import count_text
 from .along_motion import error_at_step
 from .loads import hermite
 from .transient_fe import assemble_block, massless_active
