@@ -279,7 +279,7 @@ def _load_case_lines(s: Structure, node_ids, member_ids) -> list[str]:
     """``[springs]``, ``[load_cases.NAME]`` and ``[combinations]`` of a model."""
     lines: list[str] = []
     springs = s.extensions.get("springs")
-    if springs is not None:     # even with no spring: the analyses along a motion refuse it
+    if springs is not None:     # even with no spring: the model reads back as it was
         lines.append("[springs]")
         for i in np.flatnonzero(np.any(springs.stiffness != 0, axis=1)):
             lines.append(f"{toml_key(node_ids[i])} = "
