@@ -2,7 +2,8 @@
 """Global equilibrium of a static result, checked from the model's own data.
 
 The applied loads are taken from the structure (nodal forces and moments, the weight of every
-member at its midpoint, the weight of every nodal mass), not from the FE load vector, so that
+member at its centre of gravity — an active member's base and leadscrew tube — and of every
+nodal mass), not from the FE load vector, so that
 a load or reaction lost in the discretisation (a hidden support, a dropped moment) shows.
 Loads along members (``member_loads``) are replaced by their statically equivalent forces and
 couples, computed here from the load data alone.
@@ -19,7 +20,8 @@ def member_load_resultants(structure, member_loads):
     equivalent to the member loads: a linearly varying load ``q₁ → q₂`` over a member of
     length L from ``X_a`` along ``e`` is the force ``(q₁ + q₂)L/2`` with the moment
     ``X_a × F + e × (q₁L²/6 + q₂L²/3)`` about the origin (∫ s q(s) ds), written as the force
-    at ``X_a`` plus that couple; a point load is its force at ``X_a + aLe`` and its couple."""
+    at ``X_a`` plus that couple (on a span ``[c, d]`` of length ℓ: ``(q₁ + q₂)ℓ/2`` and
+    ``c F + q₁ℓ²/6 + q₂ℓ²/3``); a point load is its force at ``X_a + aLe`` and its couple."""
     from trussfe.mechanics.geometry import local_axes
     s = structure
     dim = s.dim
@@ -45,8 +47,10 @@ def member_load_resultants(structure, member_loads):
                 couples.append(c[None])
             continue
         q1, q2 = glob(ld.q_start), glob(ld.q_end)
-        F = 0.5 * (q1 + q2) * L[i]
-        first = q1 * L[i] ** 2 / 6 + q2 * L[i] ** 2 / 3            # ∫ s q(s) ds
+        c, d = ld.span[0] * L[i], ld.span[1] * L[i]               # the loaded part
+        ell = d - c
+        F = 0.5 * (q1 + q2) * ell
+        first = c * F + q1 * ell ** 2 / 6 + q2 * ell ** 2 / 3      # ∫ s q(s) ds over [c, d]
         forces.append(F[None])
         points.append(Xa[None])
         if dim == 2:
@@ -54,6 +58,27 @@ def member_load_resultants(structure, member_loads):
         else:
             couples.append(np.cross(e[i], first)[None])
     return forces, points, couples
+
+
+def member_masses(structure):
+    """Mass and centre of gravity of every member: a uniform member ρAL at its midpoint; an
+    active member its base (``base_mass`` at ``base_cg`` from the start node) and its
+    leadscrew tube (ρA·tube_length centred tube_length/2 from the end node), from the model
+    data by hand (docs/model-format.md, ``[active_members]``)."""
+    s = structure
+    X = s.coords
+    a, b = X[s.connectivity[:, 0]], X[s.connectivity[:, 1]]
+    L = s.lengths()
+    mass = s.density * s.area * L
+    cg = 0.5 * (a + b)
+    for act in s.extensions.get("active_members", ()):
+        j = act.member
+        e = (b[j] - a[j]) / L[j]
+        tube = s.density[j] * s.area[j] * act.tube_length
+        mass[j] = act.base_mass + tube
+        cg[j] = (act.base_mass * (a[j] + act.base_cg * e)
+                 + tube * (b[j] - 0.5 * act.tube_length * e)) / mass[j]
+    return mass, cg
 
 
 def resultants(structure, reactions: np.ndarray, loads: np.ndarray | None = None,
@@ -75,10 +100,9 @@ def resultants(structure, reactions: np.ndarray, loads: np.ndarray | None = None
     points = [X, X]
     couples = [P[:, dim:], R[:, dim:]]
     if self_weight and np.any(g):
-        w = (s.density * s.area * s.lengths())[:, None] * g[None, :]       # member weights
-        mid = 0.5 * (X[s.connectivity[:, 0]] + X[s.connectivity[:, 1]])
-        forces += [w, s.masses[:, None] * g[None, :]]
-        points += [mid, X]
+        mass, cg = member_masses(s)
+        forces += [mass[:, None] * g[None, :], s.masses[:, None] * g[None, :]]
+        points += [cg, X]
     ml = s.extensions.get("member_loads", ()) if member_loads is None else member_loads
     mf, mp, mc = member_load_resultants(s, ml)
     forces += mf

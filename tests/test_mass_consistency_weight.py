@@ -350,16 +350,11 @@ def test_postcritical_dead_load_is_the_hand_weight(bar_model):
 
 
 # ---------------------------------------------------------------------- active members
-# static, buckling and postcritical weigh an active member as a uniform tube ρAL of its
-# whole length and leave its base out; simulate, elastic, transient and modes count the base
-# and the tube.  The tests below hold once the former count them as the latter do.
-ACTIVE_STATIC = ("static, buckling and postcritical weigh an active member as a uniform "
-                 "member of its section (ρAL), without its base and leadscrew tube (fem.md, "
-                 "Bar models): the triangle 11.449 kg against 13.688 kg in simulate, elastic "
-                 "and modes; one bay 4.348 against 12.692 kg")
+# every analysis weighs an active member as its base and its leadscrew tube: static,
+# buckling and postcritical (loads along the finite-element member, lumped by the lever rule
+# in the post-critical elements) as simulate, elastic, transient and modes do
 
 
-@pytest.mark.xfail(strict=True, reason=ACTIVE_STATIC)
 @pytest.mark.parametrize("bar_model,subdivisions", [("truss", None), ("pinned-beam", 4)])
 @pytest.mark.parametrize("name", ["triangle", "octahedron", "tripod"])
 def test_static_counts_active_member_bases(name, bar_model, subdivisions):
@@ -370,7 +365,6 @@ def test_static_counts_active_member_bases(name, bar_model, subdivisions):
     check_reactions(s, r.reaction)
 
 
-@pytest.mark.xfail(strict=True, reason=ACTIVE_STATIC)
 @pytest.mark.parametrize("name", ["triangle", "octahedron"])
 def test_static_equals_simulate_at_rest_with_active_members(name):
     """docs/rigid-body.md and docs/cli.md: simulate without a motion can be compared with
@@ -382,7 +376,6 @@ def test_static_equals_simulate_at_rest_with_active_members(name):
     assert_allclose(np.asarray(sim.reaction)[0], st.reaction, rtol=0, atol=RTOL * scale)
 
 
-@pytest.mark.xfail(strict=True, reason=ACTIVE_STATIC)
 def test_buckling_static_state_counts_active_member_bases():
     """The buckling analysis's static state under gravity: the follower's force is that of
     elastic at rest (same FE members, base weight included)."""
@@ -393,7 +386,6 @@ def test_buckling_static_state_counts_active_member_bases():
     assert_allclose(b.axial_force[j], np.asarray(el.axial_force)[0, j], rtol=1e-6)
 
 
-@pytest.mark.xfail(strict=True, reason=ACTIVE_STATIC)
 @pytest.mark.parametrize("bar_model", ["truss", "pinned-beam"])
 def test_postcritical_dead_load_counts_active_member_bases(bar_model):
     s = tripod(active=True)
@@ -410,13 +402,50 @@ def test_hand_masses_of_the_triangular_truss():
     assert_allclose(hand_mass(s)[0], 13.688066246, rtol=1e-9)
 
 
-def test_static_notes_how_it_weighs_active_members(capsys):
-    """The finite-element analyses say that they weigh active members as uniform members: one
-    note line, exit status 0; none for a model without active members."""
+def test_static_of_active_members_runs_without_a_note(capsys):
+    """static weighs the hardware of [active_members] as every other analysis does: exit
+    status 0 and nothing on stderr."""
     from trussfe.cli import main
     root = Path(__file__).resolve().parents[1] / "meshes"
     assert main(["static", str(root / "double_octahedron_actuators.toml")]) == 0
-    err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 1 and err[0].startswith("trussfe: note: static weighs each active member")
-    assert main(["static", str(root / "double_octahedron_equilibrium.toml")]) == 0
-    assert capsys.readouterr().err == ""
+    assert capsys.readouterr().err.strip() == ""
+
+
+@pytest.mark.parametrize("bar_model", ["truss", "pinned-beam"])
+def test_load_case_combination_counts_active_member_bases(bar_model):
+    """A dead case (gravity) and a live case (a nodal load) of the tripod with its active
+    member, combined 1.35 dead + 1.5 live: the case reactions carry the hand weight, the
+    combination's 1.35 of it plus 1.5 of the load (statics, linear superposition)."""
+    from trussfe.fem.load_cases import solve_load_cases
+    from trussfe.model.load_cases import Combination, LoadCase, LoadCases
+    s = tripod(active=True)
+    live = np.zeros_like(s.loads)
+    top = int(np.argmax(s.coords[:, 2]))
+    live[top, :3] = [120.0, -40.0, -300.0]
+    table = LoadCases(cases=(LoadCase("dead", np.zeros_like(s.loads), gravity=True),
+                             LoadCase("live", live)),
+                      combinations=(Combination("ULS", (("dead", 1.35), ("live", 1.5))),))
+    sol = solve_load_cases(s.with_extensions(load_cases=table), bar_model=bar_model)
+    m, _ = hand_mass(s)
+    W = m * np.asarray(s.gravity)
+    dead = sol.cases["dead"].reactions[:, :3].sum(axis=0)
+    assert_allclose(dead, -W, rtol=1e-9)
+    uls = sol.combinations["ULS"].reactions[:, :3].sum(axis=0)
+    assert_allclose(uls, -(1.35 * W + 1.5 * live[top, :3]), rtol=1e-9)
+
+
+@pytest.mark.parametrize("name", ["triangle", "octahedron", "chain3"])
+def test_static_truss_active_member_carries_the_actuator_force(name):
+    """An active member modelled as a truss bar keeps its bodies' weight at its joints, the
+    base's axial share at the start joint and the tube's at the end joint: its axial force is
+    the force at the cantilever connection, which the rigid-body model (Lacy eqs. 4.63–4.67,
+    an independent Newton–Euler solution) reports as the actuator force at rest (positive
+    pushing the tube out, i.e. compression)."""
+    from trussfe.rigid.motion import rest_motion
+    from trussfe.rigid.simulate import simulate
+    s = ACTIVE[name]()
+    rigid = simulate(s, rest_motion(s))
+    st = trussfe.static(s)
+    idx = [a.member for a in s.extensions["active_members"]]
+    assert_allclose(st.axial_force[idx], -np.asarray(rigid.actuator_force)[0],
+                    rtol=1e-9, atol=1e-9 * float(np.abs(st.axial_force).max()))

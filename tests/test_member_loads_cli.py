@@ -112,9 +112,12 @@ def test_model_format_member_load_examples_run(tmp_path, capsys):
     assert main(["static", str(p), "--json", str(out)]) == 0
     doc = json.loads(out.read_text())
     assert {"AB", "BC"} <= {m for m, v in doc["members"].items() if "stations" in v}
-    # the reactions carry the whole vertical load: 800 N/m × 4 m + 300 N
+    # the reactions carry the whole vertical load: 800 N/m × 4 m + 300 N + 500 N/m on the
+    # second half of BC (2 m)
     Rz = sum(doc["nodes"][n]["reaction"][2] for n in ("A", "D"))
-    assert Rz == pytest.approx(800.0 * 4.0 + 300.0, rel=1e-10)
+    assert Rz == pytest.approx(800.0 * 4.0 + 300.0 + 500.0 * 2.0, rel=1e-10)
+    # the start of the span is a station of BC
+    assert 2.0 in doc["members"]["BC"]["stations"]["x"]
     table_form = next(b for b in blocks if b.startswith("[[member_loads]]"))
     from trussfe.io import toml_text
     assert toml_text.loads(table_form)["member_loads"][0] == toml_text.loads(

@@ -10,7 +10,7 @@ import numpy as np
 from ..linalg.pardiso import available as pardiso_available
 from ..fem.load_cases import load_cases_json, solve_load_cases
 from ..fem.static import solve_static
-from .model import ModelLike, as_structure, note_uniform_active_members
+from .model import ModelLike, as_structure
 from .options import choice, flag, positive_int, progress_callback
 from .numerics import numerics_checked
 from .results import Result
@@ -79,7 +79,6 @@ def static(model: ModelLike, *, bar_model: str = "truss", subdivisions: int | No
         raise InputError(chosen[1], f"give one of --case, --combination and --all, not "
                                     f"{' and '.join(chosen)}")
     structure = as_structure(model)
-    note_uniform_active_members(structure, "static")
     if solver == "pardiso" and not pardiso_available():
         from ..errors import InputError
         raise InputError("--solver", "PARDISO is not available (pip install pypardiso); "
@@ -205,7 +204,6 @@ def buckling(model: ModelLike, *, count: int = 4, bar_model: str = "pinned-beam"
     count = positive_int("--count", count, optional=False)
     subdivisions = positive_int("--subdivisions", subdivisions)
     structure = as_structure(model)
-    note_uniform_active_members(structure, "buckling")
     from ..fem.buckling import solve_buckling   # imported on first use: start-up
 
     if case is not None and combination is not None:

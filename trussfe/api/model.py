@@ -8,7 +8,6 @@ every check and every error message is the file reader's.
 """
 from __future__ import annotations
 
-import logging
 import os
 from collections.abc import Mapping
 from pathlib import Path
@@ -138,23 +137,6 @@ def refuse_unapplied(structure: Structure, command: str) -> Structure:
                          "structure moves on its [supports] alone; give the springs as "
                          "supports or remove them")
     return structure
-
-
-def note_uniform_active_members(structure: Structure, command: str) -> None:
-    """Log a note when ``command`` (a finite-element analysis: static, buckling,
-    postcritical) weighs a model whose ``[active_members]`` describe their hardware.
-
-    Those analyses model every member as a uniform member of its section, weighing ρAL; the
-    active base (``base_mass`` at ``base_cg``) and the leadscrew tube over ``tube_length``,
-    which the analyses along a motion and ``modes`` weigh instead, are not in them.  Under
-    gravity their weights then differ: the note says so rather than leave it unseen.
-    """
-    if not structure.extensions.get("active_members") or not np.any(structure.gravity):
-        return
-    logging.getLogger("trussfe").warning(
-        "note: %s weighs each active member as a uniform member of its section (ρAL); the "
-        "active bases and leadscrew tubes of [active_members], which simulate, elastic, "
-        "transient and modes weigh, are not in its self-weight", command)
 
 
 def model_folder(structure: Structure) -> Path | None:

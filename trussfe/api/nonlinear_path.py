@@ -8,7 +8,7 @@ from typing import Callable, ClassVar
 import numpy as np
 
 from ..errors import InputError
-from .model import ModelLike, as_structure, note_uniform_active_members
+from .model import ModelLike, as_structure
 from .options import choice, flag, positive_int, progress_callback, real
 from .numerics import numerics_checked
 from .results import Result
@@ -84,7 +84,6 @@ def postcritical(model: ModelLike, *, control: str | None = None, steps: int | N
     if monitor is not None and not isinstance(monitor, str):
         raise InputError("--monitor", f"expected NODE:AXIS (e.g. 3:y), got {monitor!r}")
     structure = as_structure(model)
-    note_uniform_active_members(structure, "postcritical")
     return PostcriticalResult(structure, run_postcritical(
         structure, control=control, steps=steps, step=step, max_load_factor=max_load_factor,
         max_displacement=max_displacement, monitor=monitor, bar_model=bar_model,

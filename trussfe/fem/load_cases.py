@@ -29,8 +29,8 @@ from ..model.load_cases import Combination, LoadCase, LoadCases, model_load_case
 from ..model.structure import DOF_NAMES, Structure
 from .discretisation import FEModel, discretise
 from .member_loads import MemberLoadVectors, member_load_vector
-from .static import (SECTION_FORCE_NAMES, LinearSystem, StaticResult, reacting_nodes,
-                     static_json)
+from .static import (SECTION_FORCE_NAMES, LinearSystem, StaticResult, active_member_weight,
+                     reacting_nodes, static_json)
 
 
 @dataclass
@@ -49,12 +49,16 @@ class CaseLoad:
         Prescribed displacements of the fixed DOFs (None: the supports do not move).
     member_loads : MemberLoadVectors, optional
         The case's loads along members (None: none), included in ``f`` and ``f_local``.
+    applied : tuple of MemberLoad
+        Those loads as given: the case's own and, with gravity, the weight of its active
+        frame members (:func:`~trussfe.fem.static.active_member_weight`).
     """
 
     f: np.ndarray
     f_local: list[np.ndarray]
     u_prescribed: np.ndarray | None = None
     member_loads: MemberLoadVectors | None = None
+    applied: tuple = ()
 
 
 def imposed_strain_local(fe: FEModel, case: LoadCase) -> list[np.ndarray] | None:
@@ -143,12 +147,18 @@ def case_load(fe: FEModel, case: LoadCase) -> CaseLoad:
             if np.any(fl):
                 f_local[k] = f_local[k] + fl
                 f += g.T.T @ fl                  # the joint loads equivalent to them
-    mlv = member_load_vectors(fe, case.member_loads)
+    # with gravity, active members weigh their base and leadscrew tube, not ρAL
+    applied = tuple(case.member_loads)
+    if case.gravity:
+        joints, along = active_member_weight(fe)
+        f = f + joints
+        applied = applied + along
+    mlv = member_load_vectors(fe, applied)
     if mlv is not None:
         f = f + mlv.global_vector
         f_local = [a + b for a, b in zip(f_local, mlv.local)]
     return CaseLoad(f=f, f_local=f_local, u_prescribed=prescribed_vector(fe, case),
-                    member_loads=mlv)
+                    member_loads=mlv, applied=applied)
 
 
 # ---------------------------------------------------------------------------- envelope
@@ -333,7 +343,7 @@ def solve_load_cases(structure: Structure, cases: Sequence[str] | None = None,
         nf, nr = np.linalg.norm(rhs[fe.free]), np.linalg.norm(r[fe.free])
         # the member loads of the combination (for the section forces along loaded members)
         scaled = [ml.scaled(a[j]) for j, n in enumerate(order) if a[j] != 0.0
-                  for ml in table.case(n).member_loads]
+                  for ml in loads[j].applied]
         combined[combo.name] = system.recover(u, f, float(nr / nf) if nf > 0 else float(nr),
                                               f_local, R @ a, member_load_vectors(fe, scaled))
     return LoadCaseSolution(fe=fe, load_cases=table, cases=results, combinations=combined,

@@ -3,7 +3,8 @@
 fixed-end forces that member-force recovery subtracts.
 
 A member load (:mod:`trussfe.model.member_loads`) is cut over the sub-elements of its member:
-a distributed load goes to every sub-element with its intensity at the sub-element's ends, a
+a distributed load goes to every sub-element its span covers, with its intensity at the ends
+of the covered part (a sub-element covered in part takes the load on that part only), a
 point load to the one sub-element containing it (anywhere along it, not only at its nodes).
 On each sub-element its equivalent end loads are the fixed-end forces of
 :mod:`trussfe.mechanics.member_loads` — Timoshenko (or Euler–Bernoulli) shape functions on
@@ -29,9 +30,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from ..mechanics.member_loads import (AT_STATION, linear_load_bending, linear_load_p1, point_load_bending,
-                                      point_load_p1, section_forces_along,
-                                      shear_parameter)
+from ..mechanics.member_loads import (AT_STATION, linear_load_bending, linear_load_p1,
+                                      part_load_bending, part_load_p1, point_load_bending,
+                                      point_load_p1, section_forces_along, shear_parameter,
+                                      span_integrals)
 from ..model.member_loads import MemberLoad, load_arrays
 from .discretisation import FEModel
 
@@ -53,6 +55,9 @@ class MemberLoadVectors:
     point : ndarray of bool, shape (l,)
     at : ndarray, shape (l,)
         Position of point loads, m from the start node.
+    span : ndarray, shape (l, 2)
+        Span of distributed loads, m from the start node (``q1`` acts at its start, ``q2``
+        at its end).
     element_axial : ndarray, shape (n_elements,)
         Per element, its length-average axial force minus the mean of its two end values
         (:func:`element_axial_correction`).
@@ -68,11 +73,12 @@ class MemberLoadVectors:
     F: np.ndarray
     C: np.ndarray
     element_axial: np.ndarray
+    span: np.ndarray
 
 
 def local_member_loads(fe: FEModel, loads: Sequence[MemberLoad]):
-    """The loads in member axes, padded to 3 components: ``(member, point, q1, q2, a, F, C)``
-    with ``a`` in m from the start node."""
+    """The loads in member axes, padded to 3 components: ``(member, point, q1, q2, a, F, C,
+    span)`` with ``a`` and ``span`` in m from the start node."""
     s = fe.structure
     dim = s.dim
     try:
@@ -91,7 +97,7 @@ def local_member_loads(fe: FEModel, loads: Sequence[MemberLoad]):
     if dim == 3:
         C = np.where(arr.local[:, None], C, np.einsum("lij,lj->li", R, C))
     L = fe.structure.lengths()[mem] if mem.size else np.zeros(0)
-    return mem, arr.point, q1, q2, arr.at * L, F, C
+    return mem, arr.point, q1, q2, arr.at * L, F, C, arr.span * L[:, None]
 
 
 def member_load_vector(fe: FEModel, loads: Sequence[MemberLoad]) -> MemberLoadVectors:
@@ -113,17 +119,22 @@ def member_load_vector(fe: FEModel, loads: Sequence[MemberLoad]) -> MemberLoadVe
         A couple about the axis of a member that has no torsion field.
     """
     s = fe.structure
-    mem, point, q1, q2, a, F, C = local_member_loads(fe, loads)
+    mem, point, q1, q2, a, F, C, span = local_member_loads(fe, loads)
     L = s.lengths()
     k = fe.member_subdivisions
     first = fe.member_elements[:-1]
-    # (load, element) pairs: distributed loads on every element of their member, point
-    # loads on the element holding them
+    # (load, element) pairs: distributed loads on every element their span covers (in
+    # part, or over a length of round-off: dropped), point loads on the element holding them
     dist = np.flatnonzero(~point)
     reps = k[mem[dist]]
     d_load = np.repeat(dist, reps)
     d_el = first[mem[d_load]] + (np.arange(d_load.size)
                                  - np.repeat(np.cumsum(reps) - reps, reps))
+    c, d = span[d_load, 0], span[d_load, 1]
+    lo = np.maximum(fe.element_x[d_el, 0], c)
+    hi = np.minimum(fe.element_x[d_el, 1], d)
+    keep = hi - lo > AT_STATION * L[mem[d_load]]
+    d_load, d_el, lo, hi, c, d = (v[keep] for v in (d_load, d_el, lo, hi, c, d))
     pts = np.flatnonzero(point)
     kp = k[mem[pts]]
     h_m = L[mem[pts]] / kp
@@ -142,12 +153,16 @@ def member_load_vector(fe: FEModel, loads: Sequence[MemberLoad]) -> MemberLoadVe
         raise InputError(f"member_loads (member {s.member_ids[i]})",
                          "a couple about the member axis needs a beam with torsion (a bar "
                          "carries none)")
-    # intensities at the ends of each loaded element of a distributed load
-    x0, x1 = fe.element_x[d_el, 0], fe.element_x[d_el, 1]
-    Lm = L[mem[d_load]][:, None]
+    # intensities at the ends of the covered part of each loaded element
+    x0 = fe.element_x[d_el, 0]
+    he = fe.element_length[d_el]
+    width = (d - c)[:, None]
     dq = (q2 - q1)[d_load]
-    qa = q1[d_load] + dq * (x0[:, None] / Lm)
-    qb = q1[d_load] + dq * (x1[:, None] / Lm)
+    qa = q1[d_load] + dq * ((lo - c)[:, None] / width)
+    qb = q1[d_load] + dq * ((hi - c)[:, None] / width)
+    # the covered part as fractions of the element; whole elements take the closed forms
+    xi0, xi1 = (lo - x0) / he, (hi - x0) / he
+    whole = (lo == x0) & (hi == fe.element_x[d_el, 1])
     group_of = np.full(fe.n_elements, -1, dtype=np.int64)
     pos_in = np.zeros(fe.n_elements, dtype=np.int64)
     for gi, g in enumerate(fe.groups):
@@ -172,6 +187,8 @@ def member_load_vector(fe: FEModel, loads: Sequence[MemberLoad]) -> MemberLoadVe
             edofs = fld.basis.element_dofs                         # (nbfun, n_el_group)
             parts = []
             de, pe = d_el[dsel], p_el[psel]
+            wh = whole[dsel]
+            x0_, x1_ = xi0[dsel], xi1[dsel]
             hd, hp = fe.element_length[de], fe.element_length[pe]
             qa_c = qa[dsel, qc] if qc is not None else np.zeros(de.size)
             qb_c = qb[dsel, qc] if qc is not None else np.zeros(de.size)
@@ -182,25 +199,31 @@ def member_load_vector(fe: FEModel, loads: Sequence[MemberLoad]) -> MemberLoadVe
                 mem_d, mem_p = fe.element_member[de], fe.element_member[pe]
                 phi_d = shear_parameter(EI[fld.name][mem_d], GAs[fld.name][mem_d], hd)
                 phi_p = shear_parameter(EI[fld.name][mem_p], GAs[fld.name][mem_p], hp)
-                parts = [(de, linear_load_bending(hd, phi_d, qa_c, qb_c)),
+                parts = [(de[wh], linear_load_bending(hd[wh], phi_d[wh], qa_c[wh],
+                                                      qb_c[wh])),
+                         (de[~wh], part_load_bending(hd[~wh], phi_d[~wh], x0_[~wh],
+                                                     x1_[~wh], qa_c[~wh], qb_c[~wh])),
                          (pe, point_load_bending(xi[psel], hp, phi_p, P, Cc))]
             else:
-                parts = [(de, linear_load_p1(hd, qa_c, qb_c)),
+                parts = [(de[wh], linear_load_p1(hd[wh], qa_c[wh], qb_c[wh])),
+                         (de[~wh], part_load_p1(hd[~wh], x0_[~wh], x1_[~wh], qa_c[~wh],
+                                                qb_c[~wh])),
                          (pe, point_load_p1(xi[psel], hp, P, Cc))]
             for els, vals in parts:
                 if els.size:
                     rows = fld.offset + edofs[:, pos_in[els]].T            # (el, nbfun)
                     np.add.at(out, rows.ravel(), vals.ravel())
         f += g.T.T @ out
-    correction = element_axial_correction(fe.n_elements, d_el, fe.element_length[d_el],
-                                          qa[:, 0], qb[:, 0], p_el, xi, F[pts, 0])
+    correction = element_axial_correction(fe.n_elements, d_el, he, qa[:, 0], qb[:, 0],
+                                          p_el, xi, F[pts, 0], xi0, xi1)
     return MemberLoadVectors(global_vector=f, local=local, member=mem, point=point, q1=q1,
-                             q2=q2, at=a, F=F, C=C, element_axial=correction)
+                             q2=q2, at=a, F=F, C=C, element_axial=correction, span=span)
 
 
 def element_axial_correction(n_elements: int, d_el: np.ndarray, h: np.ndarray,
                              qa: np.ndarray, qb: np.ndarray, p_el: np.ndarray,
-                             xi: np.ndarray, P: np.ndarray) -> np.ndarray:
+                             xi: np.ndarray, P: np.ndarray, xi0: np.ndarray | None = None,
+                             xi1: np.ndarray | None = None) -> np.ndarray:
     r"""Per element, the length-average of its axial force minus the mean of its two end
     values, from the axial loads along it.
 
@@ -211,15 +234,19 @@ def element_axial_correction(n_elements: int, d_el: np.ndarray, h: np.ndarray,
     ``N(x) = N(0) − Q(x)`` (``Q`` the axial load on ``[0, x]``), a load varying linearly from
     ``q_a`` to ``q_b`` over the element adds ``h (q_b − q_a)/12``, and a point force ``P`` at
     ``ξ h`` adds ``P (ξ − 1/2)`` (``−P/2`` at the element's start: it acts on all of it).
+    In general a load adds ``(1/h) ∫ q(s) (s − h/2) ds``: on the part ``[ξ₀ h, ξ₁ h]`` of
+    length ``ℓ`` and centre ``m``, ``ℓ (ℓ/h) (q_b − q_a)/12 + (m/h − 1/2) ℓ (q_a + q_b)/2``.
 
     Parameters
     ----------
     n_elements : int
     d_el, h, qa, qb : ndarray, shape (d,)
-        Element, its length and the axial intensities at its ends, for every (distributed
-        load, element) pair.
+        Element, its length and the axial intensities at the ends of the loaded part, for
+        every (distributed load, element) pair.
     p_el, xi, P : ndarray, shape (p,)
         Element, relative position in it and axial force of every point load.
+    xi0, xi1 : ndarray, shape (d,), optional
+        The loaded part of the element (default the whole element).
 
     Returns
     -------
@@ -235,7 +262,13 @@ def element_axial_correction(n_elements: int, d_el: np.ndarray, h: np.ndarray,
     [-200.0]
     """
     out = np.zeros(n_elements)
-    np.add.at(out, d_el, h * (qb - qa) / 12.0)
+    if xi0 is None:
+        np.add.at(out, d_el, h * (qb - qa) / 12.0)
+    else:
+        ell = (xi1 - xi0) * h
+        # the second term vanishes on a whole element (ξ₀ + ξ₁ = 1)
+        np.add.at(out, d_el, ell * (xi1 - xi0) * (qb - qa) / 12.0
+                  + (0.5 * (xi0 + xi1) - 0.5) * ell * (qa + qb) / 2.0)
     np.add.at(out, p_el, P * (xi - 0.5))
     return out
 
@@ -249,10 +282,12 @@ def midpoint_axial_correction(v: MemberLoadVectors, lengths: np.ndarray,
     ``Q(x) = ∫₀ˣ q_x + Σ_{a<x} F_x`` the load on ``[0, x]`` (member axes),
     ``N(x) = N(0) − Q(x)``, so the midpoint value is the mean of the ends plus
     ``Q(L)/2 − Q(L/2)``: ``L(q₂ − q₁)/8`` for a load varying linearly from ``q₁`` to ``q₂``
-    (zero for a uniform one), ``F/2`` for a point force beyond the midpoint and ``−F/2``
-    before it.  A point force at the midpoint itself adds nothing: N jumps there and the
-    mean of its two sides is reported.  Loads not among ``v`` (a truss bar's self-weight,
-    lumped at its joints) do not enter its end values either, and need no correction.
+    (zero for a uniform one) over the whole member, ``Q(L)/2 − Q(L/2)`` of its span
+    otherwise (:func:`~trussfe.mechanics.member_loads.span_integrals`), ``F/2`` for a point
+    force beyond the midpoint and ``−F/2`` before it.  A point force at the midpoint itself
+    adds nothing: N jumps there and the mean of its two sides is reported.  Loads not among
+    ``v`` (a truss bar's self-weight, lumped at its joints) do not enter its end values
+    either, and need no correction.
 
     Parameters
     ----------
@@ -274,7 +309,8 @@ def midpoint_axial_correction(v: MemberLoadVectors, lengths: np.ndarray,
 
     >>> v = MemberLoadVectors(np.zeros(0), [], np.array([0]), np.array([True]),
     ...                       np.zeros((1, 3)), np.zeros((1, 3)), np.array([1.2]),
-    ...                       np.array([[1000.0, 0.0, 0.0]]), np.zeros((1, 3)), np.zeros(1))
+    ...                       np.array([[1000.0, 0.0, 0.0]]), np.zeros((1, 3)), np.zeros(1),
+    ...                       np.array([[0.0, 4.0]]))
     >>> midpoint_axial_correction(v, np.array([4.0]), 1).tolist()
     [-500.0]
     """
@@ -282,7 +318,11 @@ def midpoint_axial_correction(v: MemberLoadVectors, lengths: np.ndarray,
     out = np.zeros(n_members)
     dist = ~v.point
     md = v.member[dist]
-    np.add.at(out, md, L[md] * (v.q2[dist, 0] - v.q1[dist, 0]) / 8.0)
+    whole = (v.span[dist, 0] == 0.0) & (v.span[dist, 1] == L[md])
+    Q, _ = span_integrals(np.stack([0.5 * L[md], L[md]], axis=1), v.span[dist, 0],
+                          v.span[dist, 1], v.q1[dist], v.q2[dist])
+    np.add.at(out, md, np.where(whole, L[md] * (v.q2[dist, 0] - v.q1[dist, 0]) / 8.0,
+                                0.5 * Q[:, 1, 0] - Q[:, 0, 0]))
     mp = v.member[v.point]
     a, Lp = v.at[v.point], L[mp]
     tol = AT_STATION * Lp
@@ -299,7 +339,8 @@ def loaded_member_stations(fe: FEModel, v: MemberLoadVectors, station_x: np.ndar
     sections (:func:`trussfe.mechanics.member_loads.section_forces_along`).
 
     The stations are the member's finite-element stations, the positions of its point
-    loads (where the shear force jumps and the moment peaks) and the points between them
+    loads (where the shear force jumps and the moment peaks), the ends of its distributed
+    loads' spans (where the shear force changes its slope) and the points between them
     where a distributed load makes a shear force vanish (where the moment it bends peaks), so
     that a pin-ended bar, which has no station inside, shows its simply supported moment
     under its loads too.
@@ -330,19 +371,21 @@ def loaded_member_stations(fe: FEModel, v: MemberLoadVectors, station_x: np.ndar
     L = fe.structure.lengths()[members]
     # the FE stations of each loaded member and the positions of its point loads, one row
     # per member: sorted (NaN last), a position that is already a station dropped
-    prow = row[v.point]
+    dist = ~v.point
+    prow = np.concatenate([row[v.point], row[dist], row[dist]])
+    where = np.concatenate([v.at[v.point], v.span[dist, 0], v.span[dist, 1]])
     order = np.argsort(prow, kind="stable")
     count = np.bincount(prow, minlength=members.size)
     rank = np.arange(prow.size) - np.repeat(np.cumsum(count) - count, count)
     extra = np.full((members.size, int(count.max(initial=0))), np.nan)
-    extra[prow[order], rank] = v.at[v.point][order]
+    extra[prow[order], rank] = where[order]
     x = _distinct_stations([station_x[members], extra], L)
     start = section_forces[members, 0]
     loads = _with_uniform_rest(v, row, L, start, station_x[members], section_forces[members])
     F = section_forces_along(x, L, start, *loads)
     # where a distributed load makes a shear force vanish between two stations, the moment
     # it bends has its extreme there (the midspan of a bar under a uniform load): a station
-    peaks = _zero_shear_positions(x, F, L, *loads[:4], members.size)
+    peaks = _zero_shear_positions(x, F, L, *loads[:4], loads[7], members.size)
     if peaks.shape[1]:
         x = _distinct_stations([x, peaks], L)
         F = section_forces_along(x, L, start, *loads)
@@ -352,7 +395,7 @@ def loaded_member_stations(fe: FEModel, v: MemberLoadVectors, station_x: np.ndar
 
 def _with_uniform_rest(v: MemberLoadVectors, row: np.ndarray, L: np.ndarray,
                        start: np.ndarray, x_fe: np.ndarray, F_fe: np.ndarray) -> tuple:
-    """The loads of ``v`` as ``(row, point, q1, q2, at, F, C)`` for
+    """The loads of ``v`` as ``(row, point, q1, q2, at, F, C, span)`` for
     :func:`~trussfe.mechanics.member_loads.section_forces_along`, with one uniform load per
     member row added: the load its elements carry besides ``v`` (self-weight), from the
     finite-element sections at its two ends, ``q = (S_v(L) − S(L)) / L`` on the forces, where
@@ -362,7 +405,7 @@ def _with_uniform_rest(v: MemberLoadVectors, row: np.ndarray, L: np.ndarray,
     last = np.isfinite(x_fe).sum(axis=1) - 1
     end = F_fe[np.arange(r), last]
     alone = section_forces_along(L[:, None], L, start, row, v.point, v.q1, v.q2, v.at, v.F,
-                                 v.C)[:, 0]
+                                 v.C, v.span)[:, 0]
     at_end = v.point & (np.abs(v.at - L[row]) <= AT_STATION * L[row])
     forces = alone[:, :3].copy()
     np.add.at(forces, row[at_end], -v.F[at_end])
@@ -371,7 +414,8 @@ def _with_uniform_rest(v: MemberLoadVectors, row: np.ndarray, L: np.ndarray,
     return (np.concatenate([row, np.arange(r)]), np.concatenate([v.point, np.zeros(r, bool)]),
             np.concatenate([v.q1, rest]), np.concatenate([v.q2, rest]),
             np.concatenate([v.at, np.zeros(r)]), np.concatenate([v.F, z]),
-            np.concatenate([v.C, z]))
+            np.concatenate([v.C, z]),
+            np.concatenate([v.span, np.stack([np.zeros(r), L], axis=1)]))
 
 
 def _distinct_stations(parts: list[np.ndarray], L: np.ndarray) -> np.ndarray:
@@ -386,13 +430,14 @@ def _distinct_stations(parts: list[np.ndarray], L: np.ndarray) -> np.ndarray:
 
 
 def _zero_shear_positions(x: np.ndarray, F: np.ndarray, L: np.ndarray, row: np.ndarray,
-                          point: np.ndarray, q1: np.ndarray, q2: np.ndarray, r: int
-                          ) -> np.ndarray:
+                          point: np.ndarray, q1: np.ndarray, q2: np.ndarray,
+                          span: np.ndarray, r: int) -> np.ndarray:
     r"""Positions strictly between consecutive stations where ``Vy`` or ``Vz`` is zero.
 
-    Between stations (the point loads are stations) a member carries only its distributed
-    loads, ``q(x) = q₁ + (q₂ − q₁) x / L`` summed over them, so from a station ``xᵢ`` with
-    shear ``Vᵢ`` (just beyond it) ``V(xᵢ + t) = Vᵢ − q(xᵢ) t − k t²/2``, ``k = (q₂ − q₁)/L``:
+    Between stations (the point loads and the ends of the spans are stations) a member
+    carries only the distributed loads whose span covers the interval,
+    ``q(x) = q₁ + k (x − c)``, ``k = (q₂ − q₁)/(d − c)``, summed over them, so from a
+    station ``xᵢ`` with shear ``Vᵢ`` (just beyond it) ``V(xᵢ + t) = Vᵢ − q(xᵢ) t − k t²/2``:
     its roots in ``(0, h)`` are where ``dM/dx = ∓V`` vanishes.  With loads in one plane (or
     of one shape in both) these are where the resultant moment, and so the bending stress,
     is largest.
@@ -402,18 +447,24 @@ def _zero_shear_positions(x: np.ndarray, F: np.ndarray, L: np.ndarray, row: np.n
     ndarray, shape (r, p)
         The positions per member row, NaN-padded (``p`` may be 0).
     """
-    dist = ~np.asarray(point, bool)
-    qs = np.zeros((r, 3))
-    qe = np.zeros((r, 3))
-    np.add.at(qs, row[dist], q1[dist])
-    np.add.at(qe, row[dist], q2[dist])
+    dist = np.flatnonzero(~np.asarray(point, bool))
     x0, x1 = x[:, :-1], x[:, 1:]
     h = x1 - x0                                                        # (r, s − 1), NaN past
+    # per interval, the intensity at its start and the slope of the loads covering it
+    rd = row[dist]
+    c0, d0 = span[dist, 0][:, None], span[dist, 1][:, None]
+    tol = AT_STATION * L[rd][:, None]
+    with np.errstate(invalid="ignore"):
+        covers = (x0[rd] >= c0 - tol) & (x1[rd] <= d0 + tol)           # (dist, s − 1)
+    slope = (q2[dist] - q1[dist]) / (d0 - c0)                          # (dist, 3)
     found = []
     for c in (1, 2):                                                   # Vy, Vz
         V = F[:, :-1, c]
-        k = ((qe[:, c] - qs[:, c]) / L)[:, None]
-        qi = qs[:, c][:, None] + k * x0
+        at_start = q1[dist, c][:, None] + slope[:, c][:, None] * (x0[rd] - c0)
+        qi = np.zeros(x0.shape)
+        k = np.zeros(x0.shape)
+        np.add.at(qi, rd, np.where(covers, at_start, 0.0))
+        np.add.at(k, rd, np.where(covers, slope[:, c][:, None], 0.0))
         with np.errstate(invalid="ignore", divide="ignore"):
             D = np.sqrt(np.maximum(qi * qi + 2.0 * k * V, 0.0))
             s = qi + np.where(qi < 0, -D, D)                           # no cancellation

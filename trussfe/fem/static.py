@@ -23,6 +23,7 @@ import numpy as np
 
 from ..errors import AnalysisError, InputError
 from ..io.json_document import result_json
+from ..mechanics.active_bodies import active_weight_joint_loads, active_weight_loads
 from ..mechanics.stress import station_stresses
 from ..model.member_loads import MemberLoad
 from ..model.structure import DOF_NAMES, Structure
@@ -172,7 +173,9 @@ def solve_static(structure: Structure, bar_model: str = "truss",
     loads : ndarray, shape (n_nodes, ndof_node), optional
         Nodal loads replacing ``structure.loads``.
     self_weight : bool
-        Include gravity on members and nodal masses (``structure.gravity``).
+        Include gravity on members and nodal masses (``structure.gravity``).  A member weighs
+        ρAL; an active member (``[active_members]``) its base and leadscrew tube instead
+        (:func:`~trussfe.mechanics.active_bodies.active_weight_loads`, loads along it).
     fe : FEModel, optional
         A discretisation to reuse.
     backend : {"auto", "superlu", "pardiso"}
@@ -218,6 +221,11 @@ def solve_static(structure: Structure, bar_model: str = "truss",
     f = fe.load_vector(self_weight=self_weight, loads=loads)
     if member_loads is None:
         member_loads = structure.extensions.get("member_loads", ())
+    if self_weight:
+        # active members weigh their base and leadscrew tube, not ρAL
+        joints, along = active_member_weight(fe)
+        f = f + joints
+        member_loads = tuple(member_loads) + along
     mlv = member_load_vector(fe, member_loads) if len(member_loads) else None
     if mlv is not None:
         f = f + mlv.global_vector
@@ -230,6 +238,31 @@ def solve_static(structure: Structure, bar_model: str = "truss",
     if mlv is not None:
         base = [b + ml for b, ml in zip(base, mlv.local)]
     return system.recover(u, f, residual, base, member_loads=mlv)
+
+
+def active_member_weight(fe: FEModel) -> tuple[np.ndarray, tuple[MemberLoad, ...]]:
+    """What the weight of the active members' bases and leadscrew tubes adds to the uniform
+    self-weight ρAL of a discretisation (:mod:`trussfe.mechanics.active_bodies`).
+
+    An active member modelled as an axial-only bar keeps its weight at its joints, as every
+    bar does: joint loads (:func:`~trussfe.mechanics.active_bodies.active_weight_joint_loads`),
+    with the bar's axial force that of the actuator.  A frame member (a beam, or a bar of the
+    ``pinned-beam`` model) carries it along its length, where it bends the member: loads along
+    it (:func:`~trussfe.mechanics.active_bodies.active_weight_loads`).
+
+    Returns
+    -------
+    joints : ndarray, shape (n_dof,)
+        The joint loads, to add to the load vector.
+    along : tuple of MemberLoad
+        The loads along frame members, to apply as member loads.
+    """
+    s = fe.structure
+    f = np.zeros(fe.n_dof)
+    if not s.extensions.get("active_members") or not np.any(s.gravity):
+        return f, ()
+    f[fe.node_dofs[:, : s.dim]] += active_weight_joint_loads(s, members=~fe.is_frame)
+    return f, active_weight_loads(s, members=fe.is_frame)
 
 
 class LinearSystem:

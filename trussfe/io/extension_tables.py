@@ -296,7 +296,8 @@ def parse_monitor(text: str, structure: Structure, item: str = "--monitor") -> t
     return structure.node_index(node), AXES.index(axis)
 
 #: Keys of a member load besides ``member``, ``kind`` and ``axes``, per kind.
-_LOAD_KEYS = {"uniform": ("q",), "trapezoidal": ("q_start", "q_end"), "point": ("at", "F", "M")}
+_LOAD_KEYS = {"uniform": ("q", "span"), "trapezoidal": ("q_start", "q_end", "span"),
+              "point": ("at", "F", "M")}
 
 
 def _load_vector(raw: dict, key: str, item: str, size: int) -> tuple[float, ...]:
@@ -324,8 +325,9 @@ def parse_member_loads(raw: Any, structure: Structure, base_dir: Path | None = N
     ------
     InputError
         Not an array of tables, a member that does not exist, an unknown kind or axes, a
-        position outside [0, 1], a vector of the wrong length, a couple about the axis of a
-        pin-ended bar (it carries no torsion).
+        position outside [0, 1], a span that is not [a, b] with 0 <= a < b <= 1, a vector of
+        the wrong length, a couple about the axis of a pin-ended bar (it carries no
+        torsion).
     """
     if not isinstance(raw, list) or not all(isinstance(t, dict) for t in raw):
         raise InputError(item, "expected an array of tables { member = .., kind = .., ... }")
@@ -355,15 +357,20 @@ def parse_member_loads(raw: Any, structure: Structure, base_dir: Path | None = N
         if axes not in LOAD_AXES:
             raise InputError(f"{it}.axes", f"unknown axes {axes!r}; use global or local")
         for key in _LOAD_KEYS[kind]:
-            if key not in t and key not in ("M", "F"):
+            if key not in t and key not in ("M", "F", "span"):
                 raise InputError(it, f"missing '{key}' (a {kind} load needs "
                                      f"{' and '.join(_LOAD_KEYS[kind][:2])})")
+        if kind in ("uniform", "trapezoidal"):
+            span = _load_vector(t, "span", it, 2) if "span" in t else (0.0, 1.0)
+            if not 0.0 <= span[0] < span[1] <= 1.0:
+                raise InputError(f"{it}.span", f"expected [a, b] with 0 <= a < b <= 1 "
+                                 f"(fractions of the member length), got {t['span']!r}")
         if kind == "uniform":
             q = _load_vector(t, "q", it, dim)
-            ld = MemberLoad(k, kind, q, q, axes=axes)
+            ld = MemberLoad(k, kind, q, q, axes=axes, span=span)
         elif kind == "trapezoidal":
             ld = MemberLoad(k, kind, _load_vector(t, "q_start", it, dim),
-                            _load_vector(t, "q_end", it, dim), axes=axes)
+                            _load_vector(t, "q_end", it, dim), axes=axes, span=span)
         else:
             a = _num(t, "at", it)
             if not 0.0 <= a <= 1.0:

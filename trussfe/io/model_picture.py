@@ -416,7 +416,7 @@ def _member_loads(s: Structure, x0: np.ndarray, size: float, fmax: float
                 parts.append(f"M = {np.linalg.norm(ld.moment):.4g} N·m")
             text = ", ".join(parts)
         else:
-            at = 0.5
+            at = 0.5 * (ld.span[0] + ld.span[1])          # the middle of the loaded span
             qs, qe = np.asarray(ld.q_start, float), np.asarray(ld.q_end, float)
             vec = 0.5 * (qs + qe)
             length = 0.6 * LOAD_ARROW * size

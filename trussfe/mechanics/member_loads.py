@@ -43,7 +43,9 @@ A load varying linearly from ``q_a`` to ``q_b`` over the whole element:
 
 for ``Φ = 0`` and ``q_a = q_b = q``: ``qh/2`` and ``±qh²/12``; for a triangular load
 ``(q_a, q_b) = (0, q)``: ``3qh/20, qh²/30, 7qh/20, −qh²/20`` (Roark's Formulas for Stress and
-Strain, 7th ed., Table 8.1 case 2).  A point force ``P`` at ``ξ``: ``P N_i(ξ)`` — for
+Strain, 7th ed., Table 8.1 case 2).  A load on part of an element only, from ``ξ₀`` to ``ξ₁``, gives
+``∫ q N_i dx`` over that part: a three-point Gauss–Legendre rule on it is exact (a linear
+load times a cubic shape function).  A point force ``P`` at ``ξ``: ``P N_i(ξ)`` — for
 ``Φ = 0`` the end moments ``Pab²/h²`` and ``−Pa²b/h²`` with ``a = ξh``, ``b = h − a`` (Roark
 Table 8.1 case 1).  A couple ``C`` at ``ξ``: ``C ψ_i(ξ)``.  On a P1 field: ``h(2q_a + q_b)/6``,
 ``h(q_a + 2q_b)/6``; ``P(1 − ξ), Pξ``; a couple on the slope of a transverse P1 field (a
@@ -63,9 +65,11 @@ by the part after it, member axes) follows by statics from the section forces ``
    N = N₀ − Q_x, \quad V_y = V_{y0} − Q_y, \quad V_z = V_{z0} − Q_z, \quad T = T₀ − C_x, \\
    M_y = M_{y0} + x V_{z0} − Q_{1z} − C_y, \quad M_z = M_{z0} − x V_{y0} + Q_{1y} − C_z,
 
-where ``Q = q₁x + (q₂ − q₁)x²/(2L)``, ``Q₁ = q₁x²/2 + (q₂ − q₁)x³/(6L)`` for a load varying from
-``q₁`` to ``q₂`` over the length ``L``; a point load at ``a`` adds ``F`` to ``Q``, ``(x − a)F``
-to ``Q₁`` and its couple ``C`` beyond ``a``.  A point load at a station counts as before it
+where ``Q = q₁y + k y²/2``, ``Q₁ = q₁y²/2 + k y³/6 + (x − c − y) Q`` with
+``y = min(max(x, c), d) − c`` and ``k = (q₂ − q₁)/(d − c)`` for a load varying from ``q₁`` at
+``c`` to ``q₂`` at ``d`` (``Q = q₁x + (q₂ − q₁)x²/(2L)``, ``Q₁ = q₁x²/2 + (q₂ − q₁)x³/(6L)``
+over the whole length, ``c = 0``, ``d = L``); a point load at ``a`` adds ``F`` to ``Q``,
+``(x − a)F`` to ``Q₁`` and its couple ``C`` beyond ``a``.  A point load at a station counts as before it
 (the section just after the load) except at the end ``x = L``.  For a pin-ended bar
 (``M₀ = 0``, ``V₀`` the support reaction) this is the simply supported beam; for a simply
 supported beam under ``q``, ``M_z(L/2) = qL²/8``.
@@ -146,6 +150,58 @@ def linear_load_p1(h: np.ndarray, qa: np.ndarray, qb: np.ndarray) -> np.ndarray:
     return np.stack([h * (2 * qa + qb) / 6.0, h * (qa + 2 * qb) / 6.0], axis=-1)
 
 
+#: Three-point Gauss–Legendre rule on [−1, 1]: exact to degree 5 (a linear load times a cubic).
+_GAUSS_X, _GAUSS_W = np.polynomial.legendre.leggauss(3)
+
+
+def _gauss_on(xi0: np.ndarray, xi1: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Gauss points ``ξ`` (..., 3) on ``[ξ₀, ξ₁]``, their weights as fractions of the element
+    length, and the linear weight ``t`` (0 at ``ξ₀``, 1 at ``ξ₁``) of each point."""
+    xi0, xi1 = np.asarray(xi0, float)[..., None], np.asarray(xi1, float)[..., None]
+    t = 0.5 * (_GAUSS_X + 1.0)
+    return xi0 + (xi1 - xi0) * t, 0.5 * (xi1 - xi0) * _GAUSS_W, t
+
+
+def part_load_bending(h: np.ndarray, phi: np.ndarray, xi0: np.ndarray, xi1: np.ndarray,
+                      qa: np.ndarray, qb: np.ndarray) -> np.ndarray:
+    """Fixed-end forces ``[F_a, M_a, F_b, M_b]`` of a load varying linearly from ``qa`` at
+    ``ξ₀`` to ``qb`` at ``ξ₁`` on the part ``[ξ₀, ξ₁]`` of a bending element,
+    ``∫ q N_i dx`` by the Gauss rule of the module notes, shape (..., 4).
+
+    Examples
+    --------
+    Over the whole element it is the closed form :func:`linear_load_bending`:
+
+    >>> bool(np.allclose(part_load_bending(2.0, 0.3, 0.0, 1.0, 5.0, 7.0),
+    ...                  linear_load_bending(2.0, 0.3, 5.0, 7.0)))
+    True
+    """
+    h, p = np.asarray(h, float), np.asarray(phi, float)
+    xi, w, t = _gauss_on(xi0, xi1)
+    q = np.asarray(qa, float)[..., None] * (1 - t) + np.asarray(qb, float)[..., None] * t
+    N = deflection_shapes(xi, h[..., None], p[..., None])                  # (..., 3, 4)
+    return h[..., None] * np.einsum("...g,...gi->...i", q * w, N)
+
+
+def part_load_p1(h: np.ndarray, xi0: np.ndarray, xi1: np.ndarray, qa: np.ndarray,
+                 qb: np.ndarray) -> np.ndarray:
+    """End loads ``∫ q [1 − ξ, ξ] dx`` of a load varying linearly from ``qa`` at ``ξ₀`` to
+    ``qb`` at ``ξ₁`` on the part ``[ξ₀, ξ₁]`` of a P1 field, shape (..., 2).
+
+    Examples
+    --------
+    A uniform 6 N/m on the last quarter of a 4 m bar: 6 N at 7/8 of its length.
+
+    >>> part_load_p1(4.0, 0.75, 1.0, 6.0, 6.0).tolist()
+    [0.75, 5.25]
+    """
+    h = np.asarray(h, float)
+    xi, w, t = _gauss_on(xi0, xi1)
+    q = np.asarray(qa, float)[..., None] * (1 - t) + np.asarray(qb, float)[..., None] * t
+    qw = h[..., None] * q * w
+    return np.stack([np.sum(qw * (1 - xi), axis=-1), np.sum(qw * xi, axis=-1)], axis=-1)
+
+
 def point_load_bending(xi: np.ndarray, h: np.ndarray, phi: np.ndarray, P: np.ndarray,
                        C: np.ndarray) -> np.ndarray:
     """Fixed-end forces ``P N_i(ξ) + C ψ_i(ξ)`` of a point force ``P`` and a couple ``C``
@@ -179,9 +235,50 @@ def resultant(L: np.ndarray, q1: np.ndarray, q2: np.ndarray) -> tuple[np.ndarray
     return R, x
 
 
+def span_integrals(x: np.ndarray, c: np.ndarray, d: np.ndarray, q1: np.ndarray,
+                   q2: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``Q(x) = ∫₀ˣ q`` and ``Q₁(x) = ∫₀ˣ (x − s) q(s) ds`` of loads varying linearly from
+    ``q1`` at ``c`` to ``q2`` at ``d`` (zero outside ``[c, d]``; module notes).
+
+    Parameters
+    ----------
+    x : ndarray, shape (l, s)
+        Stations of each load's member.
+    c, d : ndarray, shape (l,)
+        Span of each load, m from the start node.
+    q1, q2 : ndarray, shape (l, 3)
+
+    Returns
+    -------
+    Q, Q1 : ndarray, shape (l, s, 3)
+
+    Examples
+    --------
+    A uniform 2 N/m on [1, 3] m of a member: 4 N beyond it, acting 2 m before x = 4 m.
+
+    >>> Q, Q1 = span_integrals(np.array([[4.0]]), np.array([1.0]), np.array([3.0]),
+    ...                        np.array([[2.0, 0, 0]]), np.array([[2.0, 0, 0]]))
+    >>> float(Q[0, 0, 0]), float(Q1[0, 0, 0])
+    (4.0, 8.0)
+    """
+    x = np.asarray(x, dtype=float)
+    c = np.asarray(c, float)[:, None]
+    d = np.asarray(d, float)[:, None]
+    y = (np.clip(x, c, d) - c)[..., None]                          # covered length before x
+    k = ((q2 - q1) / (d - c))[:, None, :]
+    qa = q1[:, None, :]
+    Q = qa * y + k * y**2 / 2
+    # the part of the span before x acts on the lever x − s: its own moment about its end
+    # c + y plus Q times the distance beyond it (no cancellation inside the span)
+    Q1 = (x - c)[..., None] - y
+    Q1 = Q1 * Q + qa * y**2 / 2 + k * y**3 / 6
+    return Q, Q1
+
+
 def section_forces_along(x: np.ndarray, L: np.ndarray, start: np.ndarray,
                          row: np.ndarray, point: np.ndarray, q1: np.ndarray, q2: np.ndarray,
-                         a: np.ndarray, F: np.ndarray, C: np.ndarray) -> np.ndarray:
+                         a: np.ndarray, F: np.ndarray, C: np.ndarray,
+                         span: np.ndarray | None = None) -> np.ndarray:
     """Section forces at stations along members from their start sections and their loads.
 
     Parameters
@@ -195,13 +292,15 @@ def section_forces_along(x: np.ndarray, L: np.ndarray, start: np.ndarray,
     row : ndarray of int, shape (l,)
         Member (row of ``x``) of each load.
     point : ndarray of bool, shape (l,)
-        Point loads; the others vary linearly from ``q1`` to ``q2`` over the whole member.
+        Point loads; the others vary linearly from ``q1`` to ``q2`` over their span.
     q1, q2, F : ndarray, shape (l, 3)
         Intensities and point forces, member axes.
     a : ndarray, shape (l,)
         Position of a point load, m from the start.
     C : ndarray, shape (l, 3)
         Point couples about the member axes.
+    span : ndarray, shape (l, 2), optional
+        Span of each distributed load, m from the start (default: the whole member).
 
     Returns
     -------
@@ -215,10 +314,11 @@ def section_forces_along(x: np.ndarray, L: np.ndarray, start: np.ndarray,
     out[..., 4] += x * S0[:, None, 2]
     out[..., 5] -= x * S0[:, None, 1]
     xl = x[row]                                                    # (l, s)
-    Ll = np.asarray(L, float)[row][:, None]
-    dq = (q2 - q1)[:, None, :]
-    Q = q1[:, None, :] * xl[..., None] + dq * (xl**2 / (2 * Ll))[..., None]
-    Q1 = q1[:, None, :] * (xl**2 / 2)[..., None] + dq * (xl**3 / (6 * Ll))[..., None]
+    Lr = np.asarray(L, float)[row]
+    Ll = Lr[:, None]
+    if span is None:
+        span = np.stack([np.zeros_like(Lr), Lr], axis=1)
+    Q, Q1 = span_integrals(xl, span[:, 0], span[:, 1], q1, q2)
     al = np.asarray(a, float)[:, None]
     tol = AT_STATION * Ll
     beyond = (xl > al + tol) | ((np.abs(xl - al) <= tol) & (xl < Ll - tol))

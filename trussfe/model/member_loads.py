@@ -3,11 +3,15 @@
 
 A member load acts on one member, between its end nodes:
 
-* ``uniform`` — a force per unit length ``q`` (N/m) constant along the whole member;
+* ``uniform`` — a force per unit length ``q`` (N/m) constant along the member;
 * ``trapezoidal`` — a force per unit length varying linearly from ``q_start`` at the start
   node to ``q_end`` at the end node;
 * ``point`` — a force ``F`` (N) and optionally a couple ``M`` (N·m) at the fraction ``at`` of
   the length from the start node (``0 <= at <= 1``).
+
+A distributed load covers the whole member unless ``span = [a, b]`` (fractions of the length
+from the start node, ``0 <= a < b <= 1``) limits it to ``a L <= x <= b L``; a trapezoidal
+load then varies from ``q_start`` at ``a L`` to ``q_end`` at ``b L``.
 
 Vectors have ``dim`` components: in ``axes = "global"`` (the default) they are in the global
 axes, in ``axes = "local"`` in the member axes (x along the member; y, z as in
@@ -21,6 +25,7 @@ Model-file form (the key is a top-level array, like ``[loads]`` it is one load p
       { member = "AB", kind = "trapezoidal", q_start = [0, 0, -200], q_end = [0, 0, -600],
         axes = "local" },
       { member = "AB", kind = "point", at = 0.25, F = [0.0, 0.0, -300.0] },
+      { member = "AB", kind = "uniform", q = [0.0, 0.0, -500.0], span = [0.6, 1.0] },
     ]
 
 The mechanics of these loads (equivalent end loads, section forces along the member) are in
@@ -51,8 +56,8 @@ class MemberLoad:
     kind : str
         ``"uniform"``, ``"trapezoidal"`` or ``"point"``.
     q_start, q_end : tuple of float
-        Force per unit length at the start and end node, N/m (equal for ``uniform``; empty
-        for ``point``).
+        Force per unit length at the start and end of the span (by default the start and
+        end node), N/m (equal for ``uniform``; empty for ``point``).
     at : float
         Position of a point load as a fraction of the length from the start node (``nan``
         for distributed loads).
@@ -62,6 +67,9 @@ class MemberLoad:
         Couple of a point load, N·m (empty when none: 1 component in 2-D, 3 in 3-D).
     axes : str
         ``"global"`` or ``"local"`` (member axes).
+    span : tuple of float
+        ``(a, b)``: a distributed load acts on ``a L <= x <= b L`` (fractions of the length
+        from the start node; ``(0, 1)``, the whole member, by default).
     """
 
     member: int
@@ -72,6 +80,7 @@ class MemberLoad:
     force: tuple[float, ...] = ()
     moment: tuple[float, ...] = ()
     axes: str = "global"
+    span: tuple[float, float] = (0.0, 1.0)
 
     def __post_init__(self) -> None:
         if self.kind not in KINDS:
@@ -88,6 +97,12 @@ class MemberLoad:
                 raise ValueError("a point load needs F (and/or M)")
         elif not self.q_start or len(self.q_start) != len(self.q_end):
             raise ValueError("a distributed load needs q_start and q_end of equal length")
+        object.__setattr__(self, "span", tuple(float(v) for v in self.span))
+        if len(self.span) != 2 or not 0.0 <= self.span[0] < self.span[1] <= 1.0:
+            raise ValueError(f"span = {list(self.span)!r} is not [a, b] with "
+                             "0 <= a < b <= 1 (fractions of the member length)")
+        if self.kind == "point" and self.span != (0.0, 1.0):
+            raise ValueError("a point load has a position (at), not a span")
 
     def scaled(self, factor: float) -> "MemberLoad":
         """The same load times ``factor`` (a load case in a combination).
@@ -102,9 +117,11 @@ class MemberLoad:
                                 for k in ("q_start", "q_end", "force", "moment")})
 
     @classmethod
-    def uniform(cls, member: int, q: Sequence[float], axes: str = "global") -> "MemberLoad":
-        """A uniform load ``q`` (N/m) along member ``member``."""
-        return cls(member, "uniform", tuple(q), tuple(q), axes=axes)
+    def uniform(cls, member: int, q: Sequence[float], axes: str = "global",
+                span: tuple[float, float] = (0.0, 1.0)) -> "MemberLoad":
+        """A uniform load ``q`` (N/m) along member ``member`` (on the fractions ``span`` of
+        its length)."""
+        return cls(member, "uniform", tuple(q), tuple(q), axes=axes, span=span)
 
 
 @dataclass(frozen=True, eq=False)
@@ -120,7 +137,10 @@ class MemberLoadArrays:
     local : ndarray of bool, shape (l,)
         Vectors given in member axes.
     q1, q2 : ndarray, shape (l, dim)
-        Intensity at the start and end node, N/m (0 for point loads).
+        Intensity at the start and end of the span, N/m (0 for point loads).
+    span : ndarray, shape (l, 2)
+        Span of a distributed load as fractions of the length (``(0, 1)``: the whole
+        member; also for point loads).
     at : ndarray, shape (l,)
         Fraction of the length of a point load (0 for distributed loads).
     F : ndarray, shape (l, dim)
@@ -137,6 +157,7 @@ class MemberLoadArrays:
     at: np.ndarray
     F: np.ndarray
     C: np.ndarray = field(repr=False)
+    span: np.ndarray = field(repr=False, default_factory=lambda: np.zeros((0, 2)))
 
 
 def load_arrays(loads: Sequence[MemberLoad], dim: int) -> MemberLoadArrays:
@@ -168,5 +189,7 @@ def load_arrays(loads: Sequence[MemberLoad], dim: int) -> MemberLoadArrays:
     point = np.array([ld.kind == "point" for ld in loads], dtype=bool)
     local = np.array([ld.axes == "local" for ld in loads], dtype=bool)
     at = np.array([ld.at if ld.kind == "point" else 0.0 for ld in loads], dtype=float)
+    span = np.array([ld.span if ld.kind != "point" else (0.0, 1.0) for ld in loads],
+                    dtype=float).reshape(n, 2)
     return MemberLoadArrays(member=member, point=point, local=local, q1=q1, q2=q2, at=at,
-                            F=F, C=C)
+                            F=F, C=C, span=span)

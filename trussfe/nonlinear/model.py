@@ -44,6 +44,7 @@ import numpy as np
 
 from ..budget import count_text, require
 from ..errors import InputError
+from ..mechanics.active_bodies import active_weight_joint_loads
 from ..mechanics.geometry import member_lengths, member_vectors
 from ..model.bar_models import BAR_MODELS, DEFAULT_POSTCRITICAL_SUBDIVISIONS
 from ..model.structure import Structure
@@ -436,24 +437,47 @@ class NonlinearModel:
     def _dead_load(self) -> np.ndarray:
         """Constant dead load of gravity (``[model] gravity``), shape (dof,): the weight of
         every element lumped half at each of its ends (truss elements: the member's ends;
-        beam elements: their end points along the member) and the weight of the nodal
-        masses.  Zero without gravity."""
+        beam elements: their end points along the member), an active member's base and
+        leadscrew tube at its joints as the static analysis of a bar has them
+        (:func:`~trussfe.mechanics.active_bodies.active_weight_joint_loads`) or, on beam
+        elements, shared between the ends of the elements that hold them by the lever rule
+        (:func:`_active_shares`), and the weight of the nodal masses.  Zero without
+        gravity."""
         s = self.structure
         d = self.dim
         out = np.zeros(self.ndof)
         g = np.asarray(s.gravity, dtype=float)
         if not np.any(g):
             return out
-        half_t = 0.5 * (s.density * s.area)[self.t_member] * self.t_len0
-        pts = [self.t_conn.ravel()]
-        w = [np.repeat(half_t, 2)]
+        conn = [self.t_conn]
+        members = [self.t_member]
         if len(self.b_conn):
-            L0 = member_lengths(self.X, self.b_conn)
-            pts.append(self.b_conn.ravel())
-            w.append(np.repeat(0.5 * (s.density * s.area)[self.b_member] * L0, 2))
-        mass = np.bincount(np.concatenate(pts), np.concatenate(w), minlength=self.n_points)
+            conn.append(self.b_conn)
+            members.append(self.b_member)
+        conn, members = np.concatenate(conn), np.concatenate(members)
+        # active members of beam elements: their bodies instead of ρA (below)
+        acts = [a for a in s.extensions.get("active_members", ())]
+        on_beams = np.zeros(s.n_members, dtype=bool)
+        on_beams[[a.member for a in acts]] = True
+        on_beams[self.t_member] = False
+        # every element of a uniform member: half its weight at each end
+        L0 = member_lengths(self.X, conn)
+        half = np.where(on_beams[members], 0.0, 0.5 * (s.density * s.area)[members] * L0)
+        mass = np.bincount(conn.ravel(), np.repeat(half, 2), minlength=self.n_points)
+        if np.any(on_beams):
+            el = np.flatnonzero(on_beams[members])
+            at_start, at_end = _active_shares(s, self.X, conn[el], members[el],
+                                              [a for a in acts if on_beams[a.member]])
+            mass += np.bincount(conn[el, 0], at_start, minlength=self.n_points)
+            mass += np.bincount(conn[el, 1], at_end, minlength=self.n_points)
         mass[: s.n_nodes] += s.masses
         out[: self.n_points * d] = (mass[:, None] * g[None, :]).ravel()
+        if acts:
+            # an active truss element keeps its weight at its joints, the base's axial share
+            # at the start joint and the tube's at the end joint (as static's bars)
+            bars = np.zeros(s.n_members, dtype=bool)
+            bars[self.t_member] = True
+            out[: s.n_nodes * d] += active_weight_joint_loads(s, members=bars).ravel()
         return out
 
     def positions(self, u: np.ndarray) -> np.ndarray:
@@ -764,3 +788,50 @@ def _assemble_mixed(ndof, ds, fs, ks, tangent):
     K = sp.coo_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
                       shape=(ndof, ndof)).tocsr()
     return F, K
+
+
+def _active_shares(structure: Structure, X: np.ndarray, conn: np.ndarray,
+                   members: np.ndarray, acts: list) -> tuple[np.ndarray, np.ndarray]:
+    """The masses of the active members' bodies at the start and end point of every element.
+
+    An active member is its base (``base_mass`` at ``base_cg`` from the start node) and its
+    leadscrew tube (ρA over the last ``tube_length``; :mod:`trussfe.mechanics.active_bodies`).
+    Each element ``[s₀, s₁]`` along its member takes the tube's part on it and the base if
+    ``s₀ <= base_cg < s₁`` (the last element also at ``base_cg = L``), each split between its
+    ends by the lever rule: a mass m at s gives ``m (s₁ − s)/h`` and ``m (s − s₀)/h``, which
+    keeps the weight and its moment about any point.
+
+    Returns
+    -------
+    at_start, at_end : ndarray, shape (n_elements,)
+        kg; zero on the elements of passive members.
+    """
+    s = structure
+    idx = np.array([a.member for a in acts], dtype=np.int64)
+    row = np.full(s.n_members, -1, dtype=np.int64)
+    row[idx] = np.arange(idx.size)
+    el = np.flatnonzero(row[members] >= 0)
+    r = row[members[el]]
+    start = s.coords[s.connectivity[idx, 0]]
+    L = s.lengths()[idx]
+    e = (s.coords[s.connectivity[idx, 1]] - start) / L[:, None]
+    # where each element starts and ends along its member
+    s0 = np.einsum("ij,ij->i", X[conn[el, 0]] - start[r], e[r])
+    s1 = np.einsum("ij,ij->i", X[conn[el, 1]] - start[r], e[r])
+    h = s1 - s0
+    tube_len = np.array([a.tube_length for a in acts])
+    rho_a = (s.density * s.area)[idx]
+    lo = np.maximum(s0, (L - tube_len)[r])
+    hi = np.minimum(s1, L[r])
+    m_tube = rho_a[r] * np.maximum(hi - lo, 0.0)
+    x_tube = 0.5 * (lo + hi)
+    # a centre of gravity off the member's ends still weighs: at the nearer end
+    cg = np.clip(np.array([a.base_cg for a in acts])[r], 0.0, L[r])
+    last = np.isclose(s1, L[r], rtol=1e-12, atol=0.0)
+    holds = (s0 <= cg) & ((cg < s1) | (last & (cg <= s1)))
+    m_base = np.where(holds, np.array([a.base_mass for a in acts])[r], 0.0)
+    at_end = np.zeros(len(conn))
+    at_start = np.zeros(len(conn))
+    at_end[el] = (m_tube * (x_tube - s0) + m_base * (cg - s0)) / h
+    at_start[el] = m_tube + m_base - at_end[el]
+    return at_start, at_end

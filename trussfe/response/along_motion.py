@@ -49,7 +49,7 @@ from ..linalg import SingularMatrixError
 from ..mechanics.conventions import PHYSICAL, Conventions
 from ..mechanics.geometry import from_end_node, stations
 from ..model.structure import Structure
-from ..rigid.forces import MemberBodies, member_bodies
+from ..mechanics.active_bodies import MemberBodies, member_bodies
 from ..rigid.kinematics import Kinematics
 from ..rigid.sections import SectionForces
 from .loads import MotionLoads, element_load_components, motion_loads, rotations3
@@ -303,7 +303,7 @@ def elastic_along_motion(structure: Structure, kin: Kinematics, *,
     kin : Kinematics
         Rigid-body kinematics of the motion (``SimulationResult.kinematics``).
     bodies : MemberBodies, optional
-        Mass elements (default :func:`trussfe.rigid.forces.member_bodies`).
+        Mass elements (default :func:`trussfe.mechanics.active_bodies.member_bodies`).
     subdivisions : int
         Elements per member (≥ 1).  Any number gives the same section forces (they are
         exact); ``n_sections − 1`` puts the passive members' sections on element ends.

@@ -24,17 +24,14 @@ current configuration, with what its mass elements need to follow that motion (L
   force ``F_b = −m_b (a_a + cg_b ë − g)`` and the couple ``C_b = −I_b α``.
 * **lumped nodal masses and external loads**: ``P + M (g − a)`` at the nodes.
 
-These are exactly the mass elements of :func:`trussfe.rigid.forces.member_bodies`, so the
+These are exactly the mass elements of :func:`trussfe.mechanics.active_bodies.member_bodies`, so the
 loads' resultant on a member equals the rigid model's ``R`` and ``M_a`` (eq. 4.20).
 
-**The active base on a line model.**  In the rigid model the leadscrew tube is cut only
-through the tube: the base is a separate body that reaches the tube at the cantilever
-connection x_c = L − L_t (Lacy eqs. 4.63–4.67), even where the two overlap physically
-(the triangular truss: cg_b = 1.05 m lies beyond x_c = 0.5 m at the start of the Base
-Simulation).  A finite-element member is one line, so the base's resultant is applied on the
-base side of the connection, at ``x_p = min(cg_b, x_c)``, with the transfer couple
-``(cg_b − x_p) e × F_b`` that keeps its moment: statically equivalent for the member and
-identical for every section of the tube, which is where the rigid model reports forces.
+**The active base on a line model** is applied on the base side of the cantilever connection,
+at ``x_p = min(cg_b, x_c)`` with a transfer couple (:mod:`trussfe.mechanics.active_bodies`,
+:func:`~trussfe.mechanics.active_bodies.base_load_point`): statically equivalent for the
+member and identical for every section of the tube, which is where the rigid model reports
+forces.
 """
 from __future__ import annotations
 
@@ -43,7 +40,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..model.structure import Structure
-from ..rigid.forces import MemberBodies, member_bodies
+from ..mechanics.active_bodies import MemberBodies, base_load_point, member_bodies
 from ..rigid.kinematics import Kinematics, pad3
 
 #: Three-point Gauss–Legendre rule on [−1, 1]: exact to degree 5 (load linear × cubic shape).
@@ -146,7 +143,8 @@ def motion_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies | N
     kin : Kinematics
         Kinematics of the motion (``kin.at_rest()`` gives the static loads).
     bodies : MemberBodies, optional
-        Mass elements (default :func:`trussfe.rigid.forces.member_bodies`, the rigid model's).
+        Mass elements (default :func:`trussfe.mechanics.active_bodies.member_bodies`, the
+        rigid model's).
     gravity : bool
         Include gravity (``structure.gravity``).
     loads : bool
@@ -181,7 +179,7 @@ def motion_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies | N
     couple = -(mu * bodies.tube_radius2[None, :, None]) * kin.alpha
     xc = L - bodies.tube_length[None, :]
     cg = np.broadcast_to(bodies.base_cg[None, :], L.shape)
-    xp = np.where(bodies.active[None, :], np.minimum(cg, xc), 0.0)
+    xp = base_load_point(bodies, L)
     mb = bodies.base_mass[None, :, None]
     fb = -mb * (aa + bodies.base_cg[None, :, None] * edd - g)
     cb = (-bodies.base_inertia_cg[None, :, None] * kin.alpha

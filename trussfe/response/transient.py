@@ -75,7 +75,7 @@ from ..linalg import SingularMatrixError, factor
 from ..mechanics.mass import mass_per_length
 from ..fem.static import section_forces as fe_section_forces
 from ..model.structure import Structure
-from ..rigid.forces import member_bodies
+from ..mechanics.active_bodies import member_bodies
 from ..rigid.kinematics import Kinematics
 from ..rigid.motion import Motion
 from ..rigid.simulate import simulate

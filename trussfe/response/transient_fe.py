@@ -52,7 +52,8 @@ from ..fem.modal import active_member_mass
 from ..mechanics.geometry import member_vectors
 from ..model.structure import Structure
 from ..rigid.active import active_members
-from ..rigid.forces import MemberBodies, member_resultants
+from ..mechanics.active_bodies import MemberBodies
+from ..rigid.forces import member_resultants
 from ..rigid.kinematics import Kinematics, pad3
 from .along_motion import copy_ids
 
@@ -207,7 +208,7 @@ def active_member_loads(structure: Structure, kin: Kinematics, bodies: MemberBod
     kin : Kinematics
         Rigid-body kinematics at ``nt`` instants.
     bodies : MemberBodies
-        From :func:`trussfe.rigid.forces.member_bodies`.
+        From :func:`trussfe.mechanics.active_bodies.member_bodies`.
 
     Returns
     -------

@@ -35,74 +35,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import AnalysisError
-from ..mechanics.mass import centroidal_inertia, gyration_squared, member_mass
+from ..mechanics.active_bodies import MemberBodies, member_bodies
 from ..model.derived import kept
 from ..model.structure import Structure
-from .active import active_members
 from .kinematics import Kinematics, _count_message, _Pattern, pad3
 from .linalg import SingularStep, batched_solve
 from ..vectors import components_first, cross, dot, empty_vectors, take
-
-
-@dataclass
-class MemberBodies:
-    """Mass elements of every member: a distributed tube and a lumped base.
-
-    Attributes
-    ----------
-    tube_mass, tube_length : ndarray, shape (m,)
-        Mass ρ A L_t and length L_t of the uniform tube part (the whole member if passive).
-    tube_radius2 : ndarray, shape (m,)
-        Mean I/A of the tube section, m² (the cross-section part of its transverse inertia).
-    base_mass, base_cg, base_inertia_cg : ndarray, shape (m,)
-        Active base mass, its centre of gravity from the start node, its inertia about its
-        own centre of gravity (zero for passive members).
-    active : ndarray of bool, shape (m,)
-    """
-
-    tube_mass: np.ndarray
-    tube_length: np.ndarray
-    tube_radius2: np.ndarray
-    base_mass: np.ndarray
-    base_cg: np.ndarray
-    base_inertia_cg: np.ndarray
-    active: np.ndarray
-
-    def tube_inertia(self, seg_length: np.ndarray | float, seg_mass: np.ndarray,
-                     full_length: bool = False) -> np.ndarray:
-        """Transverse inertia of a tube piece about its centre, m (I/A + ℓ²/12).
-
-        ``full_length=True`` uses the whole tube length for every piece, as Lacy's Appendix A
-        does for the section equations (``iz``, ``is``).
-        """
-        ell = self.tube_length if full_length else seg_length
-        return centroidal_inertia(seg_mass, ell, self.tube_radius2)
-
-
-def member_bodies(structure: Structure) -> MemberBodies:
-    """Mass elements of the structure's members (Lacy Appendix A/C masses).
-
-    Passive members: ρ A L, centre of gravity at L/2 and I = m (I_sec/A + L²/12)
-    (Lacy's ``m (3 OD² + 3 ID² + 4 L²)/48`` for a tube).  Active members: base mass, centre of
-    gravity and inertia from ``[active_members]``; tube ρ A L_tube with the member's section.
-    """
-    L = structure.lengths()
-    A = structure.area
-    m = structure.n_members
-    tl = L.copy()
-    mb = np.zeros(m)
-    cg = np.zeros(m)
-    ib = np.zeros(m)
-    act = np.zeros(m, dtype=bool)
-    for a in active_members(structure):
-        k = a.member
-        tl[k] = a.tube_length
-        mb[k], cg[k], ib[k] = a.base_mass, a.base_cg, a.base_inertia_cg
-        act[k] = True
-    return MemberBodies(tube_mass=member_mass(structure.density, A, tl), tube_length=tl,
-                        tube_radius2=gyration_squared(structure.Iy, structure.Iz, A),
-                        base_mass=mb, base_cg=cg, base_inertia_cg=ib,
-                        active=act)
 
 
 @dataclass
