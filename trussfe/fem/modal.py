@@ -40,7 +40,6 @@ dimension ``r`` is the number of zero-frequency modes.  They are reported as exa
 """
 from __future__ import annotations
 
-import dataclasses
 import logging
 from dataclasses import dataclass
 
@@ -54,6 +53,7 @@ import scipy.sparse.linalg as spla
 from ..errors import AnalysisError, InputError
 from ..io.json_document import result_json
 from ..mechanics.geometry import member_vectors, unit_vectors
+from ..mechanics.active_bodies import massless_active
 from ..mechanics.mass import gyration_squared, mass_per_length, rigid_line_mass, tube_moments
 from ..model.structure import Structure
 from .discretisation import FEModel, discretise
@@ -136,10 +136,7 @@ def mass_matrix(fe: FEModel, kind: str = "consistent", include_nodal_masses: boo
     if not acts:
         return fe.mass(kind=kind, include_nodal_masses=include_nodal_masses)
     # The same topology with massless active members: DOF numbering is identical.
-    mats = fe.structure.materials
-    s = fe.structure.with_materials(
-        {a.member: dataclasses.replace(mats[a.member], density=0.0) for a in acts})
-    fe0 = discretise(s, bar_model=fe.bar_model, subdivisions=fe.subdivisions)
+    fe0 = discretise(massless_active(fe.structure), bar_model=fe.bar_model, subdivisions=fe.subdivisions)
     return (fe0.mass(kind=kind, include_nodal_masses=include_nodal_masses)
             + active_member_mass(fe)).tocsr()
 

@@ -21,7 +21,7 @@ identical for every section of the tube, which is where the rigid model reports 
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -91,6 +91,17 @@ def member_bodies(structure: Structure) -> MemberBodies:
                         base_mass=mb, base_cg=cg, base_inertia_cg=ib,
                         active=act)
 
+
+
+def massless_active(structure: Structure) -> Structure:
+    """The structure with active members that carry no distributed mass (density 0), for the
+    finite-element matrices of an analysis that adds their bodies itself
+    (:func:`trussfe.fem.modal.active_member_mass`, the motion loads of
+    :mod:`trussfe.response`)."""
+    mats = structure.materials
+    return structure.with_materials(
+        {a.member: replace(mats[a.member], density=0.0)
+         for a in structure.extensions.get("active_members", ())})
 
 def base_load_point(bodies: MemberBodies, length: np.ndarray) -> np.ndarray:
     """``x_p = min(cg_b, L − L_t)``: where a line model applies an active base's resultant, m

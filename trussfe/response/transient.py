@@ -81,7 +81,8 @@ from ..rigid.motion import Motion
 from ..rigid.simulate import simulate
 from .along_motion import error_at_step
 from .loads import hermite
-from .transient_fe import assemble_block, massless_active
+from ..mechanics.active_bodies import massless_active
+from .transient_fe import assemble_block
 
 log = logging.getLogger(__name__)
 

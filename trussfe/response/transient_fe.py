@@ -52,24 +52,12 @@ from ..fem.modal import active_member_mass
 from ..mechanics.geometry import member_vectors
 from ..model.structure import Structure
 from ..rigid.active import active_members
-from ..mechanics.active_bodies import MemberBodies
+from ..mechanics.active_bodies import MemberBodies, massless_active
 from ..rigid.forces import member_resultants
 from ..rigid.kinematics import Kinematics, pad3
 from .along_motion import copy_ids
 
 log = logging.getLogger(__name__)
-
-
-def massless_active(structure: Structure) -> Structure:
-    """The structure with active members that carry no distributed mass.
-
-    Their inertia enters through :func:`~trussfe.fem.modal.active_member_mass` (elastic part)
-    and :func:`active_member_loads` (rigid motion) instead.
-    """
-    mats = structure.materials
-    return structure.with_materials(
-        {a.member: dataclasses.replace(mats[a.member], density=0.0)
-         for a in active_members(structure)})
 
 
 def batch_structure(structure: Structure, coords: np.ndarray) -> Structure:
