@@ -167,6 +167,16 @@ def test_bad_span_in_a_model_file(span, message):
     assert "member_loads[0] (member AB).span" in str(exc.value)
 
 
+@pytest.mark.parametrize("load,needs", [
+    ({"kind": "uniform", "span": [0.0, 0.5]}, "missing 'q' (a uniform load needs q)"),
+    ({"kind": "trapezoidal", "q_start": [0.0, -1.0], "span": [0.0, 0.5]},
+     "missing 'q_end' (a trapezoidal load needs q_start and q_end)")])
+def test_span_is_optional_in_the_missing_key_message(load, needs):
+    d = dict(MODEL, member_loads=[{"member": "AB", **load}])
+    with pytest.raises(InputError, match=needs.replace("(", r"\(").replace(")", r"\)")):
+        model_from_dict(d)
+
+
 def test_span_on_a_point_load_is_an_unknown_key():
     d = dict(MODEL, member_loads=[{"member": "AB", "kind": "point", "at": 0.5,
                                    "F": [0.0, -1.0], "span": [0.0, 0.5]}])

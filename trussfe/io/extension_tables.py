@@ -296,8 +296,9 @@ def parse_monitor(text: str, structure: Structure, item: str = "--monitor") -> t
     return structure.node_index(node), AXES.index(axis)
 
 #: Keys of a member load besides ``member``, ``kind`` and ``axes``, per kind.
-_LOAD_KEYS = {"uniform": ("q", "span"), "trapezoidal": ("q_start", "q_end", "span"),
-              "point": ("at", "F", "M")}
+_LOAD_KEYS = {"uniform": ("q",), "trapezoidal": ("q_start", "q_end"), "point": ("at", "F", "M")}
+#: Optional keys of a distributed member load.
+_OPTIONAL_KEYS = {"uniform": ("span",), "trapezoidal": ("span",), "point": ()}
 
 
 def _load_vector(raw: dict, key: str, item: str, size: int) -> tuple[float, ...]:
@@ -348,7 +349,7 @@ def parse_member_loads(raw: Any, structure: Structure, base_dir: Path | None = N
         if kind not in LOAD_KINDS:
             raise InputError(f"{it}.kind", f"unknown member-load kind {kind!r}; use one of "
                              + ", ".join(LOAD_KINDS))
-        allowed = ("member", "kind", "axes") + _LOAD_KEYS[kind]
+        allowed = ("member", "kind", "axes") + _LOAD_KEYS[kind] + _OPTIONAL_KEYS[kind]
         for key in t:
             if key not in allowed:
                 raise InputError(f"{it}.{key}", f"unknown key '{key}' for a {kind} load; "
@@ -357,7 +358,7 @@ def parse_member_loads(raw: Any, structure: Structure, base_dir: Path | None = N
         if axes not in LOAD_AXES:
             raise InputError(f"{it}.axes", f"unknown axes {axes!r}; use global or local")
         for key in _LOAD_KEYS[kind]:
-            if key not in t and key not in ("M", "F", "span"):
+            if key not in t and key not in ("M", "F"):
                 raise InputError(it, f"missing '{key}' (a {kind} load needs "
                                      f"{' and '.join(_LOAD_KEYS[kind][:2])})")
         if kind in ("uniform", "trapezoidal"):
