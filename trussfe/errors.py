@@ -74,6 +74,11 @@ class TrussfeError(Exception):
         """Return a copy of the error whose item is prefixed with ``filename``."""
         return self.with_item(f"{filename}: {self.item}" if self.item else filename)
 
+    def in_file(self, source: str | None) -> "TrussfeError":
+        """:meth:`with_file` of ``source`` where there is one (a model read from a file), else
+        the error itself."""
+        return self.with_file(source) if source else self
+
 
 class InputError(TrussfeError):
     """A model file, motion file or option that is malformed or inconsistent."""

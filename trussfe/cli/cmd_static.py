@@ -81,12 +81,8 @@ def write_collection(path: str | Path, solution) -> Path:
     ``_`` and ``.`` of a name become ``_``), and ``OUT_stations.pvd`` listing their
     ``_stations.vtu`` files (with the same time values) where there are any."""
     from ..io.vtk import write_pvd
-    from ..errors import InputError
 
     path = Path(path)
-    if path.suffix not in VTK_SUFFIXES:
-        raise InputError(str(path), "VTK output of several load cases must end in .vtu or "
-                                    ".pvd (a .pvd collection is written)")
     stem = path.with_suffix("")
     entries, along, used = [], [], set()
     results = [("case", n, r) for n, r in solution.cases.items()] + \
@@ -194,17 +190,11 @@ def _extreme(kind: str, force: float, member: str, over: str, name: str) -> str:
     return f"no member in {kind} in any {over}"
 
 
-def _one_case(args: argparse.Namespace, structure) -> bool:
-    """Whether the run solves one case (one ``.vtu``) rather than every load case (a
-    ``.pvd`` collection): :func:`trussfe.api.linear.solves_one_case`."""
-    from ..api.linear import solves_one_case
-    return solves_one_case(structure, case=args.case, combination=args.combination,
-                           all_cases=args.all_cases)
-
-
 def _main(args: argparse.Namespace) -> int:
+    from ..api.linear import solves_one_case
     model = api.read_model(args.model)
-    if args.vtk and Path(args.vtk).suffix == ".pvd" and _one_case(args, model):
+    if args.vtk and Path(args.vtk).suffix == ".pvd" and solves_one_case(
+            model, case=args.case, combination=args.combination, all_cases=args.all_cases):
         # refused before the analysis, not after it
         raise InputError("--vtk", f"'{args.vtk}': one case is written as one .vtu file; give "
                                   "a name ending in .vtu (a .pvd collection is written for the "

@@ -34,7 +34,7 @@ from ..linalg.eigen import DENSE_BUCKLING_LIMIT, EigenNotConverged, buckling_pai
 from ..model.structure import Structure
 from .discretisation import FEModel
 from .solver import factorise
-from .static import StaticResult, solve_static
+from .static import StaticResult, _largest_per_row, solve_static
 
 log = logging.getLogger(__name__)
 
@@ -199,7 +199,7 @@ def largest_compression(static: StaticResult) -> np.ndarray:
     ``max(abs(min(tension)))`` over the sections), as along a motion
     (:func:`trussfe.rigid.buckling.buckling_check`).
     """
-    comp = np.fmax.reduce(-static.section_forces[..., 0], axis=1)
+    comp = _largest_per_row(-static.section_forces[..., 0])
     if static.loaded_stations is not None:
         members, _, forces = static.loaded_stations
         if members.size:

@@ -501,7 +501,7 @@ class FEModel:
                     why = "every member needs it"
                 err = InputError(owner, f"{name} is missing or not positive (member "
                                  f"{s.member_ids[i]}); {why}: give a positive {name}")
-                raise err.with_file(s.source) if s.source else err
+                raise err.in_file(s.source)
 
     def _group(self, kind, els, h, ends, emem, released) -> dict:
         """Bases, field layout, ``S``, ``G`` and ``T`` of one element group."""
@@ -1024,7 +1024,7 @@ class FEModel:
                                  f"a moment ({DOF_NAMES[s.dim][c]}) is applied at a pin joint "
                                  "that has no rotational stiffness; attach a beam without a "
                                  "release or remove the moment")
-                raise err.with_file(s.source) if s.source else err
+                raise err.in_file(s.source)
             np.add.at(f, dofs[present], P[:, : dofs.shape[1]][present])
         return f
 

@@ -131,7 +131,7 @@ def prescribed_vector(fe: FEModel, case: LoadCase) -> np.ndarray | None:
 def _in_file(structure: Structure, err: InputError) -> InputError:
     """``err`` naming the model file before its item (docs/bad-input.md), when the
     structure was read from one."""
-    return err.with_file(structure.source) if structure.source else err
+    return err.in_file(structure.source)
 
 
 def case_load(fe: FEModel, case: LoadCase) -> CaseLoad:

@@ -208,7 +208,7 @@ def _null_space(Kff, free, K) -> tuple[np.ndarray, bool]:
     shift-invert iteration stalls on thousands of them beyond a few thousand bays).  Other
     matrices: :func:`~trussfe.linalg.stiffness_null_space`.
     """
-    if K is not None and Kff.shape[0] > 2:
+    if Kff.shape[0] > 2:
         # (band_layout_free brings K to canonical form itself)
         layout = band_layout_free(K, np.asarray(free, dtype=np.int64),
                                   max_bandwidth=BANDED_MAX_BANDWIDTH, submatrix=lambda: Kff)
@@ -218,7 +218,7 @@ def _null_space(Kff, free, K) -> tuple[np.ndarray, bool]:
     return V, not (Kff.shape[0] > DENSE_LIMIT and V.shape[1] >= 12)
 
 
-def _raise_mechanism(Kff, free, fe, item, K=None):
+def _raise_mechanism(Kff, free, fe, item, K):
     V, complete = _null_space(Kff, free, K)
     r = V.shape[1]
     if r == 0:

@@ -264,7 +264,7 @@ def _member_load_entry(ml, member_ids) -> dict:
         d["q"] = list(ml.q_start)
     elif ml.kind == "trapezoidal":
         d["q_start"], d["q_end"] = list(ml.q_start), list(ml.q_end)
-    if ml.kind != "point" and ml.span != (0.0, 1.0):
+    if ml.span != (0.0, 1.0):
         d["span"] = list(ml.span)
     if ml.kind == "point":
         d["at"] = ml.at

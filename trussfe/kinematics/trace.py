@@ -54,7 +54,7 @@ import numpy as np
 import scipy.linalg as sla
 import scipy.sparse as sp
 
-from ..budget import require
+from ..budget import count_text, require
 from ..errors import AnalysisError, InputError, TrussfeError
 from ..mechanics.geometry import member_lengths
 from .compatibility import anchored_bar_count, compatibility_matrix
@@ -773,7 +773,6 @@ def trace_mechanism(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarr
                     names)
     # every state is kept (coordinates, and the per-state record of the JSON document)
     n = np.shape(coords)[0]
-    from ..budget import count_text
     # (an integer count beyond the largest float needs unbounded memory)
     states = float(steps) if steps < 1e300 else float("inf")
     require(states * (BYTES_PER_STATE_NODE * n + 2048), "--steps",
@@ -835,10 +834,5 @@ def _in_model_terms(err: TrussfeError, source: str) -> TrussfeError:
         return err
     item = _OPTION_ITEMS.get(err.item, err.item)
     if item != err.item:
-        renamed = type(err).__new__(type(err))
-        TrussfeError.__init__(renamed, item, err.message)
-        for k, v in err.__dict__.items():
-            if k not in ("item", "message", "args"):
-                setattr(renamed, k, v)
-        err = renamed
-    return err.with_file(source) if source else err
+        err = err.with_item(item)
+    return err.in_file(source)

@@ -542,8 +542,6 @@ def band_null_space(layout: BandLayout, tolerance: float, max_vectors: int = 64
         piv = ct[bw, :done] ** 2
         small = np.flatnonzero(~(piv > tolerance * diag[start:start + done]))
         t = int(small[0]) if small.size else done
-        if t >= sub.shape[1]:
-            t = sub.shape[1]
         # columns before t are the constrained matrix's factor (rows from `start` on), and
         # so is column t above its pivot
         last = min(t + 1, sub.shape[1])

@@ -224,14 +224,14 @@ def active_weight_joint_loads(structure: Structure, gravity: np.ndarray | None =
     if not acts or not np.any(g):
         return out
     idx = np.array([a.member for a in acts], dtype=np.int64)
+    bodies = member_bodies(s)
     L = s.lengths()[idx]
     e = s.unit_vectors()[idx]
-    lt = np.array([a.tube_length for a in acts])
+    lt, m_tube, m_base = (bodies.tube_length[idx], bodies.tube_mass[idx],
+                          bodies.base_mass[idx])
     rho_a = mass_per_length(s.density, s.area)[idx]
-    m_base = np.array([a.base_mass for a in acts])
-    m_tube = rho_a * lt
     # the bodies' weights and where they act from the start joint
-    cg = np.clip(np.array([a.base_cg for a in acts]), 0.0, L)
+    cg = np.clip(bodies.base_cg[idx], 0.0, L)
     W_base, W_tube = m_base[:, None] * g, m_tube[:, None] * g
     along = lambda W: np.einsum("ij,ij->i", W, e)[:, None] * e            # noqa: E731
     across = lambda W: W - along(W)                                       # noqa: E731

@@ -157,7 +157,7 @@ class MemberLoadArrays:
     at: np.ndarray
     F: np.ndarray
     C: np.ndarray = field(repr=False)
-    span: np.ndarray = field(repr=False, default_factory=lambda: np.zeros((0, 2)))
+    span: np.ndarray = field(repr=False)
 
 
 def load_arrays(loads: Sequence[MemberLoad], dim: int) -> MemberLoadArrays:
@@ -189,7 +189,6 @@ def load_arrays(loads: Sequence[MemberLoad], dim: int) -> MemberLoadArrays:
     point = np.array([ld.kind == "point" for ld in loads], dtype=bool)
     local = np.array([ld.axes == "local" for ld in loads], dtype=bool)
     at = np.array([ld.at if ld.kind == "point" else 0.0 for ld in loads], dtype=float)
-    span = np.array([ld.span if ld.kind != "point" else (0.0, 1.0) for ld in loads],
-                    dtype=float).reshape(n, 2)
+    span = np.array([ld.span for ld in loads], dtype=float).reshape(n, 2)
     return MemberLoadArrays(member=member, point=point, local=local, q1=q1, q2=q2, at=at,
                             F=F, C=C, span=span)

@@ -27,7 +27,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..budget import require
+from ..budget import count_text, require
 from ..errors import AnalysisError
 from ..io.extension_tables import AXES, parse_monitor
 from ..io.json_document import result_json
@@ -65,9 +65,9 @@ def run_postcritical(structure: Structure, **options) -> PathResult:
     model = NonlinearModel(structure, bar_model=opts.pop("bar_model", "truss"),
                            subdivisions=opts.pop("subdivisions",
                                                   DEFAULT_POSTCRITICAL_SUBDIVISIONS), laws=laws,
-                           subdivisions_item=_subdivisions_item(structure, given))
+                           subdivisions_item=_option_item(structure, given, "subdivisions"))
     _require_path_memory(model, opts.get("steps", _DEFAULT_STEPS),
-                         _steps_item(structure, given))
+                         _option_item(structure, given, "steps"))
     imperfection = opts.pop("imperfection", 0.0)
     if imperfection:
         _, modes = linear_buckling(model, count=1)
@@ -112,27 +112,18 @@ def _require_path_memory(model: NonlinearModel, steps, item: str) -> None:
     """Refuse, before the first step, a number of steps whose path points cannot all be
     kept (:func:`trussfe.budget.require`): a path stops early only at an event, so the
     steps asked for are what it may store."""
-    from ..budget import count_text
     s = model.structure
     require(path_bytes(model, steps), item,
             f"a path of {count_text(steps)} steps ({s.n_nodes:,} nodes, {model.ndof:,} DOFs, "
             f"{s.n_members:,} members per point)", "use fewer steps")
 
 
-def _steps_item(structure: Structure, given: dict) -> str:
-    """What gave the number of steps, to name when it is refused: the option, else the
-    model file's ``[postcritical]`` table."""
-    if "steps" in given:
-        return "--steps"
-    return ": ".join(filter(None, (structure.source, "postcritical.steps")))
-
-
-def _subdivisions_item(structure: Structure, given: dict) -> str:
-    """What gave the number of beam elements per member, to name when it is refused: the
-    option, else the model file's ``[postcritical]`` table."""
-    if "subdivisions" in given:
-        return "--subdivisions"
-    return ": ".join(filter(None, (structure.source, "postcritical.subdivisions")))
+def _option_item(structure: Structure, given: dict, key: str) -> str:
+    """What gave the option ``key`` (``steps``, ``subdivisions``), to name when it is
+    refused: the option, else the model file's ``[postcritical]`` table."""
+    if key in given:
+        return f"--{key}"
+    return ": ".join(filter(None, (structure.source, f"postcritical.{key}")))
 
 
 def unmodelled_buckling(result: PathResult) -> tuple[int, float, float] | None:

@@ -44,7 +44,8 @@ import numpy as np
 
 from ..budget import count_text, require
 from ..errors import InputError
-from ..mechanics.active_bodies import active_weight_joint_loads
+from ..mechanics.active_bodies import active_weight_joint_loads, member_bodies
+from ..mechanics.mass import mass_per_length
 from ..mechanics.geometry import member_lengths, member_vectors
 from ..model.bar_models import BAR_MODELS, DEFAULT_POSTCRITICAL_SUBDIVISIONS
 from ..model.structure import Structure
@@ -456,18 +457,19 @@ class NonlinearModel:
             members.append(self.b_member)
         conn, members = np.concatenate(conn), np.concatenate(members)
         # active members of beam elements: their bodies instead of ρA (below)
-        acts = [a for a in s.extensions.get("active_members", ())]
+        acts = list(s.extensions.get("active_members", ()))
         on_beams = np.zeros(s.n_members, dtype=bool)
         on_beams[[a.member for a in acts]] = True
         on_beams[self.t_member] = False
         # every element of a uniform member: half its weight at each end
-        L0 = member_lengths(self.X, conn)
-        half = np.where(on_beams[members], 0.0, 0.5 * (s.density * s.area)[members] * L0)
+        L0 = (np.concatenate([self.t_len0, member_lengths(self.X, self.b_conn)])
+              if len(self.b_conn) else self.t_len0)
+        half = np.where(on_beams[members], 0.0,
+                        0.5 * mass_per_length(s.density, s.area)[members] * L0)
         mass = np.bincount(conn.ravel(), np.repeat(half, 2), minlength=self.n_points)
         if np.any(on_beams):
             el = np.flatnonzero(on_beams[members])
-            at_start, at_end = _active_shares(s, self.X, conn[el], members[el],
-                                              [a for a in acts if on_beams[a.member]])
+            at_start, at_end = _active_shares(s, self.X, conn[el], members[el])
             mass += np.bincount(conn[el, 0], at_start, minlength=self.n_points)
             mass += np.bincount(conn[el, 1], at_end, minlength=self.n_points)
         mass[: s.n_nodes] += s.masses
@@ -791,8 +793,9 @@ def _assemble_mixed(ndof, ds, fs, ks, tangent):
 
 
 def _active_shares(structure: Structure, X: np.ndarray, conn: np.ndarray,
-                   members: np.ndarray, acts: list) -> tuple[np.ndarray, np.ndarray]:
-    """The masses of the active members' bodies at the start and end point of every element.
+                   members: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The masses of the active members' bodies at the start and end point of elements of
+    active members.
 
     An active member is its base (``base_mass`` at ``base_cg`` from the start node) and its
     leadscrew tube (ρA over the last ``tube_length``; :mod:`trussfe.mechanics.active_bodies`).
@@ -801,37 +804,37 @@ def _active_shares(structure: Structure, X: np.ndarray, conn: np.ndarray,
     ends by the lever rule: a mass m at s gives ``m (s₁ − s)/h`` and ``m (s − s₀)/h``, which
     keeps the weight and its moment about any point.
 
+    Parameters
+    ----------
+    structure : Structure
+    X : ndarray, shape (point, dim)
+        Point positions.
+    conn : ndarray of int, shape (k, 2)
+        End points of the elements.
+    members : ndarray of int, shape (k,)
+        Their (active) members.
+
     Returns
     -------
-    at_start, at_end : ndarray, shape (n_elements,)
-        kg; zero on the elements of passive members.
+    at_start, at_end : ndarray, shape (k,)
+        kg.
     """
     s = structure
-    idx = np.array([a.member for a in acts], dtype=np.int64)
-    row = np.full(s.n_members, -1, dtype=np.int64)
-    row[idx] = np.arange(idx.size)
-    el = np.flatnonzero(row[members] >= 0)
-    r = row[members[el]]
-    start = s.coords[s.connectivity[idx, 0]]
-    L = s.lengths()[idx]
-    e = (s.coords[s.connectivity[idx, 1]] - start) / L[:, None]
+    bodies = member_bodies(s)
+    L = s.lengths()[members]
+    e = s.unit_vectors()[members]
+    start = s.coords[s.connectivity[members, 0]]
     # where each element starts and ends along its member
-    s0 = np.einsum("ij,ij->i", X[conn[el, 0]] - start[r], e[r])
-    s1 = np.einsum("ij,ij->i", X[conn[el, 1]] - start[r], e[r])
-    h = s1 - s0
-    tube_len = np.array([a.tube_length for a in acts])
-    rho_a = (s.density * s.area)[idx]
-    lo = np.maximum(s0, (L - tube_len)[r])
-    hi = np.minimum(s1, L[r])
-    m_tube = rho_a[r] * np.maximum(hi - lo, 0.0)
+    s0 = np.einsum("ij,ij->i", X[conn[:, 0]] - start, e)
+    s1 = np.einsum("ij,ij->i", X[conn[:, 1]] - start, e)
+    lo = np.maximum(s0, L - bodies.tube_length[members])
+    hi = np.minimum(s1, L)
+    m_tube = mass_per_length(s.density, s.area)[members] * np.maximum(hi - lo, 0.0)
     x_tube = 0.5 * (lo + hi)
     # a centre of gravity off the member's ends still weighs: at the nearer end
-    cg = np.clip(np.array([a.base_cg for a in acts])[r], 0.0, L[r])
-    last = np.isclose(s1, L[r], rtol=1e-12, atol=0.0)
+    cg = np.clip(bodies.base_cg[members], 0.0, L)
+    last = np.isclose(s1, L, rtol=1e-12, atol=0.0)
     holds = (s0 <= cg) & ((cg < s1) | (last & (cg <= s1)))
-    m_base = np.where(holds, np.array([a.base_mass for a in acts])[r], 0.0)
-    at_end = np.zeros(len(conn))
-    at_start = np.zeros(len(conn))
-    at_end[el] = (m_tube * (x_tube - s0) + m_base * (cg - s0)) / h
-    at_start[el] = m_tube + m_base - at_end[el]
-    return at_start, at_end
+    m_base = np.where(holds, bodies.base_mass[members], 0.0)
+    at_end = (m_tube * (x_tube - s0) + m_base * (cg - s0)) / (s1 - s0)
+    return m_tube + m_base - at_end, at_end

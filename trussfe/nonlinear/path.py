@@ -661,7 +661,6 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
     #: consecutive rejections of steps that crossed an inertia change, counted across the
     #: shortened steps accepted in between (a corner of a member's law: see below)
     corner_cuts = 0
-    after_reject = False
     k = 0
     while k < steps:
         if progress is not None:
@@ -752,7 +751,6 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                 # the inertia changed across a jump, not at a singular tangent: a smaller step
                 rejected += 1
                 corner_cuts += 1
-                after_reject = True
                 ds = 0.5 * dss
                 continue
         else:
@@ -762,10 +760,9 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                 kind, detail, _, _ = _classify(st, uf1, neg, neg1)
                 out.events.append(Event(kind, lam1, point=len(out.path),
                                         detail=detail + "; at a member failure event"))
-        rejected = 0
         # a shortened step accepted right after a rejection keeps the count of the corner
-        corner_cuts = corner_cuts if after_reject and not corner else 0
-        after_reject = False
+        corner_cuts = corner_cuts if rejected and not corner else 0
+        rejected = 0
         branch_dir = None
         m.commit(res1)
         if crit is not None:

@@ -113,6 +113,12 @@ def actuators_of(structure: Structure) -> list[Actuator]:
     return list(structure.extensions.get("actuators", []))
 
 
+def rest_rate(velocity: np.ndarray) -> float:
+    """The rate within which a member counts as at rest: :data:`REST_RTOL` of the fastest
+    member's (0 for no rates)."""
+    v = np.abs(np.asarray(velocity, dtype=float))
+    return REST_RTOL * float(v.max()) if v.size else 0.0
+
 def motor_histories(act: Actuator, force: np.ndarray, velocity: np.ndarray,
                     acceleration: np.ndarray, static_force: np.ndarray | None = None,
                     time: np.ndarray | None = None, rest_velocity: float | None = None) -> dict:
@@ -179,7 +185,7 @@ def motor_histories(act: Actuator, force: np.ndarray, velocity: np.ndarray,
         # motor must overcome the static load before motion starts (Lacy section 2.9).  A
         # round-off rate is rest, whichever its sign.
         if rest_velocity is None:
-            rest_velocity = REST_RTOL * float(np.abs(velocity).max()) if velocity.size else 0.0
+            rest_velocity = rest_rate(velocity)
         against = (force * velocity > 0.0) | (np.abs(velocity) <= rest_velocity)
         ratio = thread_ratio(act.lead, act.mean_diameter, act.friction, act.thread_angle,
                              against)
@@ -266,8 +272,7 @@ def actuator_histories(structure: Structure, motion, actuator_force: np.ndarray,
     fs = None if static_force is None else np.atleast_2d(np.asarray(static_force, dtype=float))
     # Rest: rates within round-off of the fastest member's (a member the motion holds still may
     # carry rates of 1e-14 m/s from the differentiated lengths).
-    speeds = np.abs(np.asarray(motion.velocity, dtype=float))
-    rest = REST_RTOL * float(speeds.max()) if speeds.size else 0.0
+    rest = rest_rate(motion.velocity)
     out = {}
     for act in actuators_of(structure):
         if act.member not in members:
