@@ -116,6 +116,37 @@ def test_three_bar_yield_cap_load_path_and_plastic_collapse(control):
     assert v.max() > 2.0 * v2        # the path went on past the mechanism (rotating bars)
 
 
+@pytest.mark.parametrize("step", [2.0, 0.5])
+def test_three_bar_load_control_reports_the_collapse_and_follows_the_hardening(step):
+    """Load control through the plastic collapse of the three-bar truss (closed forms of
+    ``test_three_bar_yield_cap_load_path_and_plastic_collapse``): the inclined bars' yield at
+    λ_c = 60.3994230 is an equilibrium state, but a load step past it converges only far
+    away (the yielded truss stiffens only by rotating its bars), so the step is taken under
+    displacement control and the event located on it.  All three yield events are reported at
+    their closed-form load factors, and the path goes on to λ = 70 on the closed form
+    λ(v) of the rotating, yielded bars; every point is in equilibrium (the closed form is
+    the equilibrium of the joint)."""
+    s = _three_bar(-1000.0)
+    m = NonlinearModel(s, laws=build_failure_laws(s, {"yield": "cap"}))
+    r = follow_path(m, "load", steps=400, step=step, monitor=1, max_load_factor=70.0)
+    assert r.termination == "reached the maximum load factor 70"
+    ev = [e for e in r.events if e.kind == "yield"]
+    assert [e.member for e in ev] == [1, 0, 2]
+    v1 = FY / E
+    v2 = math.sqrt(2.0 * (1.0 + FY / E) ** 2 - 1.0) - 1.0
+    lam1 = _three_bar_yield_lambda(v1)
+    lam_c = NY * (1.0 + 2.0 * (1.0 + v2) / (math.sqrt(2.0) * (1.0 + FY / E))) / 1000.0
+    assert_allclose([e.load_factor for e in ev], [lam1, lam_c, lam_c], rtol=1e-6)
+    assert_allclose([e.force for e in ev], [NY] * 3, rtol=1e-6)
+    v = -r.displacement()
+    lam = r.load_factors
+    assert np.all(np.diff(lam) > 0.0)                # load control: λ only grows
+    assert_allclose(lam, [_three_bar_yield_lambda(x) for x in v], rtol=1e-9, atol=1e-9)
+    assert lam[-1] == pytest.approx(70.0, rel=1e-12)
+    # λ = 70 needs cos θ = 0.9: the joint has dropped by (1 + v) = 0.9/√(1 − 0.81) − 1 m
+    assert v[-1] == pytest.approx(0.9 / math.sqrt(0.19) - 1.0, rel=1e-6)
+
+
 def test_three_bar_yield_cap_path_agrees_with_opensees():
     """The same truss with OpenSees ``corotTruss`` + ``ElasticPP`` (f_y/E): the load factors
     at trussfe's path displacements agree to 1e-9 of the collapse load."""

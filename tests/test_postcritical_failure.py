@@ -162,6 +162,26 @@ def test_three_dimensional_beam_without_torsion_constant_is_refused():
         NonlinearModel(s)
 
 
+@pytest.mark.parametrize("step", [4.0, 1.0, 0.3])
+def test_load_control_reports_both_yields_and_the_collapse(step):
+    """The two parallel bars of ``test_yield_cap_events_at_closed_form_load_factors`` under
+    load control: bar 0 yields at λ₁ = 37.5, bar 1 at λ₂ = 2 A f_y / P = 50, where the
+    assembly keeps no stiffness along the load — a plastic collapse, which the path reports
+    with the yield that causes it instead of stopping short of it."""
+    s = _parallel()
+    m = NonlinearModel(s, laws=build_failure_laws(s, {"yield": "cap"}))
+    r = follow_path(m, "load", steps=400, step=step, max_load_factor=80.0, monitor=0)
+    ev = [e for e in r.events if e.kind == "yield"]
+    assert [e.member for e in ev] == [0, 1]
+    assert_allclose([e.load_factor for e in ev], [37.5, 50.0], rtol=1e-6)
+    assert r.load_factors.max() == pytest.approx(50.0, rel=1e-6)
+    assert r.load_factors.max() <= 50.0 * (1 + 1e-9)
+    assert r.termination.startswith("path cannot be continued at load factor 50: no "
+                                    "equilibrium at a larger load factor: the structure "
+                                    "collapses when member(s) 1 reach their limit")
+    assert "displacement or arc-length" in r.termination
+
+
 def test_load_control_stops_at_the_limit_point_and_says_why():
     """Load control cannot pass the von Mises truss's limit load (381.087 N): the path ends
     there, naming the load factor and the remedy."""

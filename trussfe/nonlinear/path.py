@@ -690,8 +690,17 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
         if new is not None:
             dss = new[-1]
             new = new[:-1]
+        if control == "load" and (new is None or dss < 1e-4 * abs(step)):
+            # the load step cannot be taken: a member event just ahead may soften the
+            # structure so much that equilibrium at a larger load lies far away (a plastic
+            # collapse); it is reached by displacement control and taken as this step
+            ahead = _event_ahead(st, m, uf, lam, fac, res, ds, neg, max_cuts,
+                                 event_tolerance)
+            if ahead is not None:
+                new, checked, dss = ahead[:5], None, ds
         if new is None or (control == "load" and dss < 1e-4 * abs(step)):
-            out.termination = _cannot_continue(control, lam, neg)
+            out.termination = _cannot_continue(control, lam, neg,
+                                              _failed_at(out, s, lam, st.lam_unit))
             out.events.append(Event("end", lam, detail=out.termination))
             break
         uf1, lam1, res1, its, fac_new = new
@@ -806,7 +815,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
             uf, res, fac1 = uf_new, res_new, fac_new
             neg1 = _inertia(fac1)
         if fac1 is None:
-            out.termination = _cannot_continue(control, lam, neg)
+            out.termination = _cannot_continue(control, lam, neg,
+                                              _failed_at(out, s, lam, st.lam_unit))
             out.events.append(Event("end", lam, detail=out.termination))
             break
         fac = fac1
@@ -855,9 +865,18 @@ def _attempt(st, uf, lam, fac, dss, direction, prev, mode, du_prev, neg, max_cut
     return None, None
 
 
-def _cannot_continue(control: str, lam: float, neg: int | None) -> str:
+def _cannot_continue(control: str, lam: float, neg: int | None,
+                     failed_here: list[str] | None = None) -> str:
+    """The termination text of a path that cannot go on from the load factor ``lam``;
+    ``failed_here``: the members whose failure events were applied at that state (under load
+    control, a collapse: what they carried has nowhere to go at a larger load)."""
     why = "Newton iterations did not converge even with a step cut 4096 times"
-    if control == "load" and neg:           # a count of negative eigenvalues, not unknown
+    if control == "load" and failed_here:
+        names = ", ".join(failed_here[:4]) + (", ..." if len(failed_here) > 4 else "")
+        why = ("no equilibrium at a larger load factor: the structure collapses when "
+               f"member(s) {names} reach their limit at this load factor; use --control "
+               "displacement or arc-length to follow it further")
+    elif control == "load" and neg:         # a count of negative eigenvalues, not unknown
         why = ("no equilibrium at a larger load factor: the tangent stiffness has "
                f"{neg} negative eigenvalue(s) (a limit point or unstable branch); use "
                "--control arc-length")
@@ -868,6 +887,67 @@ def _cannot_continue(control: str, lam: float, neg: int | None) -> str:
         why += ("; the monitored displacement may turn back (snap-back); use "
                 "--control arc-length")
     return f"path cannot be continued at load factor {lam:.6g}: {why}"
+
+
+def _failed_at(out: PathResult, s, lam: float, unit: float) -> list[str]:
+    """Ids of the members whose failure events the path met at the load factor ``lam`` (to
+    1e-5 of it, or of ``unit``: an event is located to the event tolerance of the member's
+    force, and the path may have crept on by a step of round-off size since)."""
+    near = 1e-5 * max(abs(lam), unit)
+    return [s.member_ids[e.member] for e in out.events
+            if e.kind in _CAUSE and e.member is not None and abs(e.load_factor - lam) <= near]
+
+
+def _event_ahead(st, m, uf, lam, fac, res, ds, neg, max_cuts, tol):
+    """Load control: the step that a load step ``ds`` from the converged state ``(uf, lam)``
+    could not take, taken under displacement control of the monitored DOF instead.
+
+    A load step that crosses a member event after which the structure is much softer (the
+    last bars of a plastic mechanism reaching their yield force) converges only far beyond
+    the event, or not at all, so the load step is cut without end short of it.  The event
+    is an equilibrium state at a larger load factor all the same: a displacement step of the
+    size the load step predicts for the monitored DOF crosses it, and
+    :func:`_locate_failure` puts the first failing member on its threshold.  Without an
+    event in it, the displacement step itself is taken when it raises the load factor (just
+    past an event, the tangent of the state at the threshold still has the member's elastic
+    stiffness; the step's own tangent has the softer one the next load steps need).
+
+    Returns the :meth:`_Stepper.step` tuple of the state reached, or None when the load
+    factor would not grow or a critical point (a limit point, where load control ends)
+    lies in the step.
+    """
+    if st.c < 0:
+        return None
+    try:
+        ut = fac.solve(st.f)
+    except SingularMatrixError:
+        return None
+    if not abs(ut[st.c]) > 1e-12 * np.abs(ut).max():
+        return None
+    mg0 = m.margins(res)
+    saved = st.dsign
+    st.dsign = float(np.sign(ut[st.c]))     # the way a growing load moves the monitored DOF
+    try:
+        new, _ = _attempt(st, uf, lam, fac, abs(ds * ut[st.c]), None, None, "displacement",
+                          None, neg, max_cuts, False)
+        if new is None:
+            return None
+        uf1, lam1, res1, its, fac1, dsu = new
+        if ((m.margins(res1) > tol) & (mg0 <= tol)).any():
+            uf1, lam1, res1, fac1 = _locate_failure(st, m, uf, lam, fac, dsu, None, None,
+                                                    "displacement", mg0, uf1, lam1, res1,
+                                                    fac1, tol)
+    finally:
+        st.dsign = saved
+    if not lam1 > lam:
+        return None
+    try:
+        fac1 = fac1 if fac1 is not None else _tangent_factor(st.eval(uf1)[2])
+    except SingularMatrixError:
+        return None
+    if _crossed(neg, _inertia(fac1)):
+        return None
+    return uf1, float(lam1), res1, its, fac1
 
 
 def _locate_failure(st, m, uf, lam, fac, dss, direction, du_prev, mode, mg0, uf1, lam1, res1,
