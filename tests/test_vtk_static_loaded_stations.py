@@ -130,3 +130,27 @@ def test_station_displacements_follow_the_joints(run):
     assert not np.any(st.points[:, 2])
     for v in st.point_data.values():
         assert np.all(np.isfinite(v))
+
+
+def test_station_displacements_interpolate_each_member_as_numpy_interp():
+    """The displacements at a loaded member's stations are interpolated between its
+    finite-element stations for all members at once; reference: ``numpy.interp`` member by
+    member (rows of different lengths, NaN-padded, stations beyond the ends clamped)."""
+    from trussfe.io.vtk_results import _interpolate_rows
+    rng = np.random.default_rng(1)
+    rows, fe_stations, stations = 40, 7, 9
+    xp = np.full((rows, fe_stations), np.nan)
+    fp = rng.normal(size=(rows, fe_stations, 3))
+    x = np.full((rows, stations), np.nan)
+    for r in range(rows):
+        n = rng.integers(2, fe_stations + 1)
+        length = rng.uniform(0.5, 20.0)
+        xp[r, :n] = np.sort(np.r_[0.0, length, rng.uniform(0.0, length, n - 2)])
+        k = rng.integers(1, stations + 1)
+        x[r, :k] = np.sort(rng.uniform(-0.1, length + 0.1, k))
+    ok = np.isfinite(x)
+    got = _interpolate_rows(x[ok], np.nonzero(ok)[0], xp, fp)
+    ref = np.concatenate([np.stack([np.interp(x[r, ok[r]], xp[r, np.isfinite(xp[r])],
+                                              fp[r, np.isfinite(xp[r]), c])
+                                    for c in range(3)], axis=-1) for r in range(rows)])
+    assert_allclose(got, ref, rtol=0, atol=1e-14)

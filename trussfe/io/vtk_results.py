@@ -59,21 +59,19 @@ def static_station_fields(result) -> tuple[np.ndarray, dict]:
 
         xi, F, disp, s1, s2 = (widen(a) for a in (xi, F, disp, s1, s2))
         vm = station_stresses(s, lF, lm)
-        for r, i in enumerate(lm):
-            ok = np.isfinite(lx[r])
-            x = lx[r, ok]
-            fe_x = result.station_x[i]
-            fe_ok = np.isfinite(fe_x)
-            d = np.stack([np.interp(x, fe_x[fe_ok], fe_disp[i, fe_ok, c])
-                          for c in range(fe_disp.shape[2])], axis=-1)
-            for a in (xi, F, disp, s1, s2):
-                a[i] = np.nan
-            n = x.size
-            xi[i, :n] = x / L[i]
-            F[i, :n] = lF[r, ok]
-            disp[i, :n] = d
-            s1[i, :n] = vm.s1[r, ok]
-            s2[i, :n] = vm.s2[r, ok]
+        ok = np.isfinite(lx)
+        row = np.nonzero(ok)[0]
+        col = (np.cumsum(ok, axis=1) - 1)[ok]          # each row's stations, packed first
+        x = lx[ok]
+        d = _interpolate_rows(x, row, result.station_x[lm], fe_disp[lm])
+        for a in (xi, F, disp, s1, s2):
+            a[lm] = np.nan
+        at = lm[row]
+        xi[at, col] = x / L[at]
+        F[at, col] = lF[ok]
+        disp[at, col] = d
+        s1[at, col] = vm.s1[ok]
+        s2[at, col] = vm.s2[ok]
     names = ("axial_force", "shear_y", "shear_z", "torque", "moment_y", "moment_z")
     fields = {n: F[:, :, i] for i, n in enumerate(names)}
     fields["displacement"] = disp
@@ -81,6 +79,29 @@ def static_station_fields(result) -> tuple[np.ndarray, dict]:
     fields["von_mises_s2"] = s2
     fields["von_mises"] = np.fmax(s1, s2)
     return xi, fields
+
+
+def _interpolate_rows(x: np.ndarray, row: np.ndarray, xp: np.ndarray, fp: np.ndarray
+                      ) -> np.ndarray:
+    """``numpy.interp`` row by row, for all rows at once: the values ``fp[r]`` (rows of
+    (s, k), given at the ascending abscissae ``xp[r]``, NaN-padded at the end) at ``x``, the
+    abscissa of row ``row``; clamped to a row's end values outside its abscissae."""
+    good = np.isfinite(xp)
+    count = good.sum(axis=1)
+    start = np.concatenate([[0], np.cumsum(count)[:-1]])
+    # one ascending key over all rows: each row's abscissae shifted past the row before
+    span = np.nanmax(np.abs(xp)) if good.any() else 1.0
+    shift = 4.0 * span + 1.0
+    key = (xp + shift * np.arange(xp.shape[0])[:, None])[good]    # for the search only
+    xs, vals = xp[good], fp[good]                                 # (points,), (points, k)
+    at = np.searchsorted(key, x + shift * row, side="right") - 1
+    lo = np.clip(at, start[row], start[row] + np.maximum(count[row] - 2, 0))
+    hi = np.minimum(lo + 1, start[row] + count[row] - 1)
+    width = xs[hi] - xs[lo]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        frac = np.where(width > 0, (x - xs[lo]) / width, 0.0)
+    frac = np.clip(frac, 0.0, 1.0)[:, None]
+    return vals[lo] * (1.0 - frac) + vals[hi] * frac
 
 
 def has_stations(result) -> bool:
