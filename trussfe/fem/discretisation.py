@@ -689,6 +689,17 @@ class FEModel:
         return bool(np.any(self.is_frame & (np.isfinite(s.shear_area_y)
                                             | np.isfinite(s.shear_area_z))))
 
+    def shear_parameter(self, field: str, elements: np.ndarray) -> np.ndarray:
+        """Φ = 12 EI / (κGA h²) of ``elements`` for the bending field ``field``: ``"v"``
+        (bending about z: ``Iz`` and ``shear_area_y``) or ``"w"`` (about y: ``Iy`` and
+        ``shear_area_z``); 0 on Euler–Bernoulli members (no shear area)
+        (:func:`~trussfe.mechanics.member_loads.shear_parameter`).  The one place the
+        stiffness, the mass and the loads of a Timoshenko element take it from."""
+        s = self.structure
+        mem = self.element_member[elements]
+        I, As = (s.Iz, s.shear_area_y) if field == "v" else (s.Iy, s.shear_area_z)
+        return shear_parameter((s.E * I)[mem], (s.G * As)[mem], self.element_length[elements])
+
     def _shear_correction(self, g: _Group) -> sp.csr_matrix:
         """Shear flexibility of the Timoshenko elements of a frame group, added to the cubic
         Euler–Bernoulli bending stiffness.
@@ -718,8 +729,7 @@ class FEModel:
                 blocks.append(sp.csr_matrix((n, n)))
                 continue
             EI = (s.E * (s.Iz if f.name == "v" else s.Iy))[mem]
-            GAs = (s.G * (s.shear_area_y if f.name == "v" else s.shear_area_z))[mem]
-            phi = shear_parameter(EI, GAs, h)
+            phi = self.shear_parameter(f.name, g.elements)
             c = -phi / (1.0 + phi) * 12.0 * EI / h**3                  # (el,)
             a = np.stack([np.ones_like(h), h / 2, -np.ones_like(h), h / 2], axis=1)
             vals = c[:, None, None] * a[:, :, None] * a[:, None, :]     # (el, 4, 4)
@@ -769,8 +779,7 @@ class FEModel:
                 blocks.append(sp.csr_matrix((n, n)))
                 continue
             I = (s.Iz if f.name == "v" else s.Iy)[mem]
-            GAs = (s.G * (s.shear_area_y if f.name == "v" else s.shear_area_z))[mem]
-            phi = shear_parameter(s.E[mem] * I, GAs, h)
+            phi = self.shear_parameter(f.name, g.elements)
             timo = phi > 0
             if not np.any(timo):
                 blocks.append(sp.csr_matrix((n, n)))

@@ -194,7 +194,9 @@ def _solve_block(structure: Structure, coords: np.ndarray, ml: MotionLoads,
                             "the elastic response needs every member subdivided alike")
     R = rotations3(fe.rotation).reshape(nt, m, 3, 3)
     ex = fe.element_x.reshape(nt, m, k, 2)
-    comp = element_load_components(ml, ex, R)                         # (t, m, k, 2, 6)
+    every = np.arange(fe.n_elements)
+    phi = tuple(fe.shear_parameter(f, every).reshape(nt, m, k) for f in "vw")
+    comp = element_load_components(ml, ex, R, phi)                    # (t, m, k, 2, 6)
     comp_flat = comp.reshape(nt * m * k, 2, 6)
     f = np.zeros(fe.n_dof)
     f_local = []

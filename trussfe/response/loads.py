@@ -41,6 +41,7 @@ import numpy as np
 
 from ..model.structure import Structure
 from ..mechanics.active_bodies import MemberBodies, base_load_point, member_bodies
+from ..mechanics.member_loads import deflection_shapes, rotation_shapes
 from ..rigid.kinematics import Kinematics, pad3
 
 #: Three-point Gauss–Legendre rule on [−1, 1]: exact to degree 5 (load linear × cubic shape).
@@ -194,44 +195,34 @@ def motion_loads(structure: Structure, kin: Kinematics, bodies: MemberBodies | N
         point_force=fb, point_couple=cb, nodal=nodal)
 
 
-def hermite(s: np.ndarray, h: np.ndarray):
-    """Cubic Hermite shape functions and their x-derivatives at s = ξ/h ∈ [0, 1]."""
-    s2, s3 = s * s, s * s * s
-    H = np.stack([1 - 3 * s2 + 2 * s3, h * (s - 2 * s2 + s3), 3 * s2 - 2 * s3,
-                  h * (s3 - s2)], axis=-1)
-    dH = np.stack([(6 * s2 - 6 * s) / h, 1 - 4 * s + 3 * s2, (6 * s - 6 * s2) / h,
-                   3 * s2 - 2 * s], axis=-1)
-    return H, dH
-
-
 def _end_components(f: np.ndarray, m: np.ndarray, s: np.ndarray, h: np.ndarray,
-                    w: np.ndarray) -> np.ndarray:
+                    w: np.ndarray, phi: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
     """Work-equivalent end components of forces f and couples m (member axes) at stations s.
 
     ``f``, ``m`` (..., p, 3) at p points of relative position ``s`` (..., p) with weights
-    ``w`` (..., p); returns (..., 2, 6): ``[Fx, Fy, Fz, Mx, My, Mz]`` at each element end.
-    Transverse fields: v with θz = v′, w with θy = −w′ (:mod:`trussfe.fem.discretisation`).
+    ``w`` (..., p); ``phi``: the shear parameters Φ of the v and w fields, each broadcastable
+    to ``h`` (0: Euler–Bernoulli).  Returns (..., 2, 6): ``[Fx, Fy, Fz, Mx, My, Mz]`` at each
+    element end, ``∫ f N_i + m ψ_i`` with the element's own shape functions
+    (:func:`~trussfe.mechanics.member_loads.deflection_shapes`,
+    :func:`~trussfe.mechanics.member_loads.rotation_shapes`).  Transverse fields: v with its
+    section rotation θz, w with −θy (:mod:`trussfe.fem.discretisation`).
     """
-    H, dH = hermite(s, h[..., None])                      # (..., p, 4)
-    P1 = np.stack([1 - s, s], axis=-1)                     # (..., p, 2)
     fw, mw = f * w[..., None], m * w[..., None]
     out = np.zeros(s.shape[:-1] + (2, 6))
-    fx = np.einsum("...p,...pa->...a", fw[..., 0], P1)
+    out[..., :, 0] = np.einsum("...p,...pa->...a", fw[..., 0], np.stack([1 - s, s], axis=-1))
     # v: DOFs (v0, θz0, v1, θz1); w: (w0, −θy0, w1, −θy1)
-    fv = (np.einsum("...p,...pa->...a", fw[..., 1], H)
-          + np.einsum("...p,...pa->...a", mw[..., 2], dH))
-    fwz = (np.einsum("...p,...pa->...a", fw[..., 2], H)
-           - np.einsum("...p,...pa->...a", mw[..., 1], dH))
-    out[..., :, 0] = fx
-    out[..., :, 1] = fv[..., [0, 2]]
-    out[..., :, 5] = fv[..., [1, 3]]
-    out[..., :, 2] = fwz[..., [0, 2]]
-    out[..., :, 4] = -fwz[..., [1, 3]]
+    for (force, couple, sign, cols), p in zip(((1, 2, 1.0, (1, 5)), (2, 1, -1.0, (2, 4))), phi):
+        hp, pp = h[..., None], np.asarray(p, dtype=float)[..., None]
+        dofs = (np.einsum("...p,...pa->...a", fw[..., force], deflection_shapes(s, hp, pp))
+                + sign * np.einsum("...p,...pa->...a", mw[..., couple],
+                                   rotation_shapes(s, hp, pp)))
+        out[..., :, cols[0]] = dofs[..., [0, 2]]
+        out[..., :, cols[1]] = sign * dofs[..., [1, 3]]
     return out
 
 
-def element_load_components(ml: MotionLoads, element_x: np.ndarray, rotation: np.ndarray
-                            ) -> np.ndarray:
+def element_load_components(ml: MotionLoads, element_x: np.ndarray, rotation: np.ndarray,
+                            phi: tuple[np.ndarray, np.ndarray] = (0.0, 0.0)) -> np.ndarray:
     """Consistent (work-equivalent) element end loads of the member loads, member axes.
 
     Parameters
@@ -244,12 +235,16 @@ def element_load_components(ml: MotionLoads, element_x: np.ndarray, rotation: np
         (nt, m, k, 2).
     rotation : ndarray, shape (nt, m, 3, 3)
         Member axes as rows (3-D; a planar member's z axis is the global z).
+    phi : tuple of ndarray
+        The elements' shear parameters Φ of the v and w fields
+        (:meth:`~trussfe.fem.discretisation.FEModel.shear_parameter`), each broadcastable to
+        (nt, m, k); 0 (default): Euler–Bernoulli elements.
 
     Returns
     -------
     ndarray, shape (nt, m, k, 2, 6)
-        ``[Fx, Fy, Fz, Mx, My, Mz]`` at each element end: the consistent load of the cubic
-        (Hermite) transverse and linear axial fields, integrated exactly — the distributed
+        ``[Fx, Fy, Fz, Mx, My, Mz]`` at each element end: the consistent load of the element's
+        transverse (cubic) and axial (linear) fields, integrated exactly — the distributed
         load with a three-point Gauss rule on the part of the element the tube covers, the
         base's force and couple at its point.
     """
@@ -265,7 +260,8 @@ def element_load_components(ml: MotionLoads, element_x: np.ndarray, rotation: np
     c_loc = np.einsum("tmij,tmj->tmi", rotation, ml.couple)[:, :, None, None]
     c_loc = np.broadcast_to(c_loc, q_loc.shape)
     s = (xg - x0[..., None]) / h[..., None]
-    out = _end_components(q_loc, c_loc, s, h, wg)
+    phi = tuple(np.broadcast_to(p, h.shape) for p in phi)
+    out = _end_components(q_loc, c_loc, s, h, wg, phi)
     # base point load: in the element holding x_p (the last one if x_p = L)
     k = element_x.shape[2]
     xp = ml.point_x
@@ -276,7 +272,8 @@ def element_load_components(ml: MotionLoads, element_x: np.ndarray, rotation: np
     fp = np.einsum("tmij,tmj->tmi", rotation, ml.point_force)[:, :, None]
     cp = np.einsum("tmij,tmj->tmi", rotation, ml.point_couple)[:, :, None]
     sp_ = ((xp - hx0) / hh)[..., None]
-    pt = _end_components(fp, cp, sp_, hh, np.ones_like(sp_))   # (t, m, 2, 6)
+    pt = _end_components(fp, cp, sp_, hh, np.ones_like(sp_),
+                         tuple(np.take_along_axis(p, jj, axis=-1)[..., 0] for p in phi))
     t_idx, m_idx = np.indices(j.shape)
     out[t_idx, m_idx, j] += pt
     return out
@@ -333,7 +330,9 @@ def load_vectors(fe, ml: MotionLoads) -> tuple[np.ndarray, list[np.ndarray]]:
                          "(every member a subdivided beam)")
     ex = np.broadcast_to(fe.element_x.reshape(1, m, k, 2), (nt, m, k, 2))
     R = np.broadcast_to(rotations3(fe.rotation)[None], (nt, m, 3, 3))
-    comp = element_load_components(ml, ex, R).reshape(nt, m * k, 2, 6)
+    every = np.arange(fe.n_elements)
+    phi = tuple(fe.shear_parameter(f, every).reshape(1, m, k) for f in "vw")
+    comp = element_load_components(ml, ex, R, phi).reshape(nt, m * k, 2, 6)
     f = np.zeros((nt, fe.n_dof))
     f_local = []
     for g in fe.groups:

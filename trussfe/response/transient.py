@@ -73,6 +73,7 @@ from ..model.bar_models import BAR_MODELS
 from ..fem.solver import factorise
 from ..linalg import SingularMatrixError, factor
 from ..mechanics.mass import mass_per_length
+from ..mechanics.member_loads import deflection_shapes, rotation_shapes
 from ..fem.static import section_forces as fe_section_forces
 from ..model.structure import Structure
 from ..mechanics.active_bodies import member_bodies
@@ -80,7 +81,6 @@ from ..rigid.kinematics import Kinematics
 from ..rigid.motion import Motion
 from ..rigid.simulate import simulate
 from .along_motion import error_at_step
-from .loads import hermite
 from ..mechanics.active_bodies import massless_active
 from .transient_fe import assemble_block
 
@@ -746,7 +746,11 @@ def _odd_midpoints(fe: FEModel, g, fel: np.ndarray, acc: np.ndarray, grav: np.nd
 
     where ``q = ρA (g − a)`` is the load of :meth:`FEModel.element_forces` here: gravity and
     the d'Alembert inertia of the acceleration ``a`` interpolated by the element's shape
-    functions (linear axially, cubic Hermite transversely, θz = v′, θy = −w′).
+    functions (linear axially, cubic transversely — Timoshenko's where the member has a shear
+    area, :func:`~trussfe.mechanics.member_loads.deflection_shapes` — with the field v's
+    rotation θz and w's −θy).  A Timoshenko element's mass also has rotary inertia, whose
+    d'Alembert couple ``−ρI θ̈`` (θ̈ by the section-rotation shapes) adds its integral to
+    ``M(x_m)``.
 
     Parameters
     ----------
@@ -780,7 +784,6 @@ def _odd_midpoints(fe: FEModel, g, fel: np.ndarray, acc: np.ndarray, grav: np.nd
     sq = 0.5 + 0.5 * _GAUSS_S
     wq = 0.5 * _GAUSS_W
     lin = np.stack([1.0 - sq, sq])                                      # (2, q)
-    herm, _ = hermite(np.broadcast_to(sq, (el.size, sq.size)), h[:, None])   # (el, q, 4)
     a0, a1 = comp[:, 0], comp[:, 1]
     # acceleration at the quadrature points, member axes: (el, q, dim)
     a_q = np.zeros((el.size, sq.size, dim))
@@ -788,10 +791,23 @@ def _odd_midpoints(fe: FEModel, g, fel: np.ndarray, acc: np.ndarray, grav: np.nd
     # the rotation component and sign of each transverse field: v with θz = v′ (the last
     # component: [u, v, θz] in 2-D, [u, v, w, θx, θy, θz] in 3-D), w with θy = −w′
     slopes = {1: (1.0, g.ncomp - 1), 2: (-1.0, 4)}
+    # a Timoshenko element's mass has rotary inertia ρI ψψᵀ too: a distributed couple
+    # −ρI θ̈ about the field's axis, θ̈ interpolated by its section-rotation shapes
+    couple = np.zeros((el.size, 2))                    # ∫ over the half: about z, about y
     for c in range(1, dim):
         sign, rc = slopes[c]
-        a_q[..., c] = (a0[:, None, c] * herm[..., 0] + sign * a0[:, None, rc] * herm[..., 1]
-                       + a1[:, None, c] * herm[..., 2] + sign * a1[:, None, rc] * herm[..., 3])
+        phi = fe.shear_parameter("vw"[c - 1], el)
+        dofs = (a0[:, c], sign * a0[:, rc], a1[:, c], sign * a1[:, rc])     # field's own
+        # the element's own shape functions (Timoshenko where it has a shear area)
+        N = deflection_shapes(sq[None, :], h[:, None], phi[:, None])      # (el, q, 4)
+        a_q[..., c] = sum(d[:, None] * N[..., i] for i, d in enumerate(dofs))
+        timo = phi > 0
+        if np.any(timo):
+            psi = rotation_shapes(sq[None, :], h[:, None], phi[:, None])
+            spin = sum(d[:, None] * psi[..., i] for i, d in enumerate(dofs))   # φ̈ = sign θ̈
+            I = (s.Iz if c == 1 else s.Iy)[mem]
+            rho_i = np.where(timo, s.density[mem] * I, 0.0)
+            couple[:, c - 1] = -sign * rho_i * (spin @ wq) * h
     q = mu[:, None, None] * (g_loc[:, None, :] - a_q)                  # (el, q, dim)
     Q = np.einsum("q,eqc->ec", wq, q) * h[:, None]
     arm = (sq - 0.5)[None, :] * h[:, None]                             # ξ − x_m
@@ -800,9 +816,9 @@ def _odd_midpoints(fe: FEModel, g, fel: np.ndarray, acc: np.ndarray, grav: np.nd
     half = 0.5 * h
     out = F1.copy()
     out[:, :dim] += Q
-    out[:, 5] += half * F1[:, 1] + MQ[:, 1]
+    out[:, 5] += half * F1[:, 1] + MQ[:, 1] + couple[:, 0]
     if dim == 3:
-        out[:, 4] += -half * F1[:, 2] - MQ[:, 2]
+        out[:, 4] += -half * F1[:, 2] - MQ[:, 2] + couple[:, 1]
     Fm[mem] = out
 
 
