@@ -143,3 +143,52 @@ def test_axis_releases_are_written_back(tmp_path):
     assert s2.bending_axis_releases.tolist() == s.bending_axis_releases.tolist()
     assert s2.torsion_releases.tolist() == s.torsion_releases.tolist()
     assert np.array_equal(s2.releases, s.releases)
+
+
+SPIN = """
+member_loads = [
+  { member = "AB", kind = "point", at = 0.5, F = [0.0, 0.0, 0.0], M = [100.0, 0.0, 0.0], axes = "local" },
+]
+[model]
+dimension = 3
+[materials.st]
+E = 2.1e11
+G = 8.1e10
+[sections.b]
+area = 4.0e-3
+Iy = 8.0e-6
+Iz = 5.0e-6
+J = 1.0e-5
+c = 0.05
+[nodes]
+A = [0.0, 0.0, 0.0]
+B = [4.0, 0.0, 0.0]
+[members]
+AB = { nodes = ["A", "B"], section = "b", material = "st", type = "beam", RELEASES }
+[supports]
+A = SUPPORT
+B = SUPPORT
+"""
+
+
+@pytest.mark.parametrize("releases, support", [
+    ('releases = ["start", "end"]', '["x", "y", "z"]'),          # joints free to turn
+    ('releases = { start = ["all"], end = ["all"] }', '["x", "y", "z"]'),
+    ('releases = { start = ["t"], end = ["t"] }', '["x", "y", "z", "rx", "ry", "rz"]'),
+])
+def test_a_couple_on_a_member_free_to_spin_is_refused(releases, support):
+    """A couple about the axis of a beam that nothing holds in torsion at either end has no
+    equilibrium (statics: the couple's moment about the axis has no reaction to balance it);
+    it was taken by the hold that keeps such a member's stiffness regular — lost, or sent
+    into a joint through a released end — and reported as a solution out of equilibrium by
+    the couple.  It is refused, naming the member."""
+    text = SPIN.replace("RELEASES", releases).replace("SUPPORT", support)
+    s = parse_model(toml_text.loads(text), source="spin.toml")
+    with pytest.raises(InputError, match="free to twist at both ends") as e:
+        solve_static(s, "truss")
+    assert "spin.toml" in str(e.value) and "member AB" in str(e.value)
+    # torsion kept at one end into a joint that holds it: the couple goes there, balanced
+    held = text.replace(releases, 'releases = { end = ["t"] }').replace(
+        '["x", "y", "z"]', '["x", "y", "z", "rx", "ry", "rz"]')
+    r = solve_static(parse_model(toml_text.loads(held), source="spin.toml"), "truss")
+    assert r.reactions[:, 3] == pytest.approx([-100.0, 0.0], abs=1e-9)

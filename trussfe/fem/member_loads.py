@@ -32,8 +32,7 @@ import numpy as np
 from ..errors import InputError
 from ..mechanics.member_loads import (AT_STATION, linear_load_bending, linear_load_p1,
                                       part_load_bending, part_load_p1, point_load_bending,
-                                      point_load_p1, section_forces_along, shear_parameter,
-                                      span_integrals)
+                                      point_load_p1, section_forces_along, span_integrals)
 from ..model.member_loads import MemberLoad, load_arrays
 from .discretisation import FEModel
 
@@ -152,7 +151,15 @@ def member_load_vector(fe: FEModel, loads: Sequence[MemberLoad]) -> MemberLoadVe
         i = int(mem[pts][np.flatnonzero(twistless)[0]])
         raise InputError(f"member_loads (member {s.member_ids[i]})",
                          "a couple about the member axis needs a beam with torsion (a bar "
-                         "carries none)")
+                         "carries none)").in_file(s.source)
+    spinning = fe.end_rotations.spinning[mem[pts]] & (np.abs(C[pts, 0]) > 0)
+    if np.any(spinning):
+        i = int(mem[pts][np.flatnonzero(spinning)[0]])
+        raise InputError(f"member_loads (member {s.member_ids[i]})",
+                         "a couple about the member axis, but the member is free to twist at "
+                         "both ends (torsion released there, or joints that do not hold its "
+                         "rotation about its axis): nothing resists it; keep the torsion at "
+                         "one end or remove the couple").in_file(s.source)
     # intensities at the ends of the covered part of each loaded element
     x0 = fe.element_x[d_el, 0]
     he = fe.element_length[d_el]
@@ -170,8 +177,6 @@ def member_load_vector(fe: FEModel, loads: Sequence[MemberLoad]) -> MemberLoadVe
         pos_in[g.elements] = np.arange(g.elements.size)
     local = [np.zeros(g.n_local) for g in fe.groups]
     f = np.zeros(fe.n_dof)
-    EI = {"v": s.E * s.Iz, "w": s.E * s.Iy}
-    GAs = {"v": s.G * s.shear_area_y, "w": s.G * s.shear_area_z}
     # component of the load and of the couple on each field (w: the couple about y does
     # work on θy = −w', hence the sign); the twist field θ takes the torque as its load
     # (the couple about x does work on θ itself), not as a couple on a slope
@@ -196,9 +201,8 @@ def member_load_vector(fe: FEModel, loads: Sequence[MemberLoad]) -> MemberLoadVe
                  C[pts][psel, 0] if fld.name == "theta" else np.zeros(pe.size))
             Cc = sign * C[pts][psel, cc] if cc is not None else np.zeros(pe.size)
             if fld.hermite:
-                mem_d, mem_p = fe.element_member[de], fe.element_member[pe]
-                phi_d = shear_parameter(EI[fld.name][mem_d], GAs[fld.name][mem_d], hd)
-                phi_p = shear_parameter(EI[fld.name][mem_p], GAs[fld.name][mem_p], hp)
+                phi_d = fe.shear_parameter(fld.name, de)
+                phi_p = fe.shear_parameter(fld.name, pe)
                 parts = [(de[wh], linear_load_bending(hd[wh], phi_d[wh], qa_c[wh],
                                                       qb_c[wh])),
                          (de[~wh], part_load_bending(hd[~wh], phi_d[~wh], x0_[~wh],

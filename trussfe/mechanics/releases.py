@@ -70,11 +70,17 @@ class EndRotations:
         Rotation components (global axes; ``r`` = 1 in 2-D, 3 in 3-D) held at joints with
         rotations: the supported ones, and every one at joints whose rotations come from
         supports alone.
+    spinning : ndarray of bool, shape (m,)
+        3-D beams free to twist at both ends (torsion released, or ends at joints without
+        rotational stiffness about their axis): their start twist is held so that the
+        stiffness is not singular, which carries no moment as long as no couple about the
+        member's axis is applied to it — nothing resists one.
     """
 
     state: np.ndarray
     joint_rotation: np.ndarray
     joint_rotation_held: np.ndarray
+    spinning: np.ndarray
 
     @property
     def shared(self) -> np.ndarray:
@@ -143,7 +149,7 @@ def end_rotations(dim: int, connectivity: np.ndarray, axis: np.ndarray, frame: n
     if dim == 2:
         state[frame, :, 0] = bend[frame, :, 1]
         held = sup & rigid_joint[:, None]
-        return EndRotations(state, rigid_joint, held)
+        return EndRotations(state, rigid_joint, held, np.zeros(m, dtype=bool))
     state[frame, :, 1] = bend[frame, :, 0]
     state[frame, :, 2] = bend[frame, :, 1]
     # torsion: through a rigid joint, or a joint whose supported rotations contain the axis
@@ -160,7 +166,7 @@ def end_rotations(dim: int, connectivity: np.ndarray, axis: np.ndarray, frame: n
     tw[spin, 0] = np.where(joint_rotation[conn[spin, 0]], JOINT, HELD)
     state[twist, :, 0] = tw[twist]
     held = (sup | (joint_rotation & ~rigid_joint)[:, None]) & joint_rotation[:, None]
-    return EndRotations(state, joint_rotation, held)
+    return EndRotations(state, joint_rotation, held, spin)
 
 
 def no_end_rotations(dim: int, m: int, n: int) -> EndRotations:
@@ -176,7 +182,7 @@ def no_end_rotations(dim: int, m: int, n: int) -> EndRotations:
     """
     ncomp = 1 if dim == 2 else 3
     return EndRotations(np.full((m, 2, ncomp), HELD, dtype=np.int8), np.zeros(n, dtype=bool),
-                        np.zeros((n, ncomp), dtype=bool))
+                        np.zeros((n, ncomp), dtype=bool), np.zeros(m, dtype=bool))
 
 
 #: Names of one end's releases: both bending moments, torsion, everything, and one axis each
