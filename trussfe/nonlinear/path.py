@@ -38,6 +38,7 @@ from ..linalg import SingularMatrixError, factor
 from ..linalg.eigen import nearest_zero_mode
 from ..mechanics.geometry import rotation_length as member_rotation_length
 from ..model.postcritical import CONTROLS
+from .failure import failure_margins
 from .mechanism import MechanismMotion, equilibrium_form, mechanism_count
 from .model import NonlinearModel
 
@@ -125,6 +126,9 @@ class Event:
     force: float = np.nan
     threshold: float = np.nan
     detail: str = ""
+
+    def __post_init__(self):
+        self.load_factor = float(self.load_factor)      # not a numpy scalar
 
 
 @dataclass
@@ -356,28 +360,90 @@ def rotation_length(model: NonlinearModel) -> float:
 
 
 def _dead_load_state(st, max_cuts: int) -> np.ndarray:
-    """The equilibrium under the dead load alone (λ = 0), where the path starts: the dead
-    load applied in load-controlled increments (one, halved while Newton fails)."""
+    """The equilibrium under the dead load alone (λ = 0), where the path starts.
+
+    The dead load is applied in one load-controlled increment when the structure answers it
+    nearly linearly: the converged increment within :data:`_RAMP_LINEARITY` of the tangent's
+    prediction, and the tangent halfway along it positive definite.  Otherwise — a large
+    weight, a shallow arch — a load increment may converge to another form beyond a limit
+    point (the von Mises truss under a weight above its limit load lands upside down), so
+    the weight is applied by arc-length steps instead (:func:`_dead_load_ramp`), which stop
+    at such a limit point: the structure cannot carry its own weight, an error."""
     ramp = _Stepper(st.m, "load", -1, st.tol, st.max_iter)
     ramp.f, ramp.fn = st.fd, st.fdn
     ramp.fd, ramp.fdn = np.zeros_like(st.fd), 0.0
-    uf, t, dt = np.zeros(st.free.size), 0.0, 1.0
-    while t < 1.0:
-        new = None
-        try:
-            fac = factor(ramp.eval(uf)[2], "symmetric")
-            new = ramp.step(uf, t, fac, min(dt, 1.0 - t), None, None, "load")
-        except SingularMatrixError:
-            pass
+    uf = np.zeros(st.free.size)
+    try:
+        fac = factor(ramp.eval(uf)[2], "symmetric")
+        new = ramp.step(uf, 0.0, fac, 1.0, None, None, "load")
+        if new is not None:
+            predicted = ramp.dnorm(fac.solve(ramp.f))
+            half = _inertia(_tangent_factor(ramp.eval(0.5 * new[0])[2]))
+            if ramp.dnorm(new[0]) <= _RAMP_LINEARITY * predicted and half == 0:
+                return new[0]
+    except SingularMatrixError:
+        pass
+    return _dead_load_ramp(ramp, max_cuts)
+
+
+#: The dead load in one increment when the increment converged within this factor of the
+#: tangent's prediction (:func:`_dead_load_state`).
+_RAMP_LINEARITY = 1.5
+
+
+def _dead_load_ramp(ramp: _Stepper, max_cuts: int) -> np.ndarray:
+    """The dead load ``t f_d`` followed from t = 0 to 1 by arc-length steps (a quarter of the
+    linear response each at first), the last one cut to t = 1 by a load-controlled step on
+    the branch it ended on.  A critical point on the way (the inertia of the tangent changes)
+    or a load that turns back is a limit: there is no equilibrium under the whole weight on
+    this branch."""
+    s = ramp.m.structure
+
+    def no_equilibrium(where: str) -> AnalysisError:
+        return AnalysisError(s.source or s.name, "no equilibrium under the dead load "
+                             f"(gravity) alone{where}: the structure cannot carry its own "
+                             "weight")
+    arc = _Stepper(ramp.m, "arc-length", -1, ramp.tol, ramp.max_iter)
+    arc.f, arc.fn, arc.fd, arc.fdn = ramp.f, ramp.fn, ramp.fd, ramp.fdn
+    uf, t = np.zeros(ramp.free.size), 0.0
+    try:
+        fac = _tangent_factor(arc.eval(uf)[2])
+        ds = 0.25 * arc.dnorm(fac.solve(arc.f))
+    except SingularMatrixError:
+        raise no_equilibrium("") from None
+    neg, du_prev, first = _inertia(fac), None, ds
+    for _ in range(_RAMP_STEPS):
+        new, checked = _attempt(arc, uf, t, fac, ds, 1.0, du_prev, None, du_prev, neg,
+                                max_cuts, True)
         if new is None:
-            dt *= 0.5
-            if dt < 0.5 ** max_cuts:
-                raise AnalysisError(st.m.structure.source or st.m.structure.name,
-                                    "no equilibrium under the dead load (gravity) alone: the "
-                                    "structure cannot carry its own weight")
-            continue
-        uf, t = new[0], new[1]
-    return uf
+            raise no_equilibrium("")
+        uf1, t1, _, its, fresh, dss = new
+        try:
+            fac1 = checked or fresh or _tangent_factor(arc.eval(uf1)[2])
+        except SingularMatrixError:
+            raise no_equilibrium(f" (a limit at {t:.3g} of it)") from None
+        if _crossed(neg, _inertia(fac1)) or t1 <= t:
+            # a limit inside the step: beyond the whole weight (the branch passes t = 1
+            # before it) or before it, which shorter steps tell apart
+            if dss > _RAMP_RESOLUTION * first:
+                ds = 0.5 * dss
+                continue
+            raise no_equilibrium(f" (a limit at {t:.3g} of it)")
+        if t1 >= 1.0:
+            # the branch reaches the whole weight between t and t1: land on it
+            land = ramp.step(uf, t, fac, 1.0 - t, None, None, "load")
+            if land is None:
+                raise no_equilibrium("")
+            return land[0]
+        du_prev, uf, t, fac = uf1 - uf, uf1, t1, fac1
+        ds = _next_step(dss, its, 8.0 * first, "arc-length")
+    raise no_equilibrium(f" (not reached in {_RAMP_STEPS} steps)")
+
+
+#: Arc-length steps at most of :func:`_dead_load_ramp`.
+_RAMP_STEPS = 200
+#: The ramp's steps are halved down to this fraction of the first one to locate a limit.
+_RAMP_RESOLUTION = 1e-3
 
 
 def _tangent_factor(K):
@@ -804,7 +870,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
         du_prev = uf1 - uf
         uf, lam, res = uf1, lam1, res1
         point = record(uf, lam, res, neg1)
-        k += 1
+        # a step cut short at a member event adds a located point, not a step
+        k += 0 if crossed.any() else 1
         # ---- apply the failure events at this state
         if hit.any() and _apply_failures(st, m, out, hit, mg1, res, lam, point):
             uf_new, res_new, fac_new, reason = _reequilibrate(st, m, out, uf, lam, handover,
@@ -821,9 +888,17 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
             break
         fac = fac1
         neg = neg1
-        ds = _next_step(dss, its, ds_max, control)
+        # under load control a step cut short at an event is followed by the step before it
+        ds = _next_step(ds if control == "load" and crossed.any() else dss, its, ds_max,
+                        control)
     else:
-        out.termination = f"completed {steps} steps"
+        # the last step may have reached a limit as the steps ran out
+        if max_load_factor is not None and lam >= max_load_factor * (1 - 1e-12):
+            out.termination = f"reached the maximum load factor {max_load_factor:g}"
+        elif max_displacement is not None and abs(uf[st.c]) >= max_displacement * (1 - 1e-12):
+            out.termination = f"reached the maximum displacement {max_displacement:g} m"
+        else:
+            out.termination = f"completed {steps} steps"
     if not out.termination:
         out.termination = f"completed {k} steps"
     log.info("path: %d points, %d events; %s", len(out.path), len(out.events),
@@ -1106,7 +1181,8 @@ def _reequilibrate(st, m, out, uf, lam, handover, record):
     """After members were removed: rank check, equilibrium at the same λ, cascades."""
     s = m.structure
     for _ in range(len(m.alive) + 1):
-        if not m.alive.any():
+        if not m.alive.any() and _mech_free(m).any():
+            # (springs on every loaded coordinate still carry the load without members)
             return None, None, None, _collapse(st, m, out, uf, lam)
         conn = s.connectivity[m.alive]
         x = m.positions(st.full(uf))[: s.n_nodes]
@@ -1117,12 +1193,17 @@ def _reequilibrate(st, m, out, uf, lam, handover, record):
                                         detail=f"{nm} mechanism(s), rank {rank} "
                                                f"after {int((~m.alive).sum())} member(s) "
                                                "failed"))
-                if handover:
-                    _handover(st, m, out, x, conn, lam)
+                if not handover:
+                    return None, None, None, (f"the structure became a mechanism at load "
+                                              f"factor {lam:.6g}")
+                form = _handover(st, m, out, x, conn, lam)
+                if form is None:
                     return None, None, None, ("the structure became a mechanism at load factor "
                                               f"{lam:.6g}; " + out.mechanism.reason)
-                return None, None, None, (f"the structure became a mechanism at load factor "
-                                          f"{lam:.6g}")
+                # the form overloads members whose laws remove them: they fail there, and
+                # what is left moves on (or collapses)
+                uf = form
+                continue
         new = _release(st, uf, lam)
         if new is None:
             last = out.events[-1].member
@@ -1140,13 +1221,15 @@ def _reequilibrate(st, m, out, uf, lam, handover, record):
             fac = factor(st.eval(uf)[2], "symmetric")
             record(uf, lam, res, _inertia(fac))
             return uf, res, fac, ""
-        # cascade: the most overloaded member fails now, at the same load factor
-        c, e = np.unravel_index(np.argmax(np.where(over, mg, -np.inf)), mg.shape)
-        hit = np.zeros_like(over)
-        hit[c, e] = True
+        # cascade: the most overloaded member fails now, at the same load factor, with every
+        # member as overloaded to the event tolerance (symmetric members reach their limits
+        # together)
+        worst = np.max(np.where(over, mg, -np.inf))
+        hit = over & (mg >= worst - 1e-6)
         point = record(uf, lam, res, None)
         _apply_failures(st, m, out, hit, mg, res, lam, point)
-        out.events[-1].detail += " (redistribution at the same load factor)"
+        for ev in out.events[-int(hit.sum()):]:
+            ev.detail += " (redistribution at the same load factor)"
     return None, None, None, "too many cascading failures"
 
 
@@ -1255,8 +1338,15 @@ def _release(st, uf0, lam, event_tolerance=1e-6, min_increment=1.0 / 4096):
     return uf, res, False
 
 
-def _handover(st, m, out, x, conn, lam):
-    """Finite-mechanism motion of the remaining bars to the equilibrium form."""
+def _handover(st, m, out, x, conn, lam) -> np.ndarray | None:
+    """Finite-mechanism motion of the remaining bars to the equilibrium form.
+
+    The bar forces of the form are checked against the members' failure laws: a form that
+    needs a member beyond its limit is no resting state.  Where every such member's law
+    removes it, the members fail at the form (events, as in a redistribution) and the free
+    displacements of the form are returned, for what is left to be analysed on from there;
+    where a law keeps the member at its limit (``cap``), the motion ends there, saying so.
+    Returns None otherwise (the form is the end of the path)."""
     s = m.structure
     load = lam * s.loads[:, : s.dim] + m.dead[: s.n_nodes * s.dim].reshape(s.n_nodes, s.dim)
     mot = equilibrium_form(x, conn, _mech_free(m), load)
@@ -1274,5 +1364,44 @@ def _handover(st, m, out, x, conn, lam):
         if mot.tensions is not None and xp is mot.positions[-1]:
             forces[forces_alive] = mot.tensions
         out.path.append(PathPoint(lam, u, forces, forces_alive.copy(), None, "mechanism"))
+    over = _form_overloads(m, mot) if mot.converged and mot.tensions is not None else None
+    if over is not None:
+        hit, mg, res = over
+        who = ", ".join(s.member_ids[int(m.t_member[e])] for e in np.flatnonzero(hit.any(0)))
+        laws = m.t_laws
+        removes = np.stack([laws.buckling == 3, laws.yield_mode == 2,
+                            np.ones_like(laws.buckling, dtype=bool)])
+        if np.all(removes[hit]):
+            mot.converged, mot.stable = False, False
+            mot.reason = (f"the equilibrium form needs member(s) {who} beyond their limits: "
+                          "they fail there")
+            out.events.append(Event("mechanism", lam, None, len(out.path) - 1,
+                                    detail=mot.reason))
+            _apply_failures(st, m, out, hit, mg, res, lam, len(out.path) - 1)
+            for ev in out.events[-int(hit.sum()):]:
+                ev.detail += " (at the equilibrium form of the mechanism)"
+            u = np.zeros(m.ndof)
+            u[: s.n_nodes * s.dim] = (mot.positions[-1] - X).ravel()
+            return u[st.free]
+        mot.converged, mot.stable = False, False
+        mot.reason = (f"no equilibrium form within the members' limits: the form found needs "
+                      f"member(s) {who} beyond the limits at which their laws hold them")
     out.events.append(Event("equilibrium_form" if mot.converged else "end", lam, None,
                             len(out.path) - 1, detail=mot.reason))
+    return None
+
+
+def _form_overloads(m: NonlinearModel, mot) -> tuple | None:
+    """The failure events that the bar forces of a mechanism's equilibrium form reach:
+    ``(hit, margins, res)`` as :func:`_apply_failures` takes them (the bars are rigid there:
+    no strain, so no fracture), or None when every force is within its law."""
+    N = np.zeros(m.structure.n_members)
+    N[m.alive] = mot.tensions
+    Ne = N[m.t_member]
+    mg = failure_margins(m.t_laws, Ne, Ne, np.zeros_like(Ne))
+    mg[:, ~m.alive[m.t_member]] = -np.inf
+    hit = mg > 1e-6
+    if not hit.any():
+        return None
+    return hit, mg, {"t_force": Ne, "t_buckling_force": Ne, "t_trial": Ne,
+                     "t_strain": np.zeros_like(Ne)}
