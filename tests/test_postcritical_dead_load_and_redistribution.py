@@ -158,3 +158,72 @@ def test_an_equilibrium_form_beyond_a_members_limit_is_no_resting_state():
     assert "at the equilibrium form" in [e for e in r.events if e.kind == "yield"][1].detail
     assert not r.solution.mechanism.converged
     assert r.solution.termination.startswith("every member has failed")
+
+
+# --------------------------------------------------------------------- corners and snap-backs
+def _capped_von_mises():
+    """The von Mises truss with the apex free in x and y (two DOFs) and a buckling ``cap`` of
+    P_cr = 40 N on both bars."""
+    return trussfe.model_from_dict({
+        "model": {"dimension": 2}, "materials": {"m": {"E": 1e10}},
+        "sections": {"s": {"area": 1e-4, "Iy": 1e-9}},
+        "nodes": {"left": [-A_HALF, 0.0], "apex": [0.0, RISE], "right": [A_HALF, 0.0]},
+        "members": {"L": {"nodes": ["left", "apex"], "section": "s", "material": "m"},
+                    "R": {"nodes": ["apex", "right"], "section": "s", "material": "m"}},
+        "supports": {"left": ["x", "y"], "right": ["x", "y"]}, "loads": {"apex": [0, -1.0]},
+        "failure": {"default": {"buckling": "cap", "critical_load": 40.0}}})
+
+
+def test_arc_length_passes_a_corner_of_two_members_laws():
+    """Both bars reach their cap together: the tangent loses two eigenvalues at once (the
+    vertical stiffness and the sway) without a singular state, and every step over that
+    corner was rejected as crossing several critical points while the accepted steps only
+    came closer — the path piled 95 points on one state and reported "completed".  It now
+    steps over the corner and follows the capped branch: λ = 2 P_cr w/ℓ (w = h − v,
+    ℓ = √(a² + w²), the bars at −P_cr), falling as the apex descends, to Newton's tolerance
+    (1e-9 of the load scale)."""
+    r = trussfe.postcritical(_capped_von_mises(), control="arc-length", steps=60,
+                             monitor="apex:y")
+    i = r.node_ids.index("apex")
+    v = -r.displacement[:, i, 1]
+    w = RISE - v
+    lam = r.load_factors
+    capped = np.all(r.axial_force <= -40.0 * (1 - 1e-9), axis=1)
+    assert capped.sum() > 20
+    assert_allclose(lam[capped], 2.0 * 40.0 * w[capped] / np.hypot(A_HALF, w[capped]),
+                    rtol=0, atol=1e-8 * lam.max())
+    # every point a new state but the corner's (the events and the critical point there)
+    assert len(np.unique(np.round(v, 12))) >= len(v) - 1
+    # down the capped branch to near the flat position (λ → 0 as w → 0)
+    assert lam[capped].min() < 1.0 < 7.9 < lam[capped].max()
+    turn = [e for e in r.events if e.kind == "limit_point"]
+    assert turn and "the load turns back" in turn[0].detail
+    assert abs(r.displacement[:, i, 0]).max() < 1e-12          # the symmetric branch
+
+
+def test_displacement_control_stops_at_a_snap_back_and_says_so():
+    """The von Mises truss under a soft strut (k = 2000 N/m) loaded at its top T: the top's
+    displacement u_T = v + P(v)/k turns back where 1 + P'(v)/k = 0 (a snap-back), which
+    displacement control of u_T cannot pass.  The path ends there with a message (it piled
+    its remaining steps on that point and reported "completed")."""
+    from scipy.optimize import brentq
+    k = 2000.0
+    s = trussfe.model_from_dict({
+        "model": {"dimension": 2}, "materials": {"m": {"E": 1e10}, "soft": {"E": 2e7}},
+        "sections": {"s": {"area": 1e-4}},
+        "nodes": {"left": [-A_HALF, 0.0], "apex": [0.0, RISE], "right": [A_HALF, 0.0],
+                  "T": [0.0, RISE + 1.0]},
+        "members": {"L": {"nodes": ["left", "apex"], "section": "s", "material": "m"},
+                    "R": {"nodes": ["apex", "right"], "section": "s", "material": "m"},
+                    "S": {"nodes": ["apex", "T"], "section": "s", "material": "soft"}},
+        "supports": {"left": ["x", "y"], "right": ["x", "y"], "apex": ["x"], "T": ["x"]},
+        "loads": {"T": [0.0, -1.0]}})
+    r = trussfe.postcritical(s, control="displacement", steps=400, step=0.002, monitor="T:y")
+    assert "snap-back" in r.solution.termination and "arc-length" in r.solution.termination
+    h = 1e-7
+    slope = lambda v: 1.0 + (_apex_load(v + h) - _apex_load(v - h)) / (2 * h) / k  # noqa: E731
+    v_sb = brentq(slope, 0.03, 0.07, xtol=1e-14)
+    uT_sb = v_sb + _apex_load(v_sb) / k
+    uT = -r.displacement[:, r.node_ids.index("T"), 1]
+    assert uT.max() == pytest.approx(uT_sb, abs=1e-5)
+    assert len(uT) < 200                       # no pile of points at the snap-back

@@ -413,8 +413,8 @@ def _dead_load_ramp(ramp: _Stepper, max_cuts: int) -> np.ndarray:
         raise no_equilibrium("") from None
     neg, du_prev, first = _inertia(fac), None, ds
     for _ in range(_RAMP_STEPS):
-        new, checked = _attempt(arc, uf, t, fac, ds, 1.0, du_prev, None, du_prev, neg,
-                                max_cuts, True)
+        new, checked, _ = _attempt(arc, uf, t, fac, ds, 1.0, du_prev, None, du_prev, neg,
+                                   max_cuts, True)
         if new is None:
             raise no_equilibrium("")
         uf1, t1, _, its, fresh, dss = new
@@ -442,6 +442,9 @@ def _dead_load_ramp(ramp: _Stepper, max_cuts: int) -> np.ndarray:
 
 #: Arc-length steps at most of :func:`_dead_load_ramp`.
 _RAMP_STEPS = 200
+#: Steps in a row shortened to stay short of a corner of several members' laws after which
+#: the next step is taken over it (:func:`follow_path`).
+_JUMP_CORNER_STEPS = 3
 #: The ramp's steps are halved down to this fraction of the first one to locate a limit.
 _RAMP_RESOLUTION = 1e-3
 
@@ -727,6 +730,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
     #: consecutive rejections of steps that crossed an inertia change, counted across the
     #: shortened steps accepted in between (a corner of a member's law: see below)
     corner_cuts = 0
+    #: consecutive steps shortened to stay short of an inertia jump of two or more
+    jump_cuts = 0
     k = 0
     while k < steps:
         if progress is not None:
@@ -751,8 +756,9 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
         arc = control == "arc-length" and mode is None
         direction = branch_dir if mode == "branch" else (sign if arc else None)
         prev = None if arc else du_prev
-        new, checked = _attempt(st, uf, lam, fac, dss, direction, prev, mode, du_prev, neg,
-                                max_cuts, arc)
+        new, checked, jumped = _attempt(st, uf, lam, fac, dss, direction, prev, mode, du_prev,
+                                        neg, max_cuts, arc,
+                                        jump_ok=jump_cuts >= _JUMP_CORNER_STEPS)
         if new is not None:
             dss = new[-1]
             new = new[:-1]
@@ -764,7 +770,10 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                                  event_tolerance)
             if ahead is not None:
                 new, checked, dss = ahead[:5], None, ds
-        if new is None or (control == "load" and dss < 1e-4 * abs(step)):
+        # a load or monitored-displacement step cut to 1e-4 of the first: the path turns
+        # back in the controlled quantity (a limit point, a snap-back) or collapses there;
+        # steps creeping towards it would only pile up points
+        if new is None or (control != "arc-length" and dss < 1e-4 * abs(step)):
             out.termination = _cannot_continue(control, lam, neg,
                                               _failed_at(out, s, lam, st.lam_unit))
             out.events.append(Event("end", lam, detail=out.termination))
@@ -805,7 +814,18 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                 break
         corner = (arc and fac1 is not None and _crossed(neg, neg1) and not hit.any()
                   and mode != "branch" and corner_cuts >= max_cuts)
-        if corner:
+        # A corner of several members' laws at once (members reaching a buckling cap together:
+        # the inertia jumps by two or more without a singular state): every step over it was
+        # rejected as crossing several critical points, and the steps accepted before it only
+        # came closer; after _JUMP_CORNER_STEPS such steps one is taken over it, and the path
+        # continues the motion there (the load sense from the new tangent along the step).
+        jump_corner = (arc and fac1 is not None and _crossed(neg, neg1) and not hit.any()
+                       and abs(neg1 - neg) > 1 and mode != "branch"
+                       and jump_cuts >= _JUMP_CORNER_STEPS)
+        jump_cuts = jump_cuts + 1 if jumped and not _crossed(neg, neg1) else 0
+        if jump_corner:
+            crit = None
+        elif corner:
             # A corner of a member's law (the end of a softening branch): the tangent jumps
             # across zero stiffness without passing a singular state, so every step that
             # crosses it is rejected and each shortened step accepted before it comes closer
@@ -865,6 +885,18 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
             if mode == "branch":
                 # the first step on a new branch: its load sense is the one it took
                 sign = 1.0 if st.dot(ut1, uf1 - uf) >= 0.0 else -1.0
+            elif _crossed(neg, neg1) and abs(neg1 - neg) > 1:
+                # several eigenvalues crossed at once (members reaching their limits
+                # together): parity says nothing of the load's sense; the motion continues
+                # and the load follows the new tangent along it
+                turn = _next_sign(sign, None, None, False, ut1, uf1 - uf, st.dot)
+                if turn != sign:
+                    where = ("at a corner of several members' laws (the tangent jumps; no "
+                             "singular state)" if jump_corner else "with other critical points")
+                    out.events.append(Event("limit_point", lam1, point=len(out.path),
+                                            detail=f"negative eigenvalues {neg} -> {neg1} "
+                                            f"{where}: the load turns back"))
+                sign = turn
             else:
                 sign = _next_sign(sign, neg, neg1, limit, ut1, uf1 - uf, st.dot)
         du_prev = uf1 - uf
@@ -906,16 +938,20 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
     return out
 
 
-def _attempt(st, uf, lam, fac, dss, direction, prev, mode, du_prev, neg, max_cuts, arc):
+def _attempt(st, uf, lam, fac, dss, direction, prev, mode, du_prev, neg, max_cuts, arc,
+             jump_ok=False):
     """Step control: one step of size ``dss``, halved until it converges and, under
     arc-length control, until it is acceptable — a step that turns back along the path
     (its increment against the last one) while the inertia did not change, or that crosses
-    several critical points at once, is rejected and halved.  (At the smallest step the
-    result is taken as it is.)  Returns ``((uf, lam, res, its, fresh, dss), checked)`` —
-    the :meth:`_Stepper.step` tuple with the step size taken, and the factor made at the new
-    state for the check (None when the step's own ``fresh`` factor serves) — or
-    ``(None, None)``.
+    several critical points at once (unless ``jump_ok``: a corner of several members' laws,
+    where the inertia jumps by more than one without a singular state), is rejected and
+    halved.  (At the smallest step the result is taken as it is.)  Returns
+    ``((uf, lam, res, its, fresh, dss), checked, jumps)`` — the :meth:`_Stepper.step`
+    tuple with the step size taken, the factor made at the new state for the check (None
+    when the step's own ``fresh`` factor serves) and the number of steps rejected for
+    crossing several critical points — or ``(None, None, jumps)``.
     """
+    jumps = 0
     for cut in range(max_cuts + 1):
         new = st.step(uf, lam, fac, dss, direction, prev, mode)
         if new is not None and arc and cut < max_cuts:
@@ -930,14 +966,16 @@ def _attempt(st, uf, lam, fac, dss, direction, prev, mode, du_prev, neg, max_cut
             turned = not _crossed(neg, neg1) and (
                 (du_prev is not None and st.dot(new[0] - uf, du_prev) < 0.0)
                 or (direction * dl < 0.0 and abs(dl) > 1e-9 * max(abs(lam), st.lam_unit)))
-            several = _crossed(neg, neg1) and abs(neg1 - neg) > 1 and cut < max_cuts // 2
+            several = (_crossed(neg, neg1) and abs(neg1 - neg) > 1 and cut < max_cuts // 2
+                       and not jump_ok)
+            jumps += several
             if not (turned or several):
-                return new + (dss,), (f1 if new[4] is None else None)
+                return new + (dss,), (f1 if new[4] is None else None), jumps
             new = None
         if new is not None:
-            return new + (dss,), None
+            return new + (dss,), None, jumps
         dss *= 0.5
-    return None, None
+    return None, None, jumps
 
 
 def _cannot_continue(control: str, lam: float, neg: int | None,
@@ -959,8 +997,9 @@ def _cannot_continue(control: str, lam: float, neg: int | None,
         why = ("no equilibrium at a larger load factor (a limit point); use "
                "--control arc-length")
     elif control == "displacement":
-        why += ("; the monitored displacement may turn back (snap-back); use "
-                "--control arc-length")
+        why = ("no step of the monitored displacement of more than 1e-4 of the first "
+               "converges here: the monitored displacement may turn back (a snap-back); use "
+               "--control arc-length")
     return f"path cannot be continued at load factor {lam:.6g}: {why}"
 
 
@@ -1003,7 +1042,7 @@ def _event_ahead(st, m, uf, lam, fac, res, ds, neg, max_cuts, tol):
     saved = st.dsign
     st.dsign = float(np.sign(ut[st.c]))     # the way a growing load moves the monitored DOF
     try:
-        new, _ = _attempt(st, uf, lam, fac, abs(ds * ut[st.c]), None, None, "displacement",
+        new, _, _ = _attempt(st, uf, lam, fac, abs(ds * ut[st.c]), None, None, "displacement",
                           None, neg, max_cuts, False)
         if new is None:
             return None
