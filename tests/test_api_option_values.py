@@ -75,10 +75,10 @@ def test_integer_options_refuse_bad_values_naming_the_option(option, call, value
 
 
 def test_required_counts_refuse_none():
-    """``buckling(count=None)`` and ``simulate(sections=None)`` name the option (was:
-    TypeError from int() / '<')."""
-    _refused("--count", lambda: trussfe.buckling(COLUMN, count=None))
+    """``simulate(sections=None)`` names the option (was: TypeError from int() / '<');
+    ``buckling(count=None)`` is the default count (4, or the finite load factors there are)."""
     _refused("--sections", lambda: trussfe.simulate(ACTIVE, sections=None))
+    assert trussfe.buckling(COLUMN, count=None).load_factors.size == 4
 
 
 @pytest.mark.parametrize("call", [

@@ -134,3 +134,61 @@ def test_two_bar_truss(rise):
     r = solve_buckling(s, count=2, subdivisions=16)
     assert r.load_factors == pytest.approx([member, member], rel=1e-5)
     assert r.utilisation * member == pytest.approx([1.0, 1.0], rel=1e-9)
+
+
+# ---------------------------------------------------------------- shear and torsion
+@pytest.mark.parametrize("top, K", [(["x"], 1.0), ([], 2.0)])
+def test_timoshenko_columns_converge_to_engesser(top, K):
+    """A shear-deformable column buckles at Engesser's P_E / (1 + P_E/κGA) (Timoshenko &
+    Gere, Theory of Elastic Stability, §2.17), P_E = π²EI/(KL)²; here κGA = 0.68 P_E for the
+    cantilever.  The geometric stiffness of the element's own shape functions (the slope of
+    its deflection, bending and shear) converges to it from above; that of the Euler–Bernoulli
+    element converged 3.4 % below it."""
+    import dataclasses
+    sec = dataclasses.replace(SEC, shear_area_y=1e-6)         # κGA = 8e4 N
+    base = ["x", "y"] if top else FIXED
+    s = build_structure([[0, 0], [0, L]], [(0, 1)], section=sec, material=STEEL,
+                        supports={0: base, **({1: top} if top else {})},
+                        loads={1: [0.0, -1.0]}, is_beam=True)
+    pe = np.pi**2 * E * SEC.Iz / (K * L) ** 2
+    engesser = pe / (1.0 + pe / (STEEL.G * 1e-6))
+    err = [solve_buckling(s, count=1, subdivisions=k).load_factors[0] / engesser - 1.0
+           for k in (4, 16, 64)]
+    assert np.all(np.array(err) > 0) and np.all(np.diff(err) < 0)
+    assert err[-1] < 1e-4
+
+
+def test_loads_that_only_bend_have_no_buckling_load():
+    """A cantilever under a transverse tip load carries no axial force: there is no linear
+    buckling load, and the message says why (it said "the structure is unloaded")."""
+    from trussfe.errors import AnalysisError
+    s = build_structure([[0, 0], [0, L]], [(0, 1)], section=SEC, material=STEEL,
+                        supports={0: FIXED}, loads={1: [1000.0, 0.0]}, is_beam=True)
+    with pytest.raises(AnalysisError, match="no member carries an axial force"):
+        solve_buckling(s)
+
+
+def test_the_default_count_takes_the_finite_load_factors_there_are():
+    """A leaning column: a pinned strut CD carries the load and leans on a cantilever AB
+    (fixed base, 3EI/L³ of sway stiffness) through a stiff link BD.  With truss bars the
+    geometric stiffness has one finite load factor, the sway at P = 3EI/L² (the strut's
+    P/L against the cantilever; the link's and strut's axial flexibility, EA = 2e10 and 2e8
+    N, lower it by 3e-6).  Without a count the one finite factor is computed (four were
+    asked for and refused); an explicit count above it is refused."""
+    from trussfe.errors import AnalysisError
+    s = trussfe.model_from_dict({
+        "model": {"name": "lean", "dimension": 2},
+        "materials": {"steel": {"E": E, "density": 0.0}},
+        "sections": {"s": {"area": 1.0e-3, "Iz": SEC.Iz, "c": 0.05},
+                     "big": {"area": 1.0e-1, "Iz": SEC.Iz, "c": 0.05}},
+        "nodes": {"A": [0.0, 0.0], "B": [0.0, L], "C": [2.0, 0.0], "D": [2.0, L]},
+        "members": {"AB": {"nodes": ["A", "B"], "section": "s", "material": "steel",
+                           "type": "beam"},
+                    "CD": {"nodes": ["C", "D"], "section": "s", "material": "steel"},
+                    "BD": {"nodes": ["B", "D"], "section": "big", "material": "steel"}},
+        "supports": {"A": FIXED, "C": ["x", "y"]}, "loads": {"D": [0.0, -1000.0]}})
+    r = solve_buckling(s, bar_model="truss")
+    assert r.load_factors.size == 1
+    assert r.load_factors[0] * 1000.0 == pytest.approx(3 * E * SEC.Iz / L**2, rel=1e-5)
+    with pytest.raises(AnalysisError, match="only 1 finite"):
+        solve_buckling(s, count=3, bar_model="truss")

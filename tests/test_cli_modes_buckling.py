@@ -154,3 +154,49 @@ def test_bad_input(tmp_path, column, capsys, args, needle):
     err = capsys.readouterr().err
     assert err.startswith("trussfe: error: ") and needle in err and err.count("\n") == 1
     assert not (tmp_path / "x.json").exists()
+
+
+LEAN = """
+[model]
+name = "lean"
+dimension = 2
+[materials.steel]
+E = 2.0e11
+density = 0.0
+[sections.s]
+area = 1.0e-3
+Iz = 1.0e-6
+c = 0.05
+[sections.big]
+area = 1.0e-1
+Iz = 1.0e-6
+c = 0.05
+[nodes]
+A = [0.0, 0.0]
+B = [0.0, 3.0]
+C = [2.0, 0.0]
+D = [2.0, 3.0]
+[members]
+AB = { nodes = ["A", "B"], section = "s", material = "steel", type = "beam" }
+CD = { nodes = ["C", "D"], section = "s", material = "steel" }
+BD = { nodes = ["B", "D"], section = "big", material = "steel" }
+[supports]
+A = ["x", "y", "rz"]
+C = ["x", "y"]
+[loads]
+D = [0.0, -1000.0]
+"""
+
+
+def test_buckling_without_count_lists_the_finite_load_factors_there_are(tmp_path, capsys):
+    """A leaning column with truss bars has one finite load factor, 3EI/L² / 1000 N = 66.67
+    (the strut leaning on the cantilever): without --count the command lists it and says
+    that there are no more (it stopped: "asked for 4 load factors but only 1")."""
+    path = tmp_path / "lean.toml"
+    path.write_text(LEAN)
+    assert main(["buckling", str(path), "--bar-model", "truss"]) == 0
+    out = capsys.readouterr().out
+    assert "critical load factor: 66.666" in out
+    assert "only 1 finite load factor(s): all of them computed" in out
+    assert main(["buckling", str(path), "--bar-model", "truss", "--count", "2"]) == 2
+    assert "only 1 finite ones exist" in capsys.readouterr().err

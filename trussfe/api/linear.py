@@ -175,7 +175,7 @@ def _with_case_masses(structure, name: str):
 
 
 @numerics_checked
-def buckling(model: ModelLike, *, count: int = 4, bar_model: str = "pinned-beam",
+def buckling(model: ModelLike, *, count: int | None = None, bar_model: str = "pinned-beam",
              subdivisions: int | None = None, case: str | None = None,
              combination: str | None = None) -> BucklingResult:
     """Linear (eigen) buckling about the static state under the model's loads and gravity,
@@ -184,8 +184,8 @@ def buckling(model: ModelLike, *, count: int = 4, bar_model: str = "pinned-beam"
     Parameters
     ----------
     model : Structure, path or dict
-    count : int
-        Number of load factors.
+    count : int, optional
+        Number of load factors (default 4, or every finite one when there are fewer).
     bar_model : {"pinned-beam", "truss"}
         Pinned beams buckle between joints; truss bars show joint instability only.
     subdivisions : int, optional
@@ -201,7 +201,7 @@ def buckling(model: ModelLike, *, count: int = 4, bar_model: str = "pinned-beam"
         ``load_factors`` (mode,), ``shapes`` (mode, node, dim), ``euler_load`` (member,), …
     """
     from ..errors import InputError
-    count = positive_int("--count", count, optional=False)
+    count = positive_int("--count", count)
     subdivisions = positive_int("--subdivisions", subdivisions)
     structure = as_structure(model)
     from ..fem.buckling import solve_buckling   # imported on first use: start-up

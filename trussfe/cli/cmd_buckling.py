@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import api
-from ..fem.buckling import BucklingResult
+from ..fem.buckling import DEFAULT_BUCKLING_COUNT, BucklingResult
 from ..model.bar_models import BAR_MODELS
 from ..io.output import write_json
 from ._modeshapes import write_modes_vtk
@@ -25,8 +25,9 @@ def register(subparsers) -> None:
                               "model's loads and gravity: load factors (smallest magnitude "
                               "first, negative = reversed loads), modes, member Euler loads.")
     p.add_argument("model", type=opt.input_file, help="model file (TOML)")
-    p.add_argument("--count", type=opt.positive_int, default=4, metavar="N",
-                   help="number of load factors (default 4)")
+    p.add_argument("--count", type=opt.positive_int, default=None, metavar="N",
+                   help="number of load factors (default 4, or every finite one when there "
+                   "are fewer)")
     p.add_argument("--bar-model", choices=BAR_MODELS, default="pinned-beam",
                    help="pinned beams (default: members buckle between joints) or "
                    "axial-only truss bars (joint instability only)")
@@ -87,4 +88,8 @@ def _main(args: argparse.Namespace) -> int:
     if args.json:
         write_json(args.json, doc)
     sys.stdout.write(_table(result) + "\n")
+    found = result.load_factors.size
+    if args.count is None and found < DEFAULT_BUCKLING_COUNT:
+        sys.stdout.write(f"the geometric stiffness has only {found} finite load factor(s): "
+                         "all of them computed\n")
     return 0

@@ -92,7 +92,12 @@ class BucklingResult:
                          for i in range(self.shapes.shape[1])])
 
 
-def solve_buckling(structure: Structure, count: int = 4, bar_model: str = "pinned-beam",
+#: Load factors computed when no count is given (fewer where fewer exist).
+DEFAULT_BUCKLING_COUNT = 4
+
+
+def solve_buckling(structure: Structure, count: int | None = None,
+                   bar_model: str = "pinned-beam",
                    subdivisions: int | None = None, self_weight: bool = True,
                    static: StaticResult | None = None) -> BucklingResult:
     """Linear buckling load factors and modes about the static state under the model's loads.
@@ -100,8 +105,10 @@ def solve_buckling(structure: Structure, count: int = 4, bar_model: str = "pinne
     Parameters
     ----------
     structure : Structure
-    count : int
-        Number of load factors (smallest |λ| first).
+    count : int, optional
+        Number of load factors (smallest |λ| first).  Default
+        :data:`DEFAULT_BUCKLING_COUNT`, or every finite one when there are fewer (logged);
+        an explicit count above them is refused.
     bar_model : {"pinned-beam", "truss"}
     subdivisions : int, optional
         Sub-elements per frame member (≥ 4 recommended for member buckling).
@@ -138,6 +145,9 @@ def solve_buckling(structure: Structure, count: int = 4, bar_model: str = "pinne
     1481.2
     """
     item = structure.source or structure.name
+    every = count is None                     # the default count, or every factor there is
+    if every:
+        count = DEFAULT_BUCKLING_COUNT
     if isinstance(count, bool) or int(count) != count or count < 1:
         raise InputError("--count", f"must be a positive integer, got {count!r}")
     count = int(count)
@@ -153,10 +163,13 @@ def solve_buckling(structure: Structure, count: int = 4, bar_model: str = "pinne
     if fscale == 0.0 and static.reactions.size:
         # a state of moved supports alone: its reactions give the scale of its forces
         fscale = np.abs(static.reactions).max()
-    if fscale == 0.0 or np.abs(N).max() <= UNLOADED_TOLERANCE * max(fscale, 1e-300):
-        raise AnalysisError(item, "the structure is unloaded (no member carries an axial "
-                            "force): linear buckling needs [loads], gravity or a load case "
-                            "to scale")
+    if fscale == 0.0:
+        raise AnalysisError(item, "the structure is unloaded: linear buckling needs [loads], "
+                            "gravity or a load case to scale")
+    if np.abs(N).max() <= UNLOADED_TOLERANCE * fscale:
+        raise AnalysisError(item, "no member carries an axial force under the loads (they "
+                            "bend the members only): linear buckling scales the axial "
+                            "forces, and without them there is no buckling load")
     K = fe.stiffness()
     Kg = fe.geometric_stiffness(N)
     free = fe.free
@@ -173,9 +186,12 @@ def solve_buckling(structure: Structure, count: int = 4, bar_model: str = "pinne
     tiny = np.abs(mu) <= 1e-12 * np.abs(mu).max()
     if np.any(tiny) or mu.size < count:
         found = int(np.sum(~tiny))
-        raise AnalysisError(item, f"asked for {count} load factors but only {found} finite "
-                            f"ones exist (the geometric stiffness has rank {found} on the free "
-                            "DOFs); use a smaller --count")
+        if not every or found == 0:
+            raise AnalysisError(item, f"asked for {count} load factors but only {found} "
+                                f"finite ones exist (the geometric stiffness has rank {found} "
+                                "on the free DOFs); use a smaller --count")
+        log.info("%s: only %d finite load factors exist: all of them computed", item, found)
+        mu, V = mu[~tiny], V[:, ~tiny]
     lam = 1.0 / mu
     shapes = np.zeros((fe.n_dof, V.shape[1]))
     shapes[free] = V

@@ -56,7 +56,8 @@ from ..budget import count_text, require
 from ..errors import InputError
 from ..linalg.ordering import Points
 from ..mechanics.geometry import local_axes, member_vectors, unit_vectors
-from ..mechanics.member_loads import deflection_shapes, rotation_shapes, shear_parameter
+from ..mechanics.member_loads import (deflection_shapes, rotation_shapes, shear_parameter,
+                                      slope_shapes)
 from ..mechanics.mass import mass_per_length, twist_inertia_per_length
 from ..mechanics.dof_numbering import frame_members, member_end_rotations, number_dofs
 from ..mechanics.releases import JOINT, OWN
@@ -802,14 +803,54 @@ class FEModel:
         return sp.block_diag(blocks, format="csr")
 
     def local_geometric_stiffness(self, g: _Group, N: np.ndarray) -> sp.csr_matrix:
-        """Block-diagonal local geometric stiffness of one group; ``N`` per global element."""
+        """Block-diagonal local geometric stiffness of one group; ``N`` per global element.
+
+        Transverse fields: ``∫ N v' w' dx`` with the element's own shape functions — a
+        Timoshenko element's (:meth:`_timoshenko_geometric_correction`) take the slope of
+        the deflection, bending and shear together, so that a column converges to
+        Engesser's load ``P_E / (1 + P_E/κGA)``.  None on the axial field and on the twist
+        (no torsional buckling: that of the co-rotational beams of ``postcritical``, whose
+        tangent at the undeformed state is ``K + K_g``)."""
         Ng = np.asarray(N, dtype=float)[g.elements]
 
         def spec(f, mem):
             if f.name in ("u", "theta"):
                 return None
             return forms.geometric_stiffness, {"N": Ng}
-        return self._block_local(g, spec)
+        Kg = self._block_local(g, spec)
+        if g.kind == "frame" and self.timoshenko:
+            Kg = (Kg + self._timoshenko_geometric_correction(g, Ng)).tocsr()
+        return Kg
+
+    def _timoshenko_geometric_correction(self, g: _Group, Ng: np.ndarray) -> sp.csr_matrix:
+        """``N ∫ (S_T S_Tᵀ − S_H S_Hᵀ) dx`` on the Timoshenko elements of a frame group: the
+        geometric stiffness of their own slopes ``S_T``
+        (:func:`~trussfe.mechanics.member_loads.slope_shapes`) in place of the cubic
+        Hermite ones ``S_H`` assembled by scikit-fem (three-point Gauss–Legendre: exact for
+        the quartic integrands)."""
+        blocks = []
+        h = self.element_length[g.elements]
+        gx, gw = np.polynomial.legendre.leggauss(3)
+        xi, w = 0.5 * (gx + 1.0), 0.5 * gw
+        for f in g.fields:
+            n = f.basis.N
+            phi = self.shear_parameter(f.name, g.elements) if f.name in ("v", "w") else None
+            if phi is None or not np.any(phi > 0):
+                blocks.append(sp.csr_matrix((n, n)))
+                continue
+            e = np.flatnonzero(phi > 0)
+            he, pe = h[e, None], phi[e, None]
+            ST = slope_shapes(xi[None, :], he, pe)                        # (el, q, 4)
+            SH = slope_shapes(xi[None, :], he, 0.0 * pe)
+            wq = (w[None, :] * he)[:, :, None, None]
+            vals = Ng[e, None, None] * (wq * (ST[..., :, None] * ST[..., None, :]
+                                              - SH[..., :, None] * SH[..., None, :])).sum(1)
+            edofs = f.basis.element_dofs.T[e]
+            rows = np.broadcast_to(edofs[:, :, None], vals.shape)
+            cols = np.broadcast_to(edofs[:, None, :], vals.shape)
+            blocks.append(sp.csr_matrix((vals.ravel(), (rows.ravel(), cols.ravel())),
+                                        shape=(n, n)))
+        return sp.block_diag(blocks, format="csr")
 
     def local_self_weight(self, g: _Group, gravity: np.ndarray) -> np.ndarray:
         """Local load vector of the member self-weight ρA·g (field DOF space)."""

@@ -119,6 +119,26 @@ def deflection_shapes(xi: np.ndarray, h: np.ndarray, phi: np.ndarray) -> np.ndar
                      h * (-x**2 + x**3 - 0.5 * p * (x - x**2)) / d], axis=-1)
 
 
+def slope_shapes(xi: np.ndarray, h: np.ndarray, phi: np.ndarray) -> np.ndarray:
+    """Slope ``dN/dx`` of each bending shape function at ``ξ`` (the derivative of
+    :func:`deflection_shapes` along the element: the deflection's total slope, bending and
+    shear), shape (..., 4).
+
+    Examples
+    --------
+    >>> xi, h, phi = 0.3, 2.0, 0.4
+    >>> fd = (deflection_shapes(xi + 1e-6, h, phi) - deflection_shapes(xi - 1e-6, h, phi))
+    >>> bool(np.allclose(slope_shapes(xi, h, phi), fd / (2e-6 * h)))
+    True
+    """
+    x, h, p = (np.asarray(a, dtype=float) for a in (xi, h, phi))
+    d = 1.0 + p
+    return np.stack([(-6 * x + 6 * x**2 - p) / (h * d),
+                     (1 - 4 * x + 3 * x**2 + 0.5 * p * (1 - 2 * x)) / d,
+                     (6 * x - 6 * x**2 + p) / (h * d),
+                     (-2 * x + 3 * x**2 - 0.5 * p * (1 - 2 * x)) / d], axis=-1)
+
+
 def rotation_shapes(xi: np.ndarray, h: np.ndarray, phi: np.ndarray) -> np.ndarray:
     """Section rotation ``ψ = N' + (Φh²/12) N'''`` of each bending shape function at ``ξ``,
     shape (..., 4): ``[ψ₁, ψ₂, ψ₃, ψ₄]``, which are 0, 1, 0, 0 at ``ξ = 0`` and 0, 0, 0, 1
