@@ -284,6 +284,15 @@ def _node_block_matrix(n_nodes: int, dim: int, ends: np.ndarray, ref: np.ndarray
     return K
 
 
+def _field_matrix(f, edofs: np.ndarray, vals: np.ndarray) -> sp.csr_matrix:
+    """The matrix of one field of a group (its basis's ``N`` DOFs) from element blocks
+    ``vals`` (el, k, k) on the element DOFs ``edofs`` (el, k)."""
+    rows = np.broadcast_to(edofs[:, :, None], vals.shape)
+    cols = np.broadcast_to(edofs[:, None, :], vals.shape)
+    n = f.basis.N
+    return sp.csr_matrix((vals.ravel(), (rows.ravel(), cols.ravel())), shape=(n, n))
+
+
 def _qp(basis: Basis, values: np.ndarray) -> np.ndarray:
     """Per-element values broadcast to the quadrature points, shape (n_el, n_qp)."""
     return np.repeat(np.asarray(values, dtype=float)[:, None], basis.X.shape[-1], axis=1)
@@ -734,11 +743,7 @@ class FEModel:
             c = -phi / (1.0 + phi) * 12.0 * EI / h**3                  # (el,)
             a = np.stack([np.ones_like(h), h / 2, -np.ones_like(h), h / 2], axis=1)
             vals = c[:, None, None] * a[:, :, None] * a[:, None, :]     # (el, 4, 4)
-            edofs = f.basis.element_dofs.T                              # (el, 4)
-            rows = np.broadcast_to(edofs[:, :, None], vals.shape)
-            cols = np.broadcast_to(edofs[:, None, :], vals.shape)
-            blocks.append(sp.csr_matrix((vals.ravel(), (rows.ravel(), cols.ravel())),
-                                        shape=(n, n)))
+            blocks.append(_field_matrix(f, f.basis.element_dofs.T, vals))
         return sp.block_diag(blocks, format="csr")
 
     def local_mass(self, g: _Group) -> sp.csr_matrix:
@@ -795,11 +800,7 @@ class FEModel:
                                                  - NH[..., :, None] * NH[..., None, :])).sum(1)
                     + (s.density[mem][e] * I[e])[:, None, None]
                     * (wq * psi[..., :, None] * psi[..., None, :]).sum(1))    # (el, 4, 4)
-            edofs = f.basis.element_dofs.T[e]
-            rows = np.broadcast_to(edofs[:, :, None], vals.shape)
-            cols = np.broadcast_to(edofs[:, None, :], vals.shape)
-            blocks.append(sp.csr_matrix((vals.ravel(), (rows.ravel(), cols.ravel())),
-                                        shape=(n, n)))
+            blocks.append(_field_matrix(f, f.basis.element_dofs.T[e], vals))
         return sp.block_diag(blocks, format="csr")
 
     def local_geometric_stiffness(self, g: _Group, N: np.ndarray) -> sp.csr_matrix:
@@ -845,11 +846,7 @@ class FEModel:
             wq = (w[None, :] * he)[:, :, None, None]
             vals = Ng[e, None, None] * (wq * (ST[..., :, None] * ST[..., None, :]
                                               - SH[..., :, None] * SH[..., None, :])).sum(1)
-            edofs = f.basis.element_dofs.T[e]
-            rows = np.broadcast_to(edofs[:, :, None], vals.shape)
-            cols = np.broadcast_to(edofs[:, None, :], vals.shape)
-            blocks.append(sp.csr_matrix((vals.ravel(), (rows.ravel(), cols.ravel())),
-                                        shape=(n, n)))
+            blocks.append(_field_matrix(f, f.basis.element_dofs.T[e], vals))
         return sp.block_diag(blocks, format="csr")
 
     def local_self_weight(self, g: _Group, gravity: np.ndarray) -> np.ndarray:
