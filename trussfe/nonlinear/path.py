@@ -666,7 +666,7 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
         # the most loaded translation; with moments only, the most loaded rotation
         monitor = int(np.argmax(fl)) if fl.max() > 0 else int(np.argmax(np.abs(m.load)))
     if not m.free[monitor]:
-        raise InputError("monitor", "the monitored displacement is a supported DOF")
+        raise InputError("--monitor", "the monitored displacement is a supported DOF")
     if step is not None and not (np.isfinite(step) and step > 0):
         raise InputError("step", f"must be a positive number, got {step}")
     if max_load_factor is None and control == "load":
@@ -700,7 +700,7 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
         raise AnalysisError(s.source or s.name, UNSOLVABLE_START) from None
     if control == "displacement":
         if abs(st.w[st.c] * ut[st.c]) <= 1e-12 * np.abs(st.w * ut).max():
-            raise InputError("monitor", "the reference load does not move the monitored "
+            raise InputError("--monitor", "the reference load does not move the monitored "
                                         "displacement: choose another for displacement control")
         st.dsign = float(np.sign(ut[st.c]))
     if step is None:
