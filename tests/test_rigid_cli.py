@@ -3,6 +3,7 @@
 import json
 
 import numpy as np
+import trussfe
 import pytest
 from numpy.testing import assert_allclose
 
@@ -47,6 +48,16 @@ def test_simulate_cli_writes_every_output(tmp_path):
     assert (tmp_path / "png" / "von_mises.png").is_file()
     z = np.load(tmp_path / "r.npz")
     assert z["von_mises"].shape == (50, 2, 7)
+    # the NPZ holds the arrays the JSON summarises: the same buckling margin and actuator
+    # force history
+    follower = list(z["member_ids"]).index("follower")
+    margin = d["summary"]["members"]["follower"]["buckling"]["margin"]
+    assert z["buckling_margin"][follower] == pytest.approx(margin, rel=1e-12)
+    assert_allclose(z["actuator_force"][:, 0], d["actuators"]["active"]["force"], rtol=1e-12)
+    assert z["static_tension"].shape == z["tension"].shape
+    assert {"length", "length_rate", "length_acc", "omega", "alpha", "static_reactions",
+            "midpoint_axial_force", "static_actuator_force", "cantilever_moment",
+            "buckling_allowable", "buckling_max_compression"} <= set(z.files)
     _check_vtk_series(tmp_path / "vtk", d)
 
 
@@ -250,3 +261,83 @@ def test_singular_position_in_a_later_block_names_its_step(monkeypatch, threads)
     m = Motion(np.linspace(0.0, 1.0, 40), [1], L, np.ones_like(L), np.zeros_like(L))
     with pytest.raises(AnalysisError, match=r"step 39 \(t = 1 s\).*singular"):
         simulate(s, m)
+
+
+def _spinning_follower():
+    """The follower O1–B (aluminium tube, 1 m) turned about O1 by a massless active member
+    O2–B so that it spins at a constant ω = 3 rad/s; no gravity.  Exact kinematics: B moves on
+    the unit circle, and the active length is |B − O2|."""
+    from trussfe.rigid.motion import Motion
+    s = trussfe.model_from_dict({
+        "model": {"dimension": 2, "gravity": [0.0, 0.0]},
+        "materials": {"al": {"E": 70e9, "density": 2700.0}, "light": {"E": 70e9, "density": 0.0}},
+        "sections": {"tube": {"outer_diameter": 0.02, "inner_diameter": 0.016}},
+        "nodes": {"O1": [0.0, 0.0], "O2": [-2.0, 0.0], "B": [np.cos(0.5), np.sin(0.5)]},
+        "members": {"follower": {"nodes": ["O1", "B"], "section": "tube", "material": "al"},
+                    "act": {"nodes": ["O2", "B"], "section": "tube", "material": "light"}},
+        "supports": {"O1": ["x", "y"], "O2": ["x", "y"]},
+        "active_members": {"act": {"base_mass": 0.0, "base_length": 1.0, "base_cg": 0.0,
+                                   "base_inertia": 0.0, "tube_length": 0.5}}})
+    w = 3.0
+    t = np.linspace(0.0, 0.4, 9)
+    th = 0.5 + w * t
+    B = np.stack([np.cos(th), np.sin(th)], axis=1)
+    V = w * np.stack([-np.sin(th), np.cos(th)], axis=1)
+    Acc = -w * w * B
+    d = B - [-2.0, 0.0]
+    L = np.linalg.norm(d, axis=1)
+    Ld = np.einsum("ti,ti->t", d, V) / L
+    Ldd = (np.einsum("ti,ti->t", V, V) + np.einsum("ti,ti->t", d, Acc) - Ld**2) / L
+    return s, Motion(t, [s.member_index("act")], L[:, None], Ld[:, None], Ldd[:, None])
+
+
+def test_a_member_in_tension_or_unloaded_has_no_buckling_margin():
+    """The spinning follower is in tension (ρA ω² (L² − x²)/2 along it, 0 at B) and the
+    massless active member carries nothing: no member is compressed (it reported a
+    round-off "compression" of 1e-14 N and a margin of 2e17)."""
+    s, mot = _spinning_follower()
+    r = trussfe.simulate(s, motion=mot)
+    b = r.solution.buckling
+    assert np.all(b.max_compression == 0.0) and np.all(np.isinf(b.margin))
+    rho_a = 2700.0 * np.pi / 4 * (0.02**2 - 0.016**2)
+    f = s.member_index("follower")
+    assert_allclose(r.solution.section_tension[:, f, -1], rho_a * 9.0 / 2, rtol=1e-9)
+
+
+def test_a_stroke_upside_down_is_refused_when_read():
+    """min_length above max_length leaves no length in the stroke: refused on reading the
+    model, naming the item (every motion was refused, blamed on the motion)."""
+    with pytest.raises(InputError, match=r"active_members\.act\.min_length: 3\.5 m is more "
+                                         r"than max_length = 3\.0 m"):
+        trussfe.model_from_dict({
+            "model": {"dimension": 2},
+            "materials": {"al": {"E": 70e9, "density": 2700.0}},
+            "sections": {"tube": {"outer_diameter": 0.02, "inner_diameter": 0.016}},
+            "nodes": {"O1": [0.0, 0.0], "O2": [-2.0, 0.0], "B": [1.0, 0.0]},
+            "members": {"f": {"nodes": ["O1", "B"], "section": "tube", "material": "al"},
+                        "act": {"nodes": ["O2", "B"], "section": "tube", "material": "al"}},
+            "supports": {"O1": ["x", "y"], "O2": ["x", "y"]},
+            "active_members": {"act": {"base_mass": 0.0, "base_length": 1.0,
+                                       "tube_length": 0.5, "min_length": 3.5,
+                                       "max_length": 3.0}}})
+
+
+def test_a_length_just_outside_the_stroke_shows_by_how_much():
+    """A length 5e-9 m short of the stroke is shown with the digits that tell it from the
+    limit and the amount (it read "2.5 m long, short of its stroke 2.5-3 m")."""
+    from trussfe.errors import InputError
+    from trussfe.rigid.motion import Motion, check_stroke
+    s = trussfe.model_from_dict({
+        "model": {"dimension": 2},
+        "materials": {"al": {"E": 70e9, "density": 2700.0}},
+        "sections": {"tube": {"outer_diameter": 0.02, "inner_diameter": 0.016}},
+        "nodes": {"O1": [0.0, 0.0], "O2": [-2.0, 0.0], "B": [0.6, 0.0]},
+        "members": {"f": {"nodes": ["O1", "B"], "section": "tube", "material": "al"},
+                    "act": {"nodes": ["O2", "B"], "section": "tube", "material": "al"}},
+        "supports": {"O1": ["x", "y"], "O2": ["x", "y"]},
+        "active_members": {"act": {"base_mass": 0.0, "base_length": 1.0, "tube_length": 0.5,
+                                   "min_length": 2.5, "max_length": 3.0}}})
+    z = np.zeros((1, 1))
+    with pytest.raises(InputError, match=r"is 2\.499999995 m long, short of its stroke "
+                                         r"2\.5-3 m by 5e-09 m"):
+        check_stroke(s, Motion([0.0], [s.member_index("act")], [[2.499999995]], z, z))

@@ -45,7 +45,8 @@ def _run(args: argparse.Namespace) -> int:
         else:
             print(f"{head}G_gh {a['gearhead_gain']:.5g}"
                   f"{' (selected, eq. 3.1)' if a['gearhead_gain_selected'] else ''}; peak "
-                  f"force {a['force']['value']:.5g} N, torque {tq['value']:.4g} N·m at "
+                  f"force {a['force']['value']:.5g} N at {a['force']['time']:.4g} s, torque "
+                  f"{tq['value']:.4g} N·m at "
                   f"{tq['time']:.4g} s, voltage {v['value']:.4g} V at {v['time']:.4g} s "
                   f"({a['motor_voltage_frictionless']['value']:.4g} V without friction)")
         for f in a["flags"]:

@@ -98,6 +98,9 @@ def parse_active_members(raw: Any, structure: Structure, base_dir: Path | None =
                              f"({L0:.6g} m at rest)")
         lo = _num(t, "min_length", item, positive=True, default=math.nan)
         hi = _num(t, "max_length", item, positive=True, default=math.nan)
+        if lo > hi:                                     # (False when either is not given)
+            raise InputError(f"{item}.min_length", f"{lo} m is more than max_length = {hi} m: "
+                             "no length lies in the stroke")
         out.append(ActiveMember(member=k, base_mass=mb, base_length=lb, base_cg=cg,
                                 base_inertia=ib, tube_length=lt, min_length=lo, max_length=hi))
     return tuple(out)

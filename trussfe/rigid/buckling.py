@@ -44,6 +44,10 @@ class BucklingCheck:
     margin: np.ndarray
 
 
+#: Compressions below this fraction of the largest axial force of the analysis count as none.
+COMPRESSION_ROUNDOFF = 1e-10
+
+
 def buckling_check(structure: Structure, tension: np.ndarray, column_length: np.ndarray,
                    effective_length_factor: np.ndarray | float = 1.0) -> BucklingCheck:
     """Allowable load, largest compression and margin of every member.
@@ -66,6 +70,10 @@ def buckling_check(structure: Structure, tension: np.ndarray, column_length: np.
     comp = -tension.min(axis=2)                         # (time, member)
     step = comp.argmax(axis=0)
     cmax = np.maximum(comp.max(axis=0), 0.0)
+    # a compression at the round-off of the member forces is none (a member that carries
+    # nothing, solved to 1e-14 N, is not compressed: its margin is not 1e17)
+    scale = float(np.abs(tension).max()) if tension.size else 0.0
+    cmax = np.where(cmax > COMPRESSION_ROUNDOFF * scale, cmax, 0.0)
     with np.errstate(divide="ignore"):
         margin = np.where(cmax > 0, allow / np.where(cmax > 0, cmax, 1.0), np.inf)
     return BucklingCheck(allowable=allow, column_length=np.asarray(column_length, float),

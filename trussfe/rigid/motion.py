@@ -124,7 +124,7 @@ def check_stroke(structure: Structure, motion: Motion) -> None:
     Traceback (most recent call last):
     ...
     trussfe.errors.InputError: motion: step 1 (t = 1 s): active member 'active' is 4.2 m long, \
-beyond its stroke 2.5-4.1 m ([active_members.active] min_length, max_length)
+beyond its stroke 2.5-4.1 m by 0.1 m ([active_members.active] min_length, max_length)
     """
     actives = {a.member: a for a in structure.extensions.get("active_members", ())}
     item = f"{motion.source}: motion" if motion.source else "motion"
@@ -148,15 +148,19 @@ beyond its stroke 2.5-4.1 m ([active_members.active] min_length, max_length)
         lo, hi, tube = limits[j]
         name = structure.member_ids[k]
         length = motion.length[i, j]
-        where = (f"step {i} (t = {motion.time[i]:g} s): active member '{name}' is "
-                 f"{length:.6g} m long")
+        shown = f"{length:.6g}"
+        if (length < lo <= float(shown)) or (float(shown) <= hi < length):
+            shown = f"{length:.12g}"     # six digits would round it onto the limit it passes
+        where = f"step {i} (t = {motion.time[i]:g} s): active member '{name}' is {shown} m long"
         if np.isfinite(tube) and length < tube * (1.0 - STROKE_TOLERANCE) \
                 and not (np.isfinite(lo) and length < lo * (1.0 - STROKE_TOLERANCE)):
             raise InputError(item, f"{where}, shorter than its leadscrew tube ({tube:g} m, "
                              f"[active_members.{name}] tube_length)")
-        side = "short of" if length < lo * (1.0 - STROKE_TOLERANCE) else "beyond"
-        raise InputError(item, f"{where}, {side} its stroke {lo:g}-{hi:g}"
-                         f" m ([active_members.{name}] min_length, max_length)")
+        short = length < lo * (1.0 - STROKE_TOLERANCE)
+        side = "short of" if short else "beyond"
+        by = (lo - length) if short else (length - hi)
+        raise InputError(item, f"{where}, {side} its stroke {lo:g}-{hi:g} m by "
+                         f"{by:.3g} m ([active_members.{name}] min_length, max_length)")
 
 
 #: Relative slack of :func:`check_stroke` (round-off of lengths generated at a limit).

@@ -63,7 +63,12 @@ def to_json(res: SimulationResult) -> dict:
 
 
 def write_npz(path: str | Path, res: SimulationResult) -> None:
-    """All arrays of the result in one NumPy ``.npz`` file.
+    """All arrays of the result in one NumPy ``.npz`` file: the motion's positions, node
+    velocities and accelerations, member lengths and their rates, member angular velocities
+    and accelerations, pin forces and reactions (in motion and at rest), section forces
+    (tension, shear, moment; at rest: tension), von Mises stresses (in motion and at rest),
+    midpoint axial forces, actuator forces (in motion and at rest), cantilever moments and
+    the buckling check (allowable, largest compression, margin).
 
     ``shear_local`` and ``moment_local`` (nt, m, k, 2) are the two shears and two bending
     moments in the member frames of :func:`trussfe.mechanics.geometry.transverse_frames`.
@@ -81,6 +86,17 @@ def write_npz(path: str | Path, res: SimulationResult) -> None:
         "von_mises": res.stresses.von_mises, "static_von_mises": res.static_stresses.von_mises,
         "actuator_force": res.actuator_force, "member_ids": np.array(res.structure.member_ids),
         "node_ids": np.array(res.structure.node_ids),
+        # the member kinematics, the forces at rest and the checks beside them
+        "length": res.kinematics.length, "length_rate": res.kinematics.length_rate,
+        "length_acc": res.kinematics.length_acc, "omega": res.kinematics.omega,
+        "alpha": res.kinematics.alpha, "static_reactions": res.static_forces.reactions,
+        "static_tension": res.static_sections.tension,
+        "midpoint_axial_force": res.midpoint_axial_force,
+        "static_actuator_force": res.static_actuator_force,
+        "cantilever_moment": res.cantilever_moment,
+        "buckling_allowable": res.buckling.allowable,
+        "buckling_max_compression": res.buckling.max_compression,
+        "buckling_margin": res.buckling.margin,
     }
     with atomic_path(path) as tmp:
         with open(tmp, "wb") as fh:
