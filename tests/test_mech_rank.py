@@ -156,3 +156,17 @@ def test_sparse_backends_agree_with_dense_in_3d(backend):
             B = compatibility_matrix(X, b, free)
             assert np.abs(B @ sp_.mechanism_basis).max() < 1e-6
     assert rank_analysis(X, cases[1], free).mechanisms == 2
+
+
+@pytest.mark.parametrize("offset", [0.0, 1e5, 1e6])
+def test_a_straight_chain_far_from_the_origin_is_still_straight(offset):
+    """Two bars through (0, 0), (0.6, 0.8), (1.2, 1.6) — a straight chain between two pins,
+    type IV: one infinitesimal mechanism across it and one self-stress along it — moved
+    1e5 or 1e6 m away.  Its direction cosines are computed from coordinates known to
+    ε·|x|: the default tolerance follows that round-off (at 1e5 m the chain was called rigid,
+    smallest singular value 2.3e-11 against a tolerance of 6.3e-13)."""
+    from trussfe.kinematics.rank import rank_analysis
+    x = np.array([[0.0, 0.0], [0.6, 0.8], [1.2, 1.6]]) + [offset, 2 * offset]
+    free = np.array([[False, False], [True, True], [False, False]])
+    r = rank_analysis(x, np.array([[0, 1], [1, 2]]), free)
+    assert (r.rank, r.mechanisms, r.self_stress_states) == (1, 1, 1)

@@ -1,6 +1,7 @@
 """Finite-mechanism motion: over-constrained, compound and spatial assemblies, limit points,
 bifurcations and bad input (Hortobágyi 1999, sections 3–9)."""
 import numpy as np
+from numpy.testing import assert_allclose
 import pytest
 
 from trussfe.errors import AnalysisError, InputError
@@ -152,3 +153,58 @@ def test_section9_branch_switch():
         c, r = out[br]
         assert abs(c) > 5 and np.sign(c) == np.sign(r)     # other branch: same sense
     assert np.sign(out[1][0]) != np.sign(out[2][0])        # the two directions
+
+
+def test_a_four_bar_beside_a_straight_chain_is_traced_and_the_chain_stays():
+    """A four-bar 1–2–3–4 (ground 1–4) and, between the same supports, a straight chain of
+    two bars 1–5–4: node 5 has an infinitesimal mechanism (across the chain) at every state,
+    but no finite motion.  The trace refused the four-bar ("leaves the motion region": the
+    square block of dependent coordinates is singular), and called every state a
+    bifurcation.  It now moves the four-bar with every bar kept to the corrector tolerance
+    and node 5 where it is, and reports no event."""
+    x = np.array([[0.0, 0.0], [0.995004165278026, 0.0998334166468282],
+                  [2.99230833478574, 2.59998862272246], [3.0, 0.0], [1.5, 0.0]])
+    bars = np.array([[0, 1], [1, 2], [3, 2], [0, 4], [4, 3]])
+    free = np.ones_like(x, dtype=bool)
+    free[[0, 3]] = False
+    r = trace_mechanism(x, bars, free, drives=[1 * 2 + 1], step=0.05, steps=5)    # 2:y
+    assert np.max(np.abs(_lengths(r.coords, bars) - _lengths(x, bars))) < 1e-9
+    assert np.ptp(r.coords[:, 1, 1]) > 0.2                       # the crank turned
+    assert np.abs(r.coords[:, 4] - x[4]).max() < 1e-12           # node 5 stays
+    assert not [e for e in r.events if e["kind"] == "bifurcation"]
+
+
+def test_a_square_on_a_pin_and_a_roller_moves_as_a_parallelogram():
+    """A square of four bars, node 1 pinned and node 2 on a roller along y (x held): bar 1–2
+    keeps node 2 at (1, 0), and 1–4–3–2 moves as a parallelogram, node 4 = (−sin θ, cos θ),
+    node 3 = node 4 + (1, 0) (the trace refused it as the square's dependent block is
+    singular)."""
+    x = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+    bars = np.array([[0, 1], [1, 2], [2, 3], [3, 0]])
+    free = np.ones_like(x, dtype=bool)
+    free[0] = False
+    free[1, 0] = False
+    r = trace_mechanism(x, bars, free, drives=[2 * 2 + 0], step=0.05, steps=10)   # 3:x
+    c = r.coords
+    assert np.max(np.abs(_lengths(c, bars) - 1.0)) < 1e-9
+    # node 2's y is held by bar 1–2 only to second order: lengths kept to 1e-10 L leave it
+    # within √(2e-10) L = 1.4e-5 L of 0 (and the parallelogram's sides with it)
+    near = np.sqrt(2e-10)
+    assert np.abs(c[:, 1] - [1.0, 0.0]).max() < near
+    assert_allclose(np.linalg.norm(c[:, 3], axis=1), 1.0, atol=1e-9)
+    assert_allclose(c[:, 2] - c[:, 3], np.broadcast_to([1.0, 0.0], c[:, 2].shape), atol=near)
+    assert np.ptp(c[:, 2, 0]) > 0.4
+
+
+def test_a_trace_refuses_a_tolerance_too_loose_for_its_rank_decisions():
+    """The rank along a trace is decided at 100 × the bar-length tolerance: at 1e-2 every
+    singular value of a regular four-bar counted as zero (a "bifurcation" at every state, and
+    at 0.9 the bars off by 2.4 %).  Tolerances above 1e-4 are refused, naming the option."""
+    import trussfe
+    from trussfe._resources import mesh_path
+    with pytest.raises(InputError, match="--tolerance"):
+        trussfe.trace(mesh_path("mech_fourbar.toml"), drive="2:y", step=0.05, steps=4,
+                      tolerance=1e-2)
+    r = trussfe.trace(mesh_path("mech_fourbar.toml"), drive="2:y", step=0.05, steps=4,
+                      tolerance=1e-4)
+    assert not [e for e in r.events if e["kind"] == "bifurcation"]

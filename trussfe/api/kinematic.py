@@ -19,6 +19,10 @@ from .numerics import numerics_checked
 from .results import Result
 
 
+#: Loosest bar-length tolerance of a trace (relative to the longest bar).
+TRACE_TOLERANCE_LIMIT = 1e-4
+
+
 @numerics_checked
 def mechanism(model: ModelLike, *, tolerance: float | None = None,
               max_order: int = 64) -> MechanismResult:
@@ -31,7 +35,9 @@ def mechanism(model: ModelLike, *, tolerance: float | None = None,
     ----------
     model : Structure, path or dict
     tolerance : float, optional
-        Relative singular-value tolerance (default max(b, f)·1e3·eps).
+        Relative singular-value tolerance (default 1e3·eps·max(max(b, f), X/l_min):
+        the round-off of B and of its direction cosines, X the largest coordinate
+        magnitude, l_min the shortest bar).
     max_order : int
         Highest order of the compatibility equations examined for the order (2 … 4096).
 
@@ -80,7 +86,7 @@ def trace(model: ModelLike, *, drive: str | Sequence[str], step: float | Sequenc
     branch : int
         Branch taken at a bifurcation point (0 = prescribe the drive).
     tolerance : float
-        Relative bar-length tolerance of the corrector.
+        Relative bar-length tolerance of the corrector (at most 1e-4).
     frozen : bool
         Keep B11 of the predicted state (the paper's iteration) instead of Newton's refresh.
     progress : callable, optional
@@ -112,6 +118,12 @@ def trace(model: ModelLike, *, drive: str | Sequence[str], step: float | Sequenc
     steps = positive_int("--steps", steps, optional=False)
     branch = nonneg_int("--branch", branch)
     tolerance = relative_tolerance("--tolerance", tolerance, optional=False)
+    if tolerance > TRACE_TOLERANCE_LIMIT:
+        # the rank decisions along the trace are made at 100 × the bar-length tolerance: at
+        # 1e-2 every singular value of a regular four-bar counts as zero
+        raise InputError("--tolerance", f"{tolerance:g} is too loose a bar-length tolerance "
+                         f"for a trace (at most {TRACE_TOLERANCE_LIMIT:g}: the rank of the "
+                         "compatibility matrix is decided at 100 times it)")
     frozen = flag("--frozen", frozen)
     progress = progress_callback(progress)
     structure = as_structure(model)

@@ -101,11 +101,16 @@ def _jacobian(x: np.ndarray, conn: np.ndarray, lengths: np.ndarray, free: np.nda
 
 
 def _solve_dependent(J: sp.csr_matrix, rhs: np.ndarray) -> np.ndarray | None:
-    """Solve ``J Δ = rhs``: sparse LU when square, least squares over all bars otherwise."""
+    """Solve ``J Δ = rhs``: sparse LU when square and regular, least squares over all bars
+    otherwise — a square but singular J (as many bars as dependent coordinates, one of
+    them a state of self-stress beside a finite mechanism elsewhere: a locked node's two bars
+    and a four-bar) has the least-squares solution of smallest norm, which moves nothing
+    along its null space."""
     b, f = J.shape
     if b == f:
         lu = factor(J, "general", singular="flag")
-        return None if lu.is_singular else lu.solve(rhs, refine=False)
+        if not lu.is_singular:
+            return lu.solve(rhs, refine=False)
     if f <= 3000:
         A = J.toarray()
         sol, *_ = np.linalg.lstsq(A, rhs, rcond=1e-10)

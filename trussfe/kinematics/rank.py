@@ -190,7 +190,9 @@ def rank_analysis(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarray
         Free coordinates (``~structure.translation_supports``).
     tolerance : float, optional
         Relative singular-value tolerance (σ ≤ tolerance·σ_max counts as zero).  Default
-        ``max(b, f)·1e3·eps`` (dense) or 1e-6 (sparse).
+        ``1e3·eps·max(max(b, f), max|x|/l_min)`` — the round-off of the matrix and that of its
+        direction cosines, computed from coordinates far from the origin against the
+        shortest bar — on the dense path, and at least 1e-6 on the sparse one.
     dense_limit : int
         Above this many free coordinates the sparse path is used.
     sparse_backend : {"auto", "pardiso", "superlu"}
@@ -232,6 +234,14 @@ def rank_analysis(coords: np.ndarray, connectivity: np.ndarray, free: np.ndarray
     if sparse_backend not in ("auto", "pardiso", "superlu"):
         raise AnalysisError("rank analysis", f"unknown sparse backend '{sparse_backend}' "
                                              "(auto, pardiso or superlu)")
+    if tolerance is None and b and f:
+        # the direction cosines of B come from coordinate differences, known to the
+        # round-off of the coordinates themselves: ε·max|x| against the shortest bar (a
+        # straight chain 1e5 m from the origin is straight only to 2e-11)
+        lengths = np.linalg.norm(x[conn[:, 1]] - x[conn[:, 0]], axis=1)
+        eps = np.finfo(float).eps
+        geometry = eps * float(np.abs(x).max()) / max(float(lengths.min()), 1e-300)
+        tolerance = 1e3 * max(max(b, f) * eps, geometry)
     try:
         r = matrix_rank(B, tolerance=tolerance, dense_limit=dense_limit,
                         backend=sparse_backend)

@@ -396,7 +396,12 @@ class _Trace:
             self.events.append({"step": k - 1, "kind": "bifurcation", "branches": int(nullity),
                                 "unfolding": True, "independent": names[fidx[p]]})
             return pred, indep, True
-        if nullity > nd:
+        if nullity > nd and f - _dense_null(compatibility_matrix(
+                self.x + self.expand(pred), conn, su.free), su.rtol)[0] <= nd:
+            # more freedoms here than a step along the path keeps: a bifurcation.  (Where the
+            # excess persists along the path — an infinitesimal mechanism elsewhere in the
+            # assembly, a straight chain of two bars beside a four-bar — the state is a
+            # regular one, and the least-squares corrector leaves that part where it is.)
             indep = dcols[[int(np.argmax(np.abs(S)))]]
             self.events.append({"step": k - 1, "kind": "bifurcation", "branches": int(nullity),
                                 "independent": names[fidx[indep[0]]]})
@@ -441,8 +446,15 @@ class _Trace:
             if tau @ self.prev_tau < 0:
                 tau = -tau
             pred = self.h * tau / abs(tau[p])
-        self.events.append({"step": k - 1, "kind": "bifurcation", "branches": int(nullity),
-                            "branch": int(branch), "independent": self.su.names[self.su.fidx[p]]})
+        su = self.su
+        if su.f - _dense_null(compatibility_matrix(self.x + self.expand(pred), su.conn,
+                                                   su.free), su.rtol)[0] <= self.nd:
+            # the extra freedoms are gone a step along the branch: a bifurcation.  (Where
+            # they persist — an infinitesimal mechanism elsewhere in the assembly, a straight
+            # chain of two bars beside a four-bar — the state is a regular one.)
+            self.events.append({"step": k - 1, "kind": "bifurcation",
+                                "branches": int(nullity), "branch": int(branch),
+                                "independent": su.names[su.fidx[p]]})
         return pred, np.array([p])
 
     def predict_along_tangent(self, k: int, item: str, start: _StartState):
