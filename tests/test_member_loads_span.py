@@ -265,3 +265,23 @@ def test_3d_frame_partial_loads_against_pynite(k):
         mine = sorted(np.abs(Fi[[4, 5]]))
         theirs = sorted(abs(bc.moment(d, float(xi), combo)) for d in ("My", "Mz"))
         assert mine == pytest.approx(theirs, rel=1e-6, abs=1e-3)
+
+
+def test_many_point_loads_are_refused_for_their_memory_before_any_array(monkeypatch):
+    """The section forces along a member take every load at every station: (loads ×
+    stations) arrays, 30 GB for 10,000 point loads on one bar, which the kernel killed.  The
+    size is checked first and refused naming member_loads; here with 200 loads against a
+    machine said to have 10 MB free (the same model runs when memory allows)."""
+    import trussfe.budget as budget
+    s = build_structure([[0.0, 0.0], [2.0, 0.0]], [(0, 1)], section=Section.tube("t", 0.05),
+                        material=Material("st", 2e11, 8e10), supports={0: "xy", 1: "y"},
+                        is_beam=True)
+    loads = [MemberLoad(0, "point", at=float(a), force=(0.0, -1.0))
+             for a in np.linspace(0.01, 0.99, 200)]
+    s = s.with_extensions(member_loads=loads)
+    r = solve_static(s, "pinned-beam")
+    assert np.abs(r.reactions[:, 1]).sum() == pytest.approx(200.0, rel=1e-12)
+    monkeypatch.setattr(budget, "available_memory", lambda: 10 * 2**20)
+    with pytest.raises(InputError, match="member_loads: the section forces of 200 member "
+                                         "loads"):
+        solve_static(s, "pinned-beam")

@@ -42,8 +42,9 @@ def test_singular_start_names_step_0(in_line, tmp_path, capsys, steps, scheme):
                "--scheme", scheme])
     err = capsys.readouterr().err
     assert rc == 2 and err.count("\n") == 1, err
-    assert err.startswith("trussfe: error: motion: step 0 (t = 0 s): the assembly is at a "
-                          "singular position"), err
+    # the motion's file, then the step
+    assert err.startswith(f"trussfe: error: from_singular_{steps}.toml: motion: step 0 (t = 0 "
+                          "s): the assembly is at a singular position"), err
     assert "'active' = 4 m" in err
 
 

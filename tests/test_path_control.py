@@ -210,3 +210,25 @@ def test_unknown_inertia_is_not_reported_as_a_count():
     from trussfe.nonlinear.path import _cannot_continue
     assert "negative eigenvalue" not in _cannot_continue("load", 2.0, None)
     assert "3 negative eigenvalue(s)" in _cannot_continue("load", 2.0, 3)
+
+
+@pytest.mark.parametrize("control", ["displacement", "arc-length"])
+def test_a_step_past_a_stop_lands_on_it(control):
+    """The von Mises truss (the closed form above): a step that passes ``max_load_factor``
+    (300 N, before the limit load 381 N) or ``max_displacement`` (0.1234 m, past the limit)
+    lands on it, on the closed-form path — the path went on to 308.5 N and 0.126 m, and the
+    termination said the stop was reached.  (Under load control the last step is already
+    cut to the stop.)"""
+    import trussfe
+    from trussfe._resources import mesh_path
+    vm = mesh_path("postcritical_von_mises.toml")
+    r = trussfe.postcritical(vm, control=control, max_load_factor=300.0, steps=400)
+    assert r.load_factors[-1] == pytest.approx(300.0, rel=1e-12)
+    assert r.solution.termination == "reached the maximum load factor 300"
+    r = trussfe.postcritical(vm, control=control, max_displacement=0.1234, steps=400)
+    apex = r.node_ids.index("apex")
+    v = -r.displacement[:, apex, 1]
+    assert v[-1] == pytest.approx(0.1234, rel=1e-12) and v.max() <= 0.1234 * (1 + 1e-12)
+    w, L = 0.1 - v[-1], math.hypot(1.0, 0.1)
+    ell = math.hypot(1.0, w)
+    assert r.load_factors[-1] == pytest.approx(2 * 1e6 * w * (1 / ell - 1 / L), rel=1e-8)

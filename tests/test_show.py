@@ -219,3 +219,20 @@ def test_member_loads_drawn(tmp_path, backend):
     trussfe.show(model, out, backend=backend)
     rgb = _picture(out)
     assert _has_colour(rgb, (0.545, 0.0, 0.545), tol=0.15) > 100     # darkmagenta
+
+
+def test_results_that_are_a_device_or_a_pipe_are_refused(tmp_path, capsys):
+    """``--results /dev/zero`` filled the memory until the kernel killed the process, and a
+    named pipe blocked it for ever: a results file must be a regular file, as a model,
+    motion, study or case file must (one line naming it, exit 2)."""
+    import os
+    from trussfe.cli import main
+    from trussfe._resources import mesh_path
+    fifo = tmp_path / "results.fifo"
+    os.mkfifo(fifo)
+    for path, what in (("/dev/zero", "is a device"), (str(fifo), "is a named pipe")):
+        assert main(["show", str(mesh_path("triangular_truss_static.toml")), "--results", path,
+                     "--png", str(tmp_path / "p.png")]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and path in err and what in err
+    assert not (tmp_path / "p.png").exists()

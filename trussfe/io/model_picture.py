@@ -39,6 +39,7 @@ import numpy as np
 from ..errors import InputError
 from ..mechanics.euler import member_euler_loads
 from ..mechanics.geometry import local_axes
+from .regular_file import read_regular_file
 from ..model.structure import Structure
 from .output import atomic_path
 from .render_backend import plot_backend
@@ -127,15 +128,15 @@ def read_results(path: str | Path, structure: Structure, case: str | None = None
         The file cannot be read, is not JSON, or does not match the model (named item).
     """
     where = str(path)
+    if Path(path).is_dir():
+        raise InputError(where, "is a folder, not a results file")
+    # a regular file of an accepted size only: a device (/dev/zero) or a named pipe in its
+    # place would fill the memory or block
+    data = read_regular_file(path, "results file")
     try:
-        text = Path(path).read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise InputError(where, "results file not found") from None
-    except IsADirectoryError:
-        raise InputError(where, "is a folder, not a results file") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(where, f"cannot read the results file: "
-                                f"{getattr(exc, 'strerror', None) or exc}") from None
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise InputError(where, f"cannot read the results file: {exc}") from None
     try:
         doc = json.loads(text)
     except json.JSONDecodeError as exc:

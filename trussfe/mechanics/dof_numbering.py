@@ -138,7 +138,11 @@ def number_dofs(structure: Structure, bar_model: str, subdivisions: int,
     n, m = s.n_nodes, s.n_members
     er = member_end_rotations(s, bar_model) if rotations is None else rotations
     frame = frame_members(s, bar_model)
-    ksub = np.where(frame, int(subdivisions), 1).astype(np.int64)
+    # (a subdivision count for no frame member at all is not taken into an array: a truss
+    # does not care how large it is)
+    ksub = np.ones(m, dtype=np.int64)
+    if frame.any():
+        ksub[frame] = int(subdivisions)
     node_dofs = -np.ones((n, dim + nrot), dtype=np.int64)
     node_dofs[:, :dim] = np.arange(n * dim).reshape(n, dim)
     has_rot = er.joint_rotation

@@ -600,8 +600,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
         the arc length Δs in displacement norm (arc-length).  Default: see
         :func:`default_step` (a step moves the structure 1/1000 of its size).
     max_load_factor : float, optional
-        Stop when λ exceeds it (default: no limit for displacement and arc-length control,
-        1 for load control).
+        Stop at it: a step that would pass it lands on it (default: no limit for
+        displacement and arc-length control, 1 for load control).
     monitor : int, optional
         Global DOF monitored (and prescribed under displacement control); default the
         translation with the largest reference load.
@@ -622,7 +622,8 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
     branch_step : float
         First step on a secondary branch, as a fraction of the structure's size.
     max_displacement : float, optional
-        Stop when the monitored displacement exceeds this magnitude, m.
+        Stop when the monitored displacement reaches this magnitude, m (a step that would
+        pass it lands on it).
     max_failures : int, optional
         Stop after this many member failure events.
     max_step : float, optional
@@ -779,6 +780,14 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
             out.events.append(Event("end", lam, detail=out.termination))
             break
         uf1, lam1, res1, its, fac_new = new
+        if control != "load" and mode != "branch":
+            # a step past a stop lands on it instead, where that part of the path goes on
+            # there (a load or monitored-displacement step to the limit converges)
+            land = _land_on_stop(st, uf, lam, fac, uf1, lam1, max_load_factor,
+                                 max_displacement)
+            if land is not None:
+                uf1, lam1, res1, its, fac_new = land
+                checked = None
         n_events = len(out.events)
         # ---- member failure events inside the step: cut the step to the first one
         mg0 = m.margins(res)
@@ -1001,6 +1010,25 @@ def _cannot_continue(control: str, lam: float, neg: int | None,
                "converges here: the monitored displacement may turn back (a snap-back); use "
                "--control arc-length")
     return f"path cannot be continued at load factor {lam:.6g}: {why}"
+
+
+def _land_on_stop(st, uf, lam, fac, uf1, lam1, max_load_factor, max_displacement):
+    """The step from ``(uf, lam)`` to exactly the stop that the step to ``(uf1, lam1)``
+    passed — ``max_load_factor`` by a load step, ``max_displacement`` (of the monitored DOF)
+    by a displacement step — as :meth:`_Stepper.step` returns it, or None (no stop passed,
+    or the landing step does not converge)."""
+    if max_load_factor is not None and lam < max_load_factor < lam1:
+        return st.step(uf, lam, fac, max_load_factor - lam, None, None, "load")
+    if max_displacement is not None and st.c >= 0 and abs(uf[st.c]) < max_displacement \
+            < abs(uf1[st.c]):
+        target = float(np.sign(uf1[st.c])) * max_displacement
+        saved = st.dsign
+        st.dsign = float(np.sign(target - uf[st.c]))
+        try:
+            return st.step(uf, lam, fac, abs(target - uf[st.c]), None, None, "displacement")
+        finally:
+            st.dsign = saved
+    return None
 
 
 def _failed_at(out: PathResult, s, lam: float, unit: float) -> list[str]:

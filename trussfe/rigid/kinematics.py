@@ -118,7 +118,10 @@ def pad3(x: np.ndarray) -> np.ndarray:
 
 
 def _step_item(motion: Motion, k: int) -> str:
-    return f"motion: step {motion.first_step + k} (t = {motion.time[k]:.6g} s)"
+    """The item of an error at step ``k`` of ``motion``, naming the motion's source (its
+    file) first where it has one, as :func:`~trussfe.rigid.motion.check_stroke` does."""
+    where = f"{motion.source}: motion" if motion.source else "motion"
+    return f"{where}: step {motion.first_step + k} (t = {motion.time[k]:.6g} s)"
 
 
 def member_histories(driven: np.ndarray, members: np.ndarray, rest: np.ndarray | float,
