@@ -49,3 +49,29 @@ def test_unresolved_modes_are_refused():
     r = solve_modes(s, count=2, check_resolution=False)
     assert r.residuals.max() > RESOLVED_RESIDUAL
     assert np.all(np.isfinite(r.frequencies_hz))
+
+
+def test_a_nearly_flat_truss_says_which_modes_it_resolves():
+    """Two bars of 1 m meeting 1e-9 m above their line, a 10 kg mass at the apex: the
+    vertical stiffness is 2EA/L·(h/L)² ≈ 1e-12 of the horizontal one, so the two
+    frequencies lie 1e6 apart and 1/ω² of the upper one is below the round-off of the
+    lower's.  The message said "only 1 DOFs carry mass" (both do); it says that the upper
+    mode lies beyond what double precision resolves beside the lower, and which count
+    works — and that count gives the vertical mode, √(k_v/m)/2π (massless bars)."""
+    import trussfe
+    from trussfe.errors import AnalysisError
+    d = {"model": {"name": "flat", "dimension": 2},
+         "materials": {"al": {"E": 71e9, "G": 26.2e9, "density": 0.0}},
+         "sections": {"tube": {"outer_diameter": 0.0254, "inner_diameter": 0.022225}},
+         "nodes": {"O2": [0.0, 0.0], "B": [1.0, 1e-9], "O1": [2.0, 0.0]},
+         "members": {"f": {"nodes": ["B", "O1"], "section": "tube", "material": "al"},
+                     "a": {"nodes": ["O2", "B"], "section": "tube", "material": "al"}},
+         "supports": {"O2": ["x", "y"], "O1": ["x", "y"]}, "masses": {"B": 10.0}}
+    with pytest.raises(AnalysisError, match="only the lowest 1 of 2 modes are resolved.*"
+                                            "use --count 1"):
+        trussfe.modes(d, bar_model="truss")
+    r = trussfe.modes(d, bar_model="truss", count=1)
+    A = np.pi / 4 * (0.0254**2 - 0.022225**2)
+    L = np.hypot(1.0, 1e-9)
+    k_v = 2 * 71e9 * A / L * (1e-9 / L) ** 2
+    assert r.frequencies_hz[0] == pytest.approx(np.sqrt(k_v / 10.0) / (2 * np.pi), rel=1e-6)

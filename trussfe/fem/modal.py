@@ -281,8 +281,15 @@ def generalized_eigen(Kff: sp.spmatrix, Mff: sp.spmatrix, count: int, sigma: flo
                 from None
         mu, V = mu[::-1], V[:, ::-1]
         if np.any(mu <= 1e-14 * max(mu.max(), 1e-300)):
-            raise AnalysisError(item, f"only {int(np.sum(mu > 1e-14 * mu.max()))} DOFs carry "
-                                f"mass; cannot compute {count} modes: ask for fewer")
+            # 1/ω² of the higher modes below the round-off of the lowest's: their frequencies
+            # lie more than 1e7 times above it (a DOF without mass, or a nearly flat truss
+            # whose one stiffness is nearly zero beside the others)
+            ok = int(np.sum(mu > 1e-14 * mu.max()))
+            raise AnalysisError(item, f"only the lowest {ok} of {count} modes are resolved: "
+                                "the others are massless or lie more than 1e7 times above "
+                                "them in frequency, beyond what double precision resolves "
+                                f"beside them (a nearly flat or nearly mechanism geometry); "
+                                f"use --count {ok}")
         lam = sigma + 1.0 / mu
     else:
         if factor is None:
