@@ -286,6 +286,13 @@ class _Trace:
         out[self.su.fidx] = dv
         return out.reshape(n, dim)
 
+    def nullity_after(self, pred: np.ndarray) -> int:
+        """Nullity of B a predicted step ``pred`` (free-coordinate increments) from the current
+        state (dense): the freedoms that a step along the path keeps."""
+        su = self.su
+        B = compatibility_matrix(self.x + self.expand(pred), su.conn, su.free)
+        return su.f - _dense_null(B, su.rtol)[0]
+
     # ----------------------------------------------------------------------- one step
     def step(self, k: int) -> None:
         """Advance the trace by step ``k`` (1-based): predict, detect, correct, accept."""
@@ -372,7 +379,7 @@ class _Trace:
         at_bifurcation : bool
         """
         su = self.su
-        f, conn, names, fidx = su.f, su.conn, su.names, su.fidx
+        conn, names, fidx = su.conn, su.names, su.fidx
         rank, N, nullity = start.rank, start.N, start.nullity
         dcols, S, nd = self.dcols, self.S, self.nd
         if N is None:
@@ -385,8 +392,7 @@ class _Trace:
                                       "of the mechanism; choose other drive coordinates")
         finite = nullity
         if nullity <= nd and conn.shape[0] > rank:
-            finite = f - _dense_null(compatibility_matrix(self.x + self.expand(pred), conn,
-                                                          su.free), su.rtol)[0]
+            finite = self.nullity_after(pred)
         if finite < nd and conn.shape[0] > rank:
             from .unfolding import project_to_cone, second_order_prediction
             p = int(dcols[int(np.argmax(np.abs(S)))])
@@ -396,8 +402,7 @@ class _Trace:
             self.events.append({"step": k - 1, "kind": "bifurcation", "branches": int(nullity),
                                 "unfolding": True, "independent": names[fidx[p]]})
             return pred, indep, True
-        if nullity > nd and f - _dense_null(compatibility_matrix(
-                self.x + self.expand(pred), conn, su.free), su.rtol)[0] <= nd:
+        if nullity > nd and self.nullity_after(pred) <= nd:
             # more freedoms here than a step along the path keeps: a bifurcation.  (Where the
             # excess persists along the path — an infinitesimal mechanism elsewhere in the
             # assembly, a straight chain of two bars beside a four-bar — the state is a
@@ -447,8 +452,7 @@ class _Trace:
                 tau = -tau
             pred = self.h * tau / abs(tau[p])
         su = self.su
-        if su.f - _dense_null(compatibility_matrix(self.x + self.expand(pred), su.conn,
-                                                   su.free), su.rtol)[0] <= self.nd:
+        if self.nullity_after(pred) <= self.nd:
             # the extra freedoms are gone a step along the branch: a bifurcation.  (Where
             # they persist — an infinitesimal mechanism elsewhere in the assembly, a straight
             # chain of two bars beside a four-bar — the state is a regular one.)

@@ -26,6 +26,7 @@ Along the path it
 from __future__ import annotations
 
 import logging
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 
 from typing import Callable
@@ -181,6 +182,17 @@ class _Stepper:
         self.dsign = 1.0
         #: free DOFs up to which every Newton iteration refactorises the tangent
         self.full_newton_size = 2000
+
+    @contextmanager
+    def moving(self, sense: float):
+        """Displacement steps of the monitored DOF in the sense ``sense`` (±1) inside the
+        context, whatever the path's control (the steps that load control takes under
+        displacement control)."""
+        saved, self.dsign = self.dsign, sense
+        try:
+            yield
+        finally:
+            self.dsign = saved
 
     def dnorm(self, du) -> float:
         """Norm of a displacement vector of the free DOFs, rotations as lengths (m)."""
@@ -821,16 +833,16 @@ def follow_path(model: NonlinearModel, control: str = "arc-length", steps: int =
                 out.termination = _cannot_continue(control, lam1, neg1)
                 out.events.append(Event("end", lam1, detail=out.termination))
                 break
-        corner = (arc and fac1 is not None and _crossed(neg, neg1) and not hit.any()
-                  and mode != "branch" and corner_cuts >= max_cuts)
+        # an inertia change without a member event, on the fundamental path
+        changed = (arc and fac1 is not None and _crossed(neg, neg1) and not hit.any()
+                   and mode != "branch")
+        corner = changed and corner_cuts >= max_cuts
         # A corner of several members' laws at once (members reaching a buckling cap together:
         # the inertia jumps by two or more without a singular state): every step over it was
         # rejected as crossing several critical points, and the steps accepted before it only
         # came closer; after _JUMP_CORNER_STEPS such steps one is taken over it, and the path
         # continues the motion there (the load sense from the new tangent along the step).
-        jump_corner = (arc and fac1 is not None and _crossed(neg, neg1) and not hit.any()
-                       and abs(neg1 - neg) > 1 and mode != "branch"
-                       and jump_cuts >= _JUMP_CORNER_STEPS)
+        jump_corner = changed and abs(neg1 - neg) > 1 and jump_cuts >= _JUMP_CORNER_STEPS
         jump_cuts = jump_cuts + 1 if jumped and not _crossed(neg, neg1) else 0
         if jump_corner:
             crit = None
@@ -1022,12 +1034,8 @@ def _land_on_stop(st, uf, lam, fac, uf1, lam1, max_load_factor, max_displacement
     if max_displacement is not None and st.c >= 0 and abs(uf[st.c]) < max_displacement \
             < abs(uf1[st.c]):
         target = float(np.sign(uf1[st.c])) * max_displacement
-        saved = st.dsign
-        st.dsign = float(np.sign(target - uf[st.c]))
-        try:
+        with st.moving(float(np.sign(target - uf[st.c]))):
             return st.step(uf, lam, fac, abs(target - uf[st.c]), None, None, "displacement")
-        finally:
-            st.dsign = saved
     return None
 
 
@@ -1067,11 +1075,10 @@ def _event_ahead(st, m, uf, lam, fac, res, ds, neg, max_cuts, tol):
     if not abs(ut[st.c]) > 1e-12 * np.abs(ut).max():
         return None
     mg0 = m.margins(res)
-    saved = st.dsign
-    st.dsign = float(np.sign(ut[st.c]))     # the way a growing load moves the monitored DOF
-    try:
+    # (the way a growing load moves the monitored DOF)
+    with st.moving(float(np.sign(ut[st.c]))):
         new, _, _ = _attempt(st, uf, lam, fac, abs(ds * ut[st.c]), None, None, "displacement",
-                          None, neg, max_cuts, False)
+                             None, neg, max_cuts, False)
         if new is None:
             return None
         uf1, lam1, res1, its, fac1, dsu = new
@@ -1079,8 +1086,6 @@ def _event_ahead(st, m, uf, lam, fac, res, ds, neg, max_cuts, tol):
             uf1, lam1, res1, fac1 = _locate_failure(st, m, uf, lam, fac, dsu, None, None,
                                                     "displacement", mg0, uf1, lam1, res1,
                                                     fac1, tol)
-    finally:
-        st.dsign = saved
     if not lam1 > lam:
         return None
     try:
